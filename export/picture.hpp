@@ -1,0 +1,20 @@
+// Pictures of meshes (PNG, drawn with cairo), so a user sees what was made.
+#pragma once
+
+#include <filesystem>
+
+#include "mesh/trimesh.hpp"
+
+namespace grainmesh {
+
+struct PictureOptions {
+  int width_px = 1200;  // image width; the height follows the mesh's aspect ratio
+  int margin_px = 20;
+};
+
+// Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a
+// fixed palette), thin mesh edges when they are at least a few pixels long, and thick
+// lines along the mesh boundary and between regions. Throws IoError.
+void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
+
+}  // namespace grainmesh

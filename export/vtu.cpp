@@ -1,0 +1,106 @@
+#include "export/vtu.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "common/errors.hpp"
+
+namespace grainmesh {
+
+void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, 0.0);
+
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->Allocate(static_cast<vtkIdType>(mesh.triangles.size()));
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
+  }
+
+  for (const CellField& f : fields) {
+    std::visit(
+        [&](const auto& values) {
+          using T = typename std::decay_t<decltype(values)>::value_type;
+          if (values.size() != mesh.triangles.size())
+            throw IoError(file.string() + ": cell field '" + f.name + "' has " + std::to_string(values.size()) +
+                          " values for " + std::to_string(mesh.triangles.size()) + " cells");
+          vtkSmartPointer<vtkDataArray> array;
+          if constexpr (std::is_same_v<T, int>) array = vtkSmartPointer<vtkIntArray>::New();
+          else array = vtkSmartPointer<vtkDoubleArray>::New();
+          array->SetName(f.name.c_str());
+          array->SetNumberOfComponents(1);
+          array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+          for (std::size_t i = 0; i < values.size(); ++i)
+            array->SetTuple1(static_cast<vtkIdType>(i), static_cast<double>(values[i]));
+          grid->GetCellData()->AddArray(array);
+        },
+        f.values);
+  }
+
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(grid);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) throw IoError(file.string() + ": cannot write VTU file");
+}
+
+VtuContents read_vtu(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) throw IoError(file.string() + ": no such file");
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  if (reader->GetErrorCode() != 0 || grid == nullptr) throw IoError(file.string() + ": cannot read VTU file");
+
+  VtuContents out;
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    double x[3];
+    grid->GetPoint(i, x);
+    out.mesh.points.push_back({x[0], x[1]});
+  }
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    if (grid->GetCellType(c) != VTK_TRIANGLE) throw IoError(file.string() + ": cell " + std::to_string(c) + " is not a triangle");
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(c, n, ids);
+    out.mesh.triangles.push_back({static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2])});
+  }
+  vtkCellData* cd = grid->GetCellData();
+  for (int a = 0; a < cd->GetNumberOfArrays(); ++a) {
+    vtkDataArray* array = cd->GetArray(a);
+    if (array == nullptr) continue;
+    CellField f{array->GetName() ? array->GetName() : "", std::vector<int>{}};
+    if (array->GetDataType() == VTK_INT) {
+      std::vector<int> v(static_cast<std::size_t>(array->GetNumberOfTuples()));
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<int>(array->GetTuple1(static_cast<vtkIdType>(i)));
+      if (f.name == "region") out.mesh.region = v;
+      f.values = std::move(v);
+    } else {
+      std::vector<double> v(static_cast<std::size_t>(array->GetNumberOfTuples()));
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = array->GetTuple1(static_cast<vtkIdType>(i));
+      f.values = std::move(v);
+    }
+    out.fields.push_back(std::move(f));
+  }
+  if (out.mesh.region.empty()) out.mesh.region.assign(out.mesh.triangles.size(), 0);
+  return out;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,19 @@
+// Delaunay triangulation of a point set, computed by CGAL with exact predicates
+// (delaunay.cpp is the only file that sees CGAL's triangulation headers).
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "common/geometry.hpp"
+
+namespace grainmesh {
+
+// Triangles of the Delaunay triangulation of `points`, as counter-clockwise triples of
+// indices into `points`. Of coincident points only one appears. Deterministic: the same
+// input gives the same triangles in the same order. Throws GeometryError on non-finite
+// input or when CGAL fails.
+std::vector<std::array<int, 3>> delaunay_triangulation(std::span<const Vec2> points);
+
+}  // namespace grainmesh

@@ -1,0 +1,602 @@
+#include "mesh/distmesh.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <unordered_map>
+
+#include "common/errors.hpp"
+#include "mesh/delaunay.hpp"
+
+namespace grainmesh {
+namespace {
+
+std::string fmt(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+std::string fmt(Vec2 p) { return "(" + fmt(p.x) + ", " + fmt(p.y) + ")"; }
+
+void check_parameters(const DistMeshProblem& pb, const DistMeshOptions& opt) {
+  auto positive = [](double v, const std::string& name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw ConfigError(name + " must be positive, got " + fmt(v));
+  };
+  positive(pb.h0, "h0");
+  if (pb.bbox.empty() || !is_finite(pb.bbox.lo) || !is_finite(pb.bbox.hi))
+    throw ConfigError("bounding box " + fmt(pb.bbox.lo) + " - " + fmt(pb.bbox.hi) + " is empty or not finite");
+  if (!(pb.curvature_angle >= 0.0) || !std::isfinite(pb.curvature_angle))
+    throw ConfigError("curvature angle must be >= 0, got " + fmt(pb.curvature_angle));
+  if (pb.curvature_angle > 0.0) positive(pb.curvature_gradient, "curvature gradient");
+  positive(opt.fscale, "fscale");
+  positive(opt.dt, "dt");
+  positive(opt.ttol, "ttol");
+  positive(opt.dptol, "dptol");
+  positive(opt.geps, "geps");
+  if (opt.max_iterations < 1) throw ConfigError("max_iterations must be at least 1");
+  if (opt.density_control_every < 0) throw ConfigError("density_control_every must be >= 0");
+  if (opt.optimize_sweeps < 0) throw ConfigError("optimize_sweeps must be >= 0");
+}
+
+// Points in a uniform hash grid, for "is there a point within r of p" with r up to the
+// cell size. Linear in the number of points for evenly spread inputs.
+class PointGrid {
+ public:
+  explicit PointGrid(double cell) : cell_(cell) {}
+  void insert(Vec2 p) { cells_[key(cell_of(p.x), cell_of(p.y))].push_back(p); }
+  bool near(Vec2 p, double radius) const {
+    const std::int64_t cx = cell_of(p.x), cy = cell_of(p.y);
+    const std::int64_t reach = static_cast<std::int64_t>(std::ceil(radius / cell_));
+    for (std::int64_t i = cx - reach; i <= cx + reach; ++i)
+      for (std::int64_t j = cy - reach; j <= cy + reach; ++j) {
+        const auto it = cells_.find(key(i, j));
+        if (it == cells_.end()) continue;
+        for (const Vec2 q : it->second)
+          if (norm2(q - p) < radius * radius) return true;
+      }
+    return false;
+  }
+
+ private:
+  std::int64_t cell_of(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
+  static std::uint64_t key(std::int64_t i, std::int64_t j) {
+    return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint64_t>(j & 0xffffffff);
+  }
+  double cell_;
+  std::unordered_map<std::uint64_t, std::vector<Vec2>> cells_;
+};
+
+// The size field the engine works with: absolute edge lengths. The user's relative size
+// h is scaled so that its least value over the domain maps to h0 (the thesis' meaning
+// of h0), then limited by the curvature of curved boundaries.
+struct AbsoluteSize final : SizeFunction::Node {
+  explicit AbsoluteSize(SizeFunction r) : relative(std::move(r)) {}
+  SizeFunction relative;
+  double scale = 1.0;  // h0 / min h
+  std::vector<DistanceFunction> curved;
+  double angle = 0.0, gradient = 0.0;
+
+  void eval(std::span<const Vec2> p, std::span<double> out) const override {
+    relative.eval(p, out);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      out[i] *= scale;
+      for (const auto& c : curved) out[i] = std::min(out[i], c.curvature_size(p[i], angle, gradient));
+    }
+  }
+  double constant_value() const override {
+    if (!curved.empty() || !relative.is_constant()) return std::numeric_limits<double>::quiet_NaN();
+    return relative(Vec2{}) * scale;
+  }
+  std::string describe() const override { return relative.describe(); }
+};
+
+// One run of Algorithm 1. Points 0 .. nfix-1 are the fixed points.
+class Engine {
+ public:
+  Engine(const DistMeshProblem& pb, const DistMeshOptions& opt)
+      : pb_(pb),
+        opt_(opt),
+        h0_(pb.h0),
+        geps_(opt.geps * pb.h0),
+        deps_(std::sqrt(std::numeric_limits<double>::epsilon()) * pb.h0),
+        proj_tol_(1e-10 * pb.h0),
+        on_interface_tol_(1e-8 * pb.h0) {}
+
+  DistMeshResult run(Rng& rng);
+
+ private:
+  std::vector<Vec2> lattice(double spacing) const;
+  void seed_points(Rng& rng);
+  void check_size(const std::vector<Vec2>& pts) const;
+  void triangulate();
+  void bar_forces();
+  bool density_control();
+  void move_points();
+  void follow_interface();
+  void project_boundary();
+  double max_move_since_triangulation() const;
+  std::size_t repair_interface();
+  void optimize_stars();
+  TriMesh compact() const;
+
+  const DistMeshProblem& pb_;
+  const DistMeshOptions& opt_;
+  const double h0_, geps_, deps_, proj_tol_, on_interface_tol_;
+  std::optional<SizeFunction> size_;  // absolute, set by seed_points
+
+  std::size_t nfix_ = 0;
+  std::vector<Vec2> p_;                      // #N positions, fixed first
+  std::vector<Vec2> pold_;                   // positions at the last triangulation
+  std::vector<Vec2> before_;                 // positions at the start of the iteration
+  std::vector<std::array<int, 3>> tris_;     // triangles with centroid inside
+  std::vector<std::array<int, 2>> bars_;     // unique edges of tris_
+  std::vector<char> on_boundary_;            // #N: on an edge of one triangle
+  std::vector<char> bar_on_boundary_;        // #bars: an edge of one triangle
+  std::vector<char> on_interface_;           // #N: held on dI = 0
+  std::vector<Vec2> force_, mid_;            // #N total force; #bars midpoints (at triangulation)
+  std::vector<double> len_, len0_, d_, di_;  // #bars lengths, wanted lengths; #N d, dI
+  std::vector<double> bar_size_;             // #bars size field at the midpoints
+  DistMeshStats stats_;
+};
+
+void Engine::check_size(const std::vector<Vec2>& pts) const {
+  std::vector<double> h(pts.size());
+  pb_.size.eval(pts, h);
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (!(h[i] > 0.0) || !std::isfinite(h[i]))
+      throw ConfigError("size function '" + pb_.size.describe() + "' is " + fmt(h[i]) + " at " + fmt(pts[i]) +
+                        " inside the domain; it must be finite and positive there");
+}
+
+// Equilateral lattice of the given spacing over the bounding box (every other row shifted
+// by half a spacing), restricted to d < geps.
+std::vector<Vec2> Engine::lattice(double spacing) const {
+  const Box& bb = pb_.bbox;
+  const double dy = spacing * std::sqrt(3.0) / 2.0;
+  const double nx = std::floor(bb.width() / spacing) + 1.0, ny = std::floor(bb.height() / dy) + 1.0;
+  if (nx * ny > 2e8)
+    throw ConfigError("the initial lattice of spacing " + fmt(spacing) + " would have " + fmt(nx * ny) +
+                      " points over the bounding box: raise h0" +
+                      (spacing < h0_ ? std::string(" or lower the curvature refinement") : std::string()));
+  std::vector<Vec2> pts;
+  for (std::int64_t j = 0; j < static_cast<std::int64_t>(ny); ++j) {
+    const double y = bb.lo.y + static_cast<double>(j) * dy;
+    const double shift = (j % 2) ? 0.5 * spacing : 0.0;
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(nx); ++i) {
+      const Vec2 q{bb.lo.x + shift + static_cast<double>(i) * spacing, y};
+      if (pb_.domain(q) < geps_) pts.push_back(q);
+    }
+  }
+  return pts;
+}
+
+// Step 1: equilateral lattice, keep d < geps, then keep each point with probability
+// (s_min / s)^2 so that density follows the size field. With boundary seeding, points
+// near the boundary are first projected onto it and thinned to the local size, and the
+// lattice keeps clear of them.
+void Engine::seed_points(Rng& rng) {
+  std::vector<Vec2> fixed;
+  for (const Vec2 f : pb_.fixed) {
+    if (!is_finite(f)) throw GeometryError("fixed point " + fmt(f) + " is not finite");
+    const double d = pb_.domain(f);
+    if (d > geps_)
+      throw GeometryError("fixed point " + fmt(f) + " lies outside the domain (distance " + fmt(d) + ")");
+    const bool dup = std::any_of(fixed.begin(), fixed.end(), [&](Vec2 g) { return norm(g - f) <= geps_; });
+    if (!dup) fixed.push_back(f);
+  }
+
+  std::vector<Vec2> pts = lattice(h0_);
+  if (pts.empty())
+    throw GeometryError("domain is empty inside its bounding box " + fmt(pb_.bbox.lo) + " - " + fmt(pb_.bbox.hi) +
+                        ": no lattice point of spacing h0 = " + fmt(h0_) + " lies inside");
+  check_size(pts);
+  check_size(fixed);
+
+  // The absolute size field and the lattice spacing it needs.
+  auto size = std::make_shared<AbsoluteSize>(pb_.size);
+  std::vector<double> h(pts.size());
+  pb_.size.eval(pts, h);
+  size->scale = h0_ / *std::min_element(h.begin(), h.end());
+  double spacing = h0_;
+  if (pb_.curvature_angle > 0.0) {
+    size->angle = pb_.curvature_angle;
+    size->gradient = pb_.curvature_gradient;
+    size->curved.push_back(pb_.domain);
+    if (pb_.interface) size->curved.push_back(*pb_.interface);
+    for (const Vec2 q : pts)
+      for (const auto& c : size->curved) spacing = std::min(spacing, c.curvature_size(q, pb_.curvature_angle, 0.0));
+  }
+  size_ = SizeFunction(size);
+  stats_.lattice_spacing = spacing;
+  if (spacing < h0_) pts = lattice(spacing);
+
+  std::vector<double> s(pts.size());
+  size_->eval(pts, s);
+  p_ = fixed;
+  nfix_ = fixed.size();
+  PointGrid taken(spacing);
+  for (const Vec2 f : fixed) taken.insert(f);
+
+  // Seeds on a curve: lattice points within one local size of it, projected onto it,
+  // each kept unless an earlier seed lies closer than 0.85 of the local size.
+  auto seed_curve = [&](const DistanceFunction& curve, bool interface) {
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (std::abs(curve(pts[i])) > s[i]) continue;
+      const Vec2 q = project_to_zero(curve, pts[i], deps_, proj_tol_);
+      if (interface && pb_.domain(q) > -0.5 * s[i]) continue;  // leave where the curves meet to the fixed points
+      if (taken.near(q, 0.85 * s[i])) continue;
+      taken.insert(q);
+      p_.push_back(q);
+      on_interface_.resize(p_.size(), 0);
+      on_interface_.back() = interface;
+    }
+  };
+  auto clear_of = [&](const DistanceFunction& curve, std::size_t i) { return std::abs(curve(pts[i])) > 0.7 * s[i]; };
+  on_interface_.assign(p_.size(), 0);
+  if (opt_.boundary_seeding) {
+    seed_curve(pb_.domain, false);
+    if (pb_.interface) seed_curve(*pb_.interface, true);
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double keep = (spacing / s[i]) * (spacing / s[i]);
+    const double u = uniform01(rng);  // one draw per lattice point: the stream never depends on the grid
+    if (u >= keep) continue;
+    if (opt_.boundary_seeding) {
+      if (!clear_of(pb_.domain, i) || (pb_.interface && !clear_of(*pb_.interface, i)) || taken.near(pts[i], 0.5 * s[i]))
+        continue;
+    } else if (taken.near(pts[i], 0.5 * spacing)) {
+      continue;
+    }
+    p_.push_back(pts[i]);
+  }
+  on_interface_.resize(p_.size(), 0);
+  stats_.initial_points = p_.size();
+}
+
+// Step 2: Delaunay triangulation, keeping triangles whose centroid is inside; the bars
+// are the unique edges, and an edge of one triangle only lies on the mesh boundary.
+void Engine::triangulate() {
+  tris_.clear();
+  for (const auto& t : delaunay_triangulation(p_)) {
+    const Vec2 c = (p_[t[0]] + p_[t[1]] + p_[t[2]]) / 3.0;
+    if (pb_.domain(c) < -geps_) tris_.push_back(t);
+  }
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * tris_.size());
+  for (const auto& t : tris_)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::uint64_t>(t[k]), b = static_cast<std::uint64_t>(t[(k + 1) % 3]);
+      keys.push_back(a < b ? (a << 32) | b : (b << 32) | a);
+    }
+  std::sort(keys.begin(), keys.end());
+  on_boundary_.assign(p_.size(), 0);
+  bars_.clear();
+  bar_on_boundary_.clear();
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i + 1;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    const int a = static_cast<int>(keys[i] >> 32), b = static_cast<int>(keys[i] & 0xffffffffu);
+    if (j - i == 1) on_boundary_[a] = on_boundary_[b] = 1;
+    bar_on_boundary_.push_back(j - i == 1);
+    bars_.push_back({a, b});
+    i = j;
+  }
+  // The size at each bar's midpoint. Evaluated here rather than every iteration: until
+  // the next triangulation no point moves more than ttol h0, which changes a size by a
+  // fraction ttol x (size gradient) of itself, about 1 %, and the size field (many
+  // curved fibres, user expressions) is the costliest part of an iteration.
+  mid_.resize(bars_.size());
+  for (std::size_t e = 0; e < bars_.size(); ++e) mid_[e] = 0.5 * (p_[bars_[e][0]] + p_[bars_[e][1]]);
+  bar_size_.resize(bars_.size());
+  size_->eval(mid_, bar_size_);
+  pold_ = p_;
+  ++stats_.retriangulations;
+}
+
+// Step 3: bar lengths and the lengths they want (eq. 2.9), and the repulsive forces (eq. 2.6).
+void Engine::bar_forces() {
+  const std::size_t nb = bars_.size();
+  len_.resize(nb);
+  len0_.resize(nb);
+  double sum_l2 = 0.0;
+  for (std::size_t e = 0; e < nb; ++e) {
+    len_[e] = norm(p_[bars_[e][0]] - p_[bars_[e][1]]);
+    sum_l2 += len_[e] * len_[e];
+  }
+  double sum_h2 = 0.0;
+  for (double h : bar_size_) sum_h2 += h * h;
+  const double scale = sum_h2 > 0.0 ? opt_.fscale * std::sqrt(sum_l2 / sum_h2) : 0.0;
+  for (std::size_t e = 0; e < nb; ++e) len0_[e] = scale * bar_size_[e];
+
+  force_.assign(p_.size(), Vec2{});
+  for (std::size_t e = 0; e < nb; ++e) {
+    const double l = len_[e];
+    if (l >= len0_[e] || l == 0.0) continue;
+    const int i = bars_[e][0], j = bars_[e][1];
+    const Vec2 f = ((len0_[e] - l) / l) * (p_[i] - p_[j]);
+    force_[i] += f;
+    force_[j] -= f;
+  }
+}
+
+// Density control. Removes the free end points of bars shorter than half their wanted
+// length (as DistMesh does), and, beyond the thesis, splits boundary and interface edges
+// longer than 1.5 times their wanted length at their midpoint projected onto the curve:
+// points cannot migrate along a curve past each other, so a gap there never closes.
+bool Engine::density_control() {
+  std::vector<char> drop(p_.size(), 0);
+  std::vector<Vec2> added_boundary, added_interface;
+  on_interface_.resize(p_.size(), 0);
+  bool any = false;
+  for (std::size_t e = 0; e < bars_.size(); ++e) {
+    const int a = bars_[e][0], b = bars_[e][1];
+    if (len0_[e] > 2.0 * len_[e]) {
+      for (int v : bars_[e])
+        if (static_cast<std::size_t>(v) >= nfix_) drop[v] = any = true;
+    } else if (len_[e] > 1.5 * len0_[e] / opt_.fscale) {
+      const Vec2 mid = 0.5 * (p_[a] + p_[b]);
+      if (bar_on_boundary_[e]) {
+        added_boundary.push_back(project_to_zero(pb_.domain, mid, deps_, proj_tol_));
+      } else if (on_interface_[a] && on_interface_[b] && pb_.interface) {
+        added_interface.push_back(project_to_zero(*pb_.interface, mid, deps_, proj_tol_));
+      }
+    }
+  }
+  any = any || !added_boundary.empty() || !added_interface.empty();
+  if (!any) return false;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (!drop[i]) {
+      p_[out] = p_[i];
+      on_interface_[out++] = on_interface_[i];
+    }
+  stats_.density_removed += p_.size() - out;
+  p_.resize(out);
+  on_interface_.resize(out);
+  for (const Vec2 q : added_boundary) p_.push_back(q), on_interface_.push_back(0);
+  for (const Vec2 q : added_interface) p_.push_back(q), on_interface_.push_back(1);
+  stats_.density_added += added_boundary.size() + added_interface.size();
+  return true;
+}
+
+// Step 4: forward Euler (eq. 2.12); fixed points do not move.
+void Engine::move_points() {
+  for (std::size_t i = nfix_; i < p_.size(); ++i) p_[i] += opt_.dt * force_[i];
+}
+
+// Algorithm 3: for each bar whose ends lie on opposite sides of dI = 0, the end nearer
+// to the interface is projected onto it. Beyond the thesis, a point once on the
+// interface stays there: it is projected back after every move, so it slides along the
+// interface instead of leaving it and being caught again.
+void Engine::follow_interface() {
+  const DistanceFunction& di = *pb_.interface;
+  di_.resize(p_.size());
+  on_interface_.resize(p_.size(), 0);
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (on_interface_[i] && i >= nfix_) p_[i] = project_to_zero(di, p_[i], deps_, proj_tol_);
+    di_[i] = on_interface_[i] ? 0.0 : di(p_[i]);
+  }
+  for (const auto& bar : bars_) {
+    const int a = bar[0], b = bar[1];
+    if (!((di_[a] > 0.0 && di_[b] < 0.0) || (di_[a] < 0.0 && di_[b] > 0.0))) continue;
+    int k = std::abs(di_[a]) <= std::abs(di_[b]) ? a : b;
+    if (static_cast<std::size_t>(k) < nfix_) k = (k == a) ? b : a;
+    if (static_cast<std::size_t>(k) < nfix_) continue;
+    p_[k] = project_to_zero(di, p_[k], deps_, proj_tol_);
+    di_[k] = 0.0;
+    on_interface_[k] = 1;
+  }
+}
+
+// Step 5: points that left the domain are projected back onto its boundary (eq. 2.13).
+void Engine::project_boundary() {
+  d_.resize(p_.size());
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    d_[i] = pb_.domain(p_[i]);
+    if (i >= nfix_ && d_[i] > 0.0) p_[i] = project_to_zero(pb_.domain, p_[i], deps_, proj_tol_);
+  }
+}
+
+double Engine::max_move_since_triangulation() const {
+  double moved2 = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) moved2 = std::max(moved2, norm2(p_[i] - pold_[i]));
+  return std::sqrt(moved2);
+}
+
+// After the last triangulation: triangles whose corners lie on opposite sides of the
+// interface get the Algorithm 3 treatment on their crossing edges, and the mesh is
+// triangulated again, until none is left (or the pass limit). Returns how many remain.
+std::size_t Engine::repair_interface() {
+  const DistanceFunction& di = *pb_.interface;
+  for (int pass = 0;; ++pass) {
+    di_.resize(p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) di_[i] = di(p_[i]);
+    auto side = [&](int v) { return di_[v] > on_interface_tol_ ? 1 : (di_[v] < -on_interface_tol_ ? -1 : 0); };
+    std::vector<int> movers;
+    std::size_t straddling = 0;
+    for (const auto& t : tris_) {
+      int lo = 1, hi = -1;
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        lo = std::min(lo, side(a));
+        hi = std::max(hi, side(a));
+        if (side(a) * side(b) >= 0) continue;
+        int m = std::abs(di_[a]) <= std::abs(di_[b]) ? a : b;
+        if (static_cast<std::size_t>(m) < nfix_) m = (m == a) ? b : a;
+        if (static_cast<std::size_t>(m) >= nfix_) movers.push_back(m);
+      }
+      straddling += (lo < 0 && hi > 0);
+    }
+    if (straddling == 0 || movers.empty() || pass == 20) return straddling;
+    std::sort(movers.begin(), movers.end());
+    movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+    for (int m : movers) p_[m] = project_to_zero(di, p_[m], deps_, proj_tol_);
+    ++stats_.interface_repairs;
+    triangulate();
+  }
+}
+
+double signed_quality(Vec2 a, Vec2 b, Vec2 c) {
+  if (signed_area2(a, b, c) <= 0.0) return -1.0;
+  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
+  return (lb + lc - la) * (lc + la - lb) * (la + lb - lc) / (la * lb * lc);
+}
+
+// Local optimisation of the worst regions: a free point with a triangle of quality
+// below optimize_below moves along the gradient of the summed quality of its triangles,
+// by a backtracking line search that never lowers their least quality nor inverts one.
+// Points on the boundary or the interface move along it. The connectivity is kept, so
+// the mesh stays valid.
+void Engine::optimize_stars() {
+  // Vertex -> triangles, compressed.
+  std::vector<int> start(p_.size() + 1, 0), star;
+  for (const auto& t : tris_)
+    for (int v : t) ++start[v + 1];
+  for (std::size_t i = 0; i < p_.size(); ++i) start[i + 1] += start[i];
+  star.resize(start.back());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int t = 0; t < static_cast<int>(tris_.size()); ++t)
+    for (int v : tris_[t]) star[fill[v]++] = t;
+
+  std::vector<char> on_interface(p_.size(), 0);
+  if (pb_.interface)
+    for (std::size_t i = 0; i < p_.size(); ++i) on_interface[i] = std::abs((*pb_.interface)(p_[i])) <= on_interface_tol_;
+  const double min_gain = 1e-5;  // summed quality: smaller gains are not worth a sweep
+
+  auto star_quality = [&](std::size_t i, Vec2 x, double& qmin) {
+    double sum = 0.0;
+    qmin = 1.0;
+    for (int k = start[i]; k < start[i + 1]; ++k) {
+      const auto& t = tris_[star[k]];
+      auto at = [&](int v) { return v == static_cast<int>(i) ? x : p_[v]; };
+      const double q = signed_quality(at(t[0]), at(t[1]), at(t[2]));
+      sum += q;
+      qmin = std::min(qmin, q);
+    }
+    return sum;
+  };
+
+  for (int sweep = 0; sweep < opt_.optimize_sweeps; ++sweep) {
+    int moved = 0;
+    for (std::size_t i = nfix_; i < p_.size(); ++i) {
+      if (start[i] == start[i + 1]) continue;
+      if (on_boundary_[i] && on_interface[i]) continue;  // where the two curves meet
+      double qmin0;
+      const double f0 = star_quality(i, p_[i], qmin0);
+      if (qmin0 >= opt_.optimize_below) continue;
+      double len = std::numeric_limits<double>::infinity();  // shortest edge at i
+      for (int k = start[i]; k < start[i + 1]; ++k)
+        for (int v : tris_[star[k]])
+          if (v != static_cast<int>(i)) len = std::min(len, norm(p_[v] - p_[i]));
+      const double step = 1e-4 * len;
+      double unused;
+      Vec2 g{(star_quality(i, p_[i] + Vec2{step, 0.0}, unused) - f0) / step,
+             (star_quality(i, p_[i] + Vec2{0.0, step}, unused) - f0) / step};
+      const DistanceFunction* curve = on_boundary_[i] ? &pb_.domain : (on_interface[i] ? &*pb_.interface : nullptr);
+      if (curve) {  // keep the tangential part
+        const Vec2 n = numerical_gradient(*curve, p_[i], (*curve)(p_[i]), deps_);
+        if (norm2(n) > 0.0) g -= (dot(g, n) / norm2(n)) * n;
+      }
+      const double gn = norm(g);
+      if (!(gn > 0.0)) continue;
+      for (double alpha = 0.2 * len; alpha > 1e-3 * len; alpha *= 0.5) {
+        Vec2 x = p_[i] + (alpha / gn) * g;
+        if (curve) x = project_to_zero(*curve, x, deps_, proj_tol_);
+        // A free point stays inside, and on its side of the interface.
+        if (!on_boundary_[i] && pb_.domain(x) >= -geps_) continue;
+        if (pb_.interface && !on_interface[i] && ((*pb_.interface)(x) < 0.0) != ((*pb_.interface)(p_[i]) < 0.0))
+          continue;
+        double qmin1;
+        const double f1 = star_quality(i, x, qmin1);
+        if (f1 > f0 + min_gain && qmin1 > 0.0 && qmin1 >= std::min(qmin0, opt_.optimize_below)) {
+          p_[i] = x;
+          ++moved;
+          break;
+        }
+      }
+    }
+    if (moved == 0) break;
+  }
+}
+
+// The final mesh: only points that some triangle uses, in their original order.
+TriMesh Engine::compact() const {
+  std::vector<int> new_id(p_.size(), -1);
+  for (const auto& t : tris_)
+    for (int v : t) new_id[v] = 0;
+  TriMesh mesh;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (new_id[i] == 0) {
+      new_id[i] = static_cast<int>(mesh.points.size());
+      mesh.points.push_back(p_[i]);
+    }
+  mesh.triangles.reserve(tris_.size());
+  for (const auto& t : tris_) mesh.triangles.push_back({new_id[t[0]], new_id[t[1]], new_id[t[2]]});
+  mesh.region.assign(mesh.triangles.size(), 0);
+  if (pb_.interface)
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      mesh.region[t] = (*pb_.interface)(triangle_centroid(mesh, static_cast<int>(t))) < 0.0 ? 1 : 0;
+  return mesh;
+}
+
+DistMeshResult Engine::run(Rng& rng) {
+  const auto start = std::chrono::steady_clock::now();
+  seed_points(rng);
+
+  bool retriangulate = true;
+  for (int it = 1;; ++it) {
+    stats_.iterations = it;
+    if (retriangulate || max_move_since_triangulation() > opt_.ttol * h0_) {
+      triangulate();
+      retriangulate = false;
+      if (tris_.empty())
+        throw GeometryError("domain is too small for h0 = " + fmt(h0_) + ": no triangle fits inside it");
+    }
+    bar_forces();
+    if (opt_.density_control_every > 0 && it % opt_.density_control_every == 0 && density_control()) {
+      retriangulate = true;
+      continue;
+    }
+    before_ = p_;
+    move_points();
+    if (pb_.interface) follow_interface();
+    project_boundary();
+
+    // Points on the boundary feel the boundary's reaction and never come to rest; the
+    // others (interface points included) are judged by how far they actually moved.
+    double max_move2 = 0.0;
+    for (std::size_t i = nfix_; i < p_.size(); ++i)
+      if (d_[i] < -geps_) max_move2 = std::max(max_move2, norm2(p_[i] - before_[i]));
+    if (std::sqrt(max_move2) < opt_.dptol * h0_) {
+      stats_.converged = true;
+      stats_.stop_reason = "converged: every interior point moved less than dptol h0";
+      break;
+    }
+    if (it >= opt_.max_iterations) {
+      stats_.stop_reason = "iteration limit " + std::to_string(opt_.max_iterations) + " reached before convergence";
+      break;
+    }
+  }
+
+  triangulate();
+  if (pb_.interface) stats_.interface_straddling = repair_interface();
+  optimize_stars();
+
+  DistMeshResult result{compact(), stats_};
+  validate(result.mesh);
+  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace
+
+DistMeshResult distmesh(const DistMeshProblem& problem, const DistMeshOptions& options, Rng& rng) {
+  check_parameters(problem, options);
+  Engine engine(problem, options);
+  return engine.run(rng);
+}
+
+}  // namespace grainmesh

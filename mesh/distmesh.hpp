@@ -1,0 +1,74 @@
+// The force-equilibrium Delaunay mesher of Persson & Strang (DistMesh), as in the
+// reference thesis: Algorithm 1, with the internal boundaries of Algorithm 3.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "common/random.hpp"
+#include "mesh/distance.hpp"
+#include "mesh/size_function.hpp"
+#include "mesh/trimesh.hpp"
+
+namespace grainmesh {
+
+// Algorithm constants. Lengths are relative to h0.
+struct DistMeshOptions {
+  double fscale = 1.2;             // bars want to be fscale x their size (eq. 2.9)
+  double dt = 0.2;                 // pseudo time step of forward Euler (eq. 2.12)
+  double ttol = 0.1;               // retriangulate once a point moved more than ttol h0
+  double dptol = 1e-3;             // converged when every interior move is below dptol h0
+  double geps = 1e-3;              // d < -geps h0 is inside, d > geps h0 outside
+  int max_iterations = 5000;       // hard bound on force iterations
+  int density_control_every = 30;  // drop points on bars shorter than half their size
+                                   // every this many iterations; 0 = never
+  // Beyond the thesis (each can be switched off to get its plain Algorithm 1):
+  bool boundary_seeding = true;    // start with points on the boundary, spaced by size
+  int optimize_sweeps = 50;        // local quality optimisation sweeps at the very end
+  double optimize_below = 0.99;    // ... of the points with a triangle of q below this
+};
+
+struct DistMeshProblem {
+  DistanceFunction domain;                    // d < 0 inside the domain
+  SizeFunction size = constant_size(1.0);     // relative edge length, h > 0 in the domain
+  double h0 = 0.0;                            // edge length where h is least
+  Box bbox;                                   // where the initial lattice is spread
+  std::vector<Vec2> fixed;                    // mesh nodes that never move (corners)
+  std::optional<DistanceFunction> interface;  // internal boundary dI = 0 the mesh follows
+  // Curved boundaries (of the domain and the interface) get edges of at most
+  // curvature_angle radians, R curvature_angle long, growing by curvature_gradient per
+  // unit distance away from them. 0 = no limit.
+  double curvature_angle = 0.0;
+  double curvature_gradient = 0.1;
+};
+
+struct DistMeshStats {
+  int iterations = 0;
+  int retriangulations = 0;
+  bool converged = false;           // false: the iteration limit stopped it
+  std::string stop_reason;
+  double lattice_spacing = 0.0;     // h0, or finer where curved boundaries ask for it
+  std::size_t initial_points = 0;   // after rejection, fixed points included
+  std::size_t density_removed = 0;  // points removed by density control
+  std::size_t density_added = 0;    // points added on long boundary and interface edges
+  int interface_repairs = 0;        // final passes needed to clear straddling triangles
+  std::size_t interface_straddling = 0;  // triangles still crossing dI = 0 (0 unless broken)
+  double seconds = 0.0;
+};
+
+struct DistMeshResult {
+  // region[t] is 1 when triangle t lies inside the interface (dI < 0), else 0.
+  TriMesh mesh;
+  DistMeshStats stats;
+};
+
+// Meshes problem.domain. Randomness (the rejection step) comes from rng only.
+// Always returns a valid mesh (see validate()) or throws: ConfigError for bad
+// parameters or a size function that is not finite and positive in the domain,
+// GeometryError for an empty domain or fixed points outside it.
+DistMeshResult distmesh(const DistMeshProblem& problem, const DistMeshOptions& options, Rng& rng);
+
+}  // namespace grainmesh

@@ -1,0 +1,35 @@
+// Quality measures for triangle meshes: shape measures of the triangles, and the
+// finite-volume measures OpenFOAM's checkMesh reports for the mesh extruded one cell
+// thick (prisms), so a mesh can be judged before it is exported.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "mesh/trimesh.hpp"
+
+namespace grainmesh {
+
+// Radius ratio q = 2 r_in / r_circ: 1 for an equilateral triangle, 0 for a degenerate one.
+double radius_ratio(Vec2 a, Vec2 b, Vec2 c);
+
+// q of every triangle (#T).
+std::vector<double> triangle_quality(const TriMesh& mesh);
+
+struct MeshQuality {
+  std::size_t triangles = 0;
+  double q_min = 0.0, q_mean = 0.0;
+  double q_below_half = 0.0;   // share of triangles with q < 0.5, in [0, 1]
+  double min_angle_deg = 0.0, max_angle_deg = 0.0;
+  // checkMesh's face non-orthogonality: angle between the owner->neighbour centre vector
+  // and the face normal, over internal faces (0 when there are none).
+  double max_non_orthogonality_deg = 0.0, mean_non_orthogonality_deg = 0.0;
+  // checkMesh's face skewness over internal and boundary faces of the extruded mesh.
+  double max_skewness = 0.0;
+};
+
+// Measures a non-empty mesh. Uses mesh_edges(), so throws on non-manifold input.
+MeshQuality measure_quality(const TriMesh& mesh);
+
+}  // namespace grainmesh

@@ -1,0 +1,149 @@
+#include "pipelines/config.hpp"
+
+#include <boost/program_options/options_description.hpp>
+#include <boost/program_options/parsers.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace grainmesh {
+
+namespace po = boost::program_options;
+
+Config Config::from_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw IoError(file.string() + ": cannot open config file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return from_text(buffer.str(), file.string(), overrides);
+}
+
+Config Config::from_text(std::string_view text, std::string source, const std::vector<std::string>& overrides) {
+  Config c;
+  c.source_ = std::move(source);
+  std::istringstream in{std::string(text)};
+  try {
+    const po::options_description none;
+    for (const auto& opt : po::parse_config_file(in, none, /*allow_unregistered=*/true).options)
+      c.entries_.emplace_back(opt.string_key, opt.value.empty() ? std::string() : opt.value.front());
+  } catch (const po::error& e) {
+    throw ConfigError(c.source_ + ": " + e.what());
+  }
+
+  std::vector<std::pair<std::string, std::string>> set;
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + o + ": expected KEY=VALUE");
+    std::string key = o.substr(0, eq), value = o.substr(eq + 1);
+    auto trim = [](std::string& s) {
+      s.erase(0, s.find_first_not_of(" \t"));
+      s.erase(s.find_last_not_of(" \t") + 1);
+    };
+    trim(key);
+    trim(value);
+    set.emplace_back(key, value);
+  }
+  std::set<std::string> replaced;
+  for (const auto& kv : set) replaced.insert(kv.first);
+  std::erase_if(c.entries_, [&](const auto& kv) { return replaced.count(kv.first) > 0; });
+  c.entries_.insert(c.entries_.end(), set.begin(), set.end());
+  return c;
+}
+
+void Config::fail(const std::string& key, const std::string& message) const {
+  throw ConfigError(source_ + ": " + key + ": " + message);
+}
+
+void Config::check_keys(const std::vector<std::string>& known) const {
+  for (const auto& [key, value] : entries_)
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      // Point at the section's keys when the section exists, so typos are easy to fix.
+      const std::string section = key.substr(0, key.find('.') + 1);
+      std::string hint;
+      for (const auto& k : known)
+        if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
+      throw ConfigError(source_ + ": unknown key '" + key + "'" + (hint.empty() ? "" : " (known here: " + hint + ")"));
+    }
+}
+
+bool Config::has(const std::string& key) const {
+  return std::any_of(entries_.begin(), entries_.end(), [&](const auto& kv) { return kv.first == key; });
+}
+
+std::vector<std::string> Config::all(const std::string& key) const {
+  std::vector<std::string> v;
+  for (const auto& [k, value] : entries_)
+    if (k == key) v.push_back(value);
+  return v;
+}
+
+std::optional<std::string> Config::optional_text(const std::string& key) const {
+  const auto v = all(key);
+  if (v.empty()) return std::nullopt;
+  if (v.size() > 1) fail(key, "given " + std::to_string(v.size()) + " times, expected once");
+  return v.front();
+}
+
+std::string Config::text(const std::string& key) const {
+  auto v = optional_text(key);
+  if (!v) fail(key, "missing (required)");
+  return *v;
+}
+
+namespace {
+template <typename T>
+std::optional<T> parse_whole(const std::string& s) {
+  T v{};
+  const char* first = s.data();
+  const char* last = s.data() + s.size();
+  if (first < last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, v);
+  if (ec != std::errc() || ptr != last) return std::nullopt;
+  return v;
+}
+}  // namespace
+
+double Config::number(const std::string& key) const {
+  const std::string s = text(key);
+  const auto v = parse_whole<double>(s);
+  if (!v || !std::isfinite(*v)) fail(key, "'" + s + "' is not a number");
+  return *v;
+}
+
+double Config::number(const std::string& key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
+
+long long Config::integer(const std::string& key, long long fallback) const {
+  if (!has(key)) return fallback;
+  const std::string s = text(key);
+  const auto v = parse_whole<long long>(s);
+  if (!v) fail(key, "'" + s + "' is not an integer");
+  return *v;
+}
+
+std::uint64_t Config::unsigned_integer(const std::string& key, std::uint64_t fallback) const {
+  if (!has(key)) return fallback;
+  const std::string s = text(key);
+  const auto v = parse_whole<std::uint64_t>(s);
+  if (!v) fail(key, "'" + s + "' is not a non-negative integer");
+  return *v;
+}
+
+bool Config::flag(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  std::string s = text(key);
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  if (s == "true" || s == "yes" || s == "on" || s == "1") return true;
+  if (s == "false" || s == "no" || s == "off" || s == "0") return false;
+  fail(key, "'" + s + "' is not true or false");
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,212 @@
+#include "pipelines/domain_command.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+#include "common/errors.hpp"
+#include "export/picture.hpp"
+#include "export/vtu.hpp"
+#include "mesh/quality.hpp"
+#include "mesh/shape_parser.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+
+namespace grainmesh {
+
+const std::vector<std::string>& domain_config_keys() {
+  static const std::vector<std::string> keys{
+      "domain.shape",          "domain.bbox",
+      "interface.shape",       "size.h0",
+      "size.function",         "size.curvature_segments",
+      "size.curvature_gradient", "fixed.points",
+      "fixed.polygon_vertices", "distmesh.seed",
+      "distmesh.max_iterations", "distmesh.fscale",
+      "distmesh.dt",           "distmesh.ttol",
+      "distmesh.dptol",        "distmesh.geps",
+      "distmesh.density_control_every", "distmesh.boundary_seeding",
+      "distmesh.optimize_sweeps",
+      "distmesh.optimize_below"};
+  return keys;
+}
+
+namespace {
+
+// Curved boundaries get at least this many edges per full turn: the chord error of a
+// circle's area is then (2 pi / 48)^2 / 6 = 0.29 %.
+constexpr double kDefaultCurvatureSegments = 48.0;
+
+// Several values of a shape key are united.
+std::optional<DistanceFunction> read_shapes(const Config& c, const std::string& key) {
+  std::vector<DistanceFunction> parts;
+  for (const auto& text : c.all(key)) parts.push_back(parse_shape(text, c.source() + ": " + key));
+  if (parts.empty()) return std::nullopt;
+  return unite(std::move(parts));
+}
+
+// A plain positive number is a constant size; anything else a muparser expression.
+// Several values are combined by their minimum.
+SizeFunction read_size(const Config& c) {
+  std::vector<SizeFunction> parts;
+  for (const auto& text : c.all("size.function")) {
+    double v = 0.0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec == std::errc() && ptr == text.data() + text.size()) {
+      if (!(v > 0.0) || !std::isfinite(v)) c.fail("size.function", "constant " + text + " must be positive");
+      parts.push_back(constant_size(v));
+    } else {
+      parts.push_back(expression_size(text, c.source() + ": size.function"));
+    }
+  }
+  if (parts.empty()) return constant_size(1.0);
+  return minimum_size(std::move(parts));
+}
+
+int bounded_int(const Config& c, const std::string& key, int fallback, int lo, int hi) {
+  const long long v = c.integer(key, fallback);
+  if (v < lo || v > hi) c.fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+  return static_cast<int>(v);
+}
+
+double positive(const Config& c, const std::string& key, double fallback) {
+  const double v = c.number(key, fallback);
+  if (!(v > 0.0)) c.fail(key, "must be positive, got " + c.text(key));
+  return v;
+}
+
+}  // namespace
+
+DomainJob read_domain_job(const Config& c) {
+  c.check_keys(domain_config_keys());
+  std::optional<DistanceFunction> domain = read_shapes(c, "domain.shape");
+  if (!domain) c.fail("domain.shape", "missing (required)");
+  const std::optional<DistanceFunction> interface = read_shapes(c, "interface.shape");
+
+  DistMeshOptions opt;
+  opt.fscale = positive(c, "distmesh.fscale", opt.fscale);
+  opt.dt = positive(c, "distmesh.dt", opt.dt);
+  opt.ttol = positive(c, "distmesh.ttol", opt.ttol);
+  opt.dptol = positive(c, "distmesh.dptol", opt.dptol);
+  opt.geps = positive(c, "distmesh.geps", opt.geps);
+  opt.max_iterations = bounded_int(c, "distmesh.max_iterations", opt.max_iterations, 1, 100'000'000);
+  opt.density_control_every = bounded_int(c, "distmesh.density_control_every", opt.density_control_every, 0, 1'000'000);
+  opt.boundary_seeding = c.flag("distmesh.boundary_seeding", opt.boundary_seeding);
+  opt.optimize_sweeps = bounded_int(c, "distmesh.optimize_sweeps", opt.optimize_sweeps, 0, 1'000'000);
+  opt.optimize_below = c.number("distmesh.optimize_below", opt.optimize_below);
+
+  DomainJob job{.problem = {.domain = *domain, .size = read_size(c), .h0 = c.number("size.h0"), .bbox = {}, .fixed = {}, .interface = interface},
+                .options = opt,
+                .seed = c.unsigned_integer("distmesh.seed", 1)};
+  DistMeshProblem& pb = job.problem;
+  if (!(pb.h0 > 0.0)) c.fail("size.h0", "must be positive, got " + c.text("size.h0"));
+  const double segments = c.number("size.curvature_segments", kDefaultCurvatureSegments);
+  if (segments != 0.0 && !(segments >= 3.0)) c.fail("size.curvature_segments", "must be 0 (off) or at least 3");
+  pb.curvature_angle = segments == 0.0 ? 0.0 : 2.0 * std::numbers::pi / segments;
+  pb.curvature_gradient = positive(c, "size.curvature_gradient", pb.curvature_gradient);
+
+  if (const auto bbox = c.optional_text("domain.bbox")) {
+    const auto v = parse_numbers(*bbox, 4, c.source() + ": domain.bbox");
+    if (!(v[0] < v[2] && v[1] < v[3])) c.fail("domain.bbox", "expected x1 y1 x2 y2 with x1 < x2 and y1 < y2");
+    pb.bbox = {{v[0], v[1]}, {v[2], v[3]}};
+  } else {
+    pb.bbox = pb.domain.bounds();
+    if (pb.bbox.empty() || !is_finite(pb.bbox.lo) || !is_finite(pb.bbox.hi))
+      c.fail("domain.bbox", "the shape has no finite extent; give the bounding box");
+  }
+
+  for (const auto& text : c.all("fixed.points"))
+    for (const Vec2 p : parse_point_list(text, c.source() + ": fixed.points")) pb.fixed.push_back(p);
+  if (c.flag("fixed.polygon_vertices", true)) {
+    // Polygon corners that lie on the final boundary, or on the interface inside the
+    // domain, are where DistMesh needs fixed points to keep sharp corners sharp.
+    const double tol = opt.geps * pb.h0;
+    for (const Vec2 v : pb.domain.vertices())
+      if (std::abs(pb.domain(v)) <= tol) pb.fixed.push_back(v);
+    if (pb.interface)
+      for (const Vec2 v : pb.interface->vertices())
+        if (pb.domain(v) <= tol && std::abs((*pb.interface)(v)) <= tol) pb.fixed.push_back(v);
+  }
+  return job;
+}
+
+namespace {
+
+Json run_and_write(const Config& c, const std::filesystem::path& out) {
+  check_output_replaceable(out);
+  const DomainJob job = read_domain_job(c);
+  Rng rng(job.seed);
+  DistMeshResult result = distmesh(job.problem, job.options, rng);
+  const TriMesh& mesh = result.mesh;
+
+  const MeshQuality quality = measure_quality(mesh);
+  const auto edges = mesh_edges(mesh);
+  double boundary_distance = 0.0;
+  for (int v : boundary_points(mesh, edges))
+    boundary_distance = std::max(boundary_distance, std::abs(job.problem.domain(mesh.points[v])));
+  std::vector<double> region_area;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto r = static_cast<std::size_t>(mesh.region[t]);
+    if (region_area.size() <= r) region_area.resize(r + 1, 0.0);
+    region_area[r] += triangle_area(mesh, static_cast<int>(t));
+  }
+  const double area = mesh_area(mesh);
+  std::vector<double> region_fraction;
+  for (double a : region_area) region_fraction.push_back(a / area);
+
+  StagedOutput staged(out);
+  write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
+  write_mesh_png(staged.dir() / "mesh.png", mesh);
+
+  const DistMeshStats& s = result.stats;
+  Json report;
+  report["command"] = "domain";
+  report["config"] = c.source();
+  report["points"] = mesh.points.size();
+  report["triangles"] = mesh.triangles.size();
+  report["area"] = area;
+  report["region_area"] = region_area;
+  report["region_fraction"] = region_fraction;
+  add_quality(report, quality);
+  report["max_boundary_distance"] = boundary_distance;
+  report["max_boundary_distance_over_h0"] = boundary_distance / job.problem.h0;
+  report["interface_straddling_triangles"] = s.interface_straddling;
+  report["h0"] = job.problem.h0;
+  report["seed"] = job.seed;
+  report["initial_points"] = s.initial_points;
+  report["fixed_points"] = job.problem.fixed.size();
+  report["iterations"] = s.iterations;
+  report["retriangulations"] = s.retriangulations;
+  report["density_removed"] = s.density_removed;
+  report["density_added"] = s.density_added;
+  report["interface_repairs"] = s.interface_repairs;
+  report["converged"] = s.converged;
+  report["stop_reason"] = s.stop_reason;
+  report["seconds"] = s.seconds;
+  report["peak_memory_mib"] = peak_memory_mib();
+  write_json(staged.dir() / "report.json", report);
+  staged.commit();
+  return report;
+}
+
+}  // namespace
+
+void run_domain_command(const Config& c, const std::filesystem::path& out) {
+  Json report;
+  try {
+    report = run_and_write(c, out);
+  } catch (const ConfigError& e) {
+    const std::string msg = e.what();
+    throw ConfigError(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
+  } catch (const GeometryError& e) {
+    const std::string msg = e.what();
+    throw GeometryError(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
+  }
+  std::printf("grainmesh domain: %zu points, %zu triangles, q_min %.3f, q_mean %.3f, %s after %d iterations "
+              "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.png, report.json}\n",
+              report["points"].get<std::size_t>(), report["triangles"].get<std::size_t>(),
+              report["q_min"].get<double>(), report["q_mean"].get<double>(),
+              report["converged"].get<bool>() ? "converged" : "NOT converged", report["iterations"].get<int>(),
+              report["seconds"].get<double>(), out.string().c_str());
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,28 @@
+#include "pipelines/report.hpp"
+
+#include <sys/resource.h>
+
+#include "pipelines/output_dir.hpp"
+
+namespace grainmesh {
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
+
+void add_quality(Json& report, const MeshQuality& q) {
+  report["q_min"] = q.q_min;
+  report["q_mean"] = q.q_mean;
+  report["q_below_0_5"] = q.q_below_half;
+  report["min_angle_deg"] = q.min_angle_deg;
+  report["max_angle_deg"] = q.max_angle_deg;
+  report["max_non_orthogonality_deg"] = q.max_non_orthogonality_deg;
+  report["mean_non_orthogonality_deg"] = q.mean_non_orthogonality_deg;
+  report["max_skewness"] = q.max_skewness;
+}
+
+void write_json(const std::filesystem::path& file, const Json& json) { write_text_file(file, json.dump(2) + "\n"); }
+
+}  // namespace grainmesh

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages grainmesh builds and tests with, only those missing.
+# Idempotent: a second run installs nothing and takes well under a second.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ccache pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev    # Delaunay, exact predicates
+  libvtk9-dev                           # mesh.vtu
+  libboost-program-options-dev          # command line and INI configs
+  catch2                                # unit tests (v2, catch2/catch.hpp)
+  libmuparser-dev                       # size functions as user expressions
+  libtbb-dev                            # parallel loops
+  libcairo2-dev                         # pictures
+  nlohmann-json3-dev                    # reports
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"
