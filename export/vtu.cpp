@@ -1,6 +1,9 @@
 #include "export/vtu.hpp"
 
+#include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -16,6 +19,29 @@
 #include "common/errors.hpp"
 
 namespace grainmesh {
+namespace {
+
+// Keeps VTK's errors (and warnings) from being printed as multi-line dumps: the first
+// message is kept, for a one-line IoError, and the rest is dropped.
+class ErrorCatcher final : public vtkCommand {
+ public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override {
+    if (message.empty() && data != nullptr) {
+      message = static_cast<const char*>(data);
+      message = message.substr(0, message.find('\n'));
+    }
+  }
+  void watch(vtkAlgorithm* algorithm) {
+    for (vtkObject* o : {static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive())}) {
+      o->AddObserver(vtkCommand::ErrorEvent, this);
+      o->AddObserver(vtkCommand::WarningEvent, this);
+    }
+  }
+  std::string message;
+};
+
+}  // namespace
 
 void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields) {
   vtkNew<vtkPoints> points;
@@ -53,21 +79,27 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
   }
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  vtkNew<ErrorCatcher> errors;
+  errors->watch(writer);
   writer->SetFileName(file.c_str());
   writer->SetInputData(grid);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
   writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1) throw IoError(file.string() + ": cannot write VTU file");
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
+    throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
 
 VtuContents read_vtu(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw IoError(file.string() + ": no such file");
   vtkNew<vtkXMLUnstructuredGridReader> reader;
+  vtkNew<ErrorCatcher> errors;
+  errors->watch(reader);
   reader->SetFileName(file.c_str());
   reader->Update();
   vtkUnstructuredGrid* grid = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || grid == nullptr) throw IoError(file.string() + ": cannot read VTU file");
+  if (reader->GetErrorCode() != 0 || grid == nullptr || !errors->message.empty())
+    throw IoError(file.string() + ": cannot read VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
 
   VtuContents out;
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {

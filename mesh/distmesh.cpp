@@ -15,6 +15,7 @@ namespace grainmesh {
 namespace {
 
 std::string fmt(double v) {
+  if (std::isnan(v)) return "NaN";
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
@@ -336,7 +337,7 @@ bool Engine::density_control() {
     if (len0_[e] > 2.0 * len_[e]) {
       for (int v : bars_[e])
         if (static_cast<std::size_t>(v) >= nfix_) drop[v] = any = true;
-    } else if (len_[e] > 1.5 * len0_[e] / opt_.fscale) {
+    } else if (opt_.split_long_edges && len_[e] > 1.5 * len0_[e] / opt_.fscale) {
       const Vec2 mid = 0.5 * (p_[a] + p_[b]);
       if (bar_on_boundary_[e]) {
         added_boundary.push_back(project_to_zero(pb_.domain, mid, deps_, proj_tol_));

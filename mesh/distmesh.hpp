@@ -27,6 +27,8 @@ struct DistMeshOptions {
                                    // every this many iterations; 0 = never
   // Beyond the thesis (each can be switched off to get its plain Algorithm 1):
   bool boundary_seeding = true;    // start with points on the boundary, spaced by size
+  bool split_long_edges = true;    // density control also splits long boundary and
+                                   // interface edges
   int optimize_sweeps = 50;        // local quality optimisation sweeps at the very end
   double optimize_below = 0.99;    // ... of the points with a triangle of q below this
 };
@@ -36,8 +38,8 @@ struct DistMeshProblem {
   SizeFunction size = constant_size(1.0);     // relative edge length, h > 0 in the domain
   double h0 = 0.0;                            // edge length where h is least
   Box bbox;                                   // where the initial lattice is spread
-  std::vector<Vec2> fixed;                    // mesh nodes that never move (corners)
-  std::optional<DistanceFunction> interface;  // internal boundary dI = 0 the mesh follows
+  std::vector<Vec2> fixed{};                  // mesh nodes that never move (corners)
+  std::optional<DistanceFunction> interface{};  // internal boundary dI = 0 the mesh follows
   // Curved boundaries (of the domain and the interface) get edges of at most
   // curvature_angle radians, R curvature_angle long, growing by curvature_gradient per
   // unit distance away from them. 0 = no limit.

@@ -25,6 +25,7 @@ const std::vector<std::string>& domain_config_keys() {
       "distmesh.dt",           "distmesh.ttol",
       "distmesh.dptol",        "distmesh.geps",
       "distmesh.density_control_every", "distmesh.boundary_seeding",
+      "distmesh.split_long_edges",
       "distmesh.optimize_sweeps",
       "distmesh.optimize_below"};
   return keys;
@@ -91,6 +92,7 @@ DomainJob read_domain_job(const Config& c) {
   opt.max_iterations = bounded_int(c, "distmesh.max_iterations", opt.max_iterations, 1, 100'000'000);
   opt.density_control_every = bounded_int(c, "distmesh.density_control_every", opt.density_control_every, 0, 1'000'000);
   opt.boundary_seeding = c.flag("distmesh.boundary_seeding", opt.boundary_seeding);
+  opt.split_long_edges = c.flag("distmesh.split_long_edges", opt.split_long_edges);
   opt.optimize_sweeps = bounded_int(c, "distmesh.optimize_sweeps", opt.optimize_sweeps, 0, 1'000'000);
   opt.optimize_below = c.number("distmesh.optimize_below", opt.optimize_below);
 

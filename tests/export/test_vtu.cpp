@@ -1,0 +1,60 @@
+#include <catch2/catch.hpp>
+
+#include "common/errors.hpp"
+#include "export/picture.hpp"
+#include "export/vtu.hpp"
+#include "helpers.hpp"
+
+using namespace grainmesh;
+
+namespace {
+TriMesh square() { return {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {0, 1}}; }
+}  // namespace
+
+TEST_CASE("VTU files read back exactly", "[export]") {
+  test::ScratchDir dir("vtu");
+  const TriMesh m = square();
+  write_vtu(dir / "m.vtu", m, {{"region", m.region}, {"quality", std::vector<double>{0.25, 0.75}}});
+  const VtuContents back = read_vtu(dir / "m.vtu");
+  CHECK(back.mesh.points == m.points);
+  CHECK(back.mesh.triangles == m.triangles);
+  CHECK(back.mesh.region == m.region);
+  REQUIRE(back.fields.size() == 2);
+  CHECK(back.fields[0].name == "region");
+  CHECK(std::get<std::vector<int>>(back.fields[0].values) == m.region);
+  CHECK(back.fields[1].name == "quality");
+  CHECK(std::get<std::vector<double>>(back.fields[1].values) == std::vector<double>{0.25, 0.75});
+}
+
+TEST_CASE("VTU output is byte-for-byte deterministic", "[export]") {
+  test::ScratchDir dir("vtu");
+  const TriMesh m = square();
+  write_vtu(dir / "a.vtu", m, {{"region", m.region}});
+  write_vtu(dir / "b.vtu", m, {{"region", m.region}});
+  CHECK(test::read_file(dir / "a.vtu") == test::read_file(dir / "b.vtu"));
+}
+
+TEST_CASE("export errors are I/O errors naming the file", "[export]") {
+  test::ScratchDir dir("vtu");
+  const TriMesh m = square();
+  CHECK_THROWS_AS(write_vtu(dir / "missing" / "m.vtu", m, {}), IoError);
+  CHECK_THROWS_WITH(write_vtu(dir / "m.vtu", m, {{"region", std::vector<int>{1}}}),
+                    Catch::Matchers::Contains("'region' has 1 values for 2 cells"));
+  CHECK_THROWS_AS(read_vtu(dir / "nothing.vtu"), IoError);
+}
+
+TEST_CASE("mesh pictures are PNG files of the asked width", "[export]") {
+  test::ScratchDir dir("png");
+  write_mesh_png(dir / "m.png", square(), {.width_px = 300});
+  const std::string png = test::read_file(dir / "m.png");
+  REQUIRE(png.size() > 24);
+  CHECK(png.substr(1, 3) == "PNG");
+  // IHDR: width and height, big-endian, at bytes 16..23.
+  auto be32 = [&](int at) {
+    return (unsigned(static_cast<unsigned char>(png[at])) << 24) | (unsigned(static_cast<unsigned char>(png[at + 1])) << 16) |
+           (unsigned(static_cast<unsigned char>(png[at + 2])) << 8) | unsigned(static_cast<unsigned char>(png[at + 3]));
+  };
+  CHECK(be32(16) == 300);
+  CHECK(be32(20) == 300);  // square mesh, square picture
+  CHECK_THROWS_AS(write_mesh_png(dir / "e.png", TriMesh{}), IoError);
+}
