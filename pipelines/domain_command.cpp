@@ -27,7 +27,7 @@ const std::vector<std::string>& domain_config_keys() {
       "distmesh.density_control_every", "distmesh.boundary_seeding",
       "distmesh.split_long_edges",
       "distmesh.optimize_sweeps",
-      "distmesh.optimize_below"};
+      "distmesh.optimize_below", "output.picture_width"};
   return keys;
 }
 
@@ -99,6 +99,7 @@ DomainJob read_domain_job(const Config& c) {
   DomainJob job{.problem = {.domain = *domain, .size = read_size(c), .h0 = c.number("size.h0"), .bbox = {}, .fixed = {}, .interface = interface},
                 .options = opt,
                 .seed = c.unsigned_integer("distmesh.seed", 1)};
+  job.picture_width = bounded_int(c, "output.picture_width", job.picture_width, 100, 20000);
   DistMeshProblem& pb = job.problem;
   if (!(pb.h0 > 0.0)) c.fail("size.h0", "must be positive, got " + c.text("size.h0"));
   const double segments = c.number("size.curvature_segments", kDefaultCurvatureSegments);
@@ -157,7 +158,7 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
 
   StagedOutput staged(out);
   write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
-  write_mesh_png(staged.dir() / "mesh.png", mesh);
+  write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width});
 
   const DistMeshStats& s = result.stats;
   Json report;

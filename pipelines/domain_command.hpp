@@ -17,6 +17,7 @@ struct DomainJob {
   DistMeshProblem problem;
   DistMeshOptions options;
   std::uint64_t seed = 1;
+  int picture_width = 1200;  // pixels
 };
 
 // The keys a domain config may use.

@@ -1,0 +1,34 @@
+# Two commands set everything up: `make run` and `make test`. Both install any missing
+# Debian package (scripts/install-deps.sh), configure with CMake and build; only what
+# changed is rebuilt (and ccache keeps rebuilds after `make clean` cheap).
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc)
+RUN_OUT ?= out/fibres_6
+
+.PHONY: all deps configure build run test bench clean
+
+all: build
+
+deps:
+	@./scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR).configure.log 2>&1 \
+	  || { cat $(BUILD_DIR).configure.log; exit 1; }
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# Until the microstructure pipeline exists, `make run` meshes the thesis' 6-fibre cell.
+run: build
+	./$(BUILD_DIR)/grainmesh domain data/examples/fibres_6.ini -o $(RUN_OUT)
+	@echo "make run: the mesh is in $(RUN_OUT)/mesh.vtu (open it in ParaView), its picture in $(RUN_OUT)/mesh.png, the figures in $(RUN_OUT)/report.json"
+
+test: build
+	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
+
+bench: build
+	@cmake --build $(BUILD_DIR) --target bench
+
+clean:
+	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log out

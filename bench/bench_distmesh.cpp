@@ -1,0 +1,136 @@
+// make bench: fixed-seed DistMesh benchmarks. Each case runs in a child process, three
+// times, so that its peak memory is its own; the time is the mesher's alone (seeding,
+// iterations, final optimisation), without reading the config or writing files.
+// Prints a table and writes bench/results.json.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/quality.hpp"
+#include "pipelines/domain_command.hpp"
+
+using namespace grainmesh;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+struct Case {
+  std::string name;
+  std::string config;                   // relative to the source directory
+  std::optional<double> thesis_seconds;  // the thesis' Tables 3.1-3.3
+};
+
+// Runs one case in this process and returns its measures.
+Json measure(const std::filesystem::path& config) {
+  const DomainJob job = read_domain_job(Config::from_file(config));
+  Rng rng(job.seed);
+  const DistMeshResult r = distmesh(job.problem, job.options, rng);
+  const MeshQuality q = measure_quality(r.mesh);
+  return {{"seconds", r.stats.seconds},         {"points", r.mesh.points.size()},
+          {"triangles", r.mesh.triangles.size()}, {"q_min", q.q_min},
+          {"q_mean", q.q_mean},                 {"q_below_0_5", q.q_below_half},
+          {"min_angle_deg", q.min_angle_deg},   {"iterations", r.stats.iterations},
+          {"retriangulations", r.stats.retriangulations}, {"converged", r.stats.converged}};
+}
+
+// measure() in a child process; adds the child's peak resident memory.
+Json measure_in_child(const std::filesystem::path& config) {
+  int fd[2];
+  if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    std::string out;
+    try {
+      out = measure(config).dump();
+    } catch (const std::exception& e) {
+      out = Json{{"error", e.what()}}.dump();
+    }
+    const ssize_t written = write(fd[1], out.data(), out.size());
+    _exit(written == static_cast<ssize_t>(out.size()) ? 0 : 1);
+  }
+  close(fd[1]);
+  std::string text;
+  char buf[4096];
+  for (ssize_t n; (n = read(fd[0], buf, sizeof buf)) > 0;) text.append(buf, static_cast<std::size_t>(n));
+  close(fd[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  Json j = Json::parse(text);
+  j["peak_memory_mib"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  return j;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::filesystem::path source = argc > 1 ? argv[1] : ".";
+  const int runs = 3;
+  const std::vector<Case> cases{
+      {"circle_h02 (Table 3.1)", "data/examples/circle_h02.ini", 0.8},
+      {"circle_h01 (Table 3.1)", "data/examples/circle_h01.ini", 8.62},
+      {"ellipse (Table 3.2)", "data/examples/ellipse.ini", 1.85},
+      {"union_polygon_circle (Table 3.3)", "data/examples/union_polygon_circle.ini", 10.28},
+      {"ellipse_minus_circle (Table 3.3)", "data/examples/ellipse_minus_circle.ini", 19.97},
+      {"intersection_two_circles (Table 3.3)", "data/examples/intersection_two_circles.ini", 1.16},
+      {"fibres_20", "data/examples/fibres_20.ini", {}},
+      {"unit disk h0 = 0.004", "bench/cases/disk_h0004.ini", {}},
+  };
+
+  Json results = Json::array();
+  std::printf("%-38s %9s %9s %8s %9s %7s %7s %8s %8s %9s\n", "case", "seconds", "thesis s", "ratio", "triangles",
+              "q_min", "q_mean", "q<0.5", "min ang", "peak MiB");
+  for (const Case& c : cases) {
+    std::vector<Json> samples;
+    for (int i = 0; i < runs; ++i) samples.push_back(measure_in_child(source / c.config));
+    if (samples.front().contains("error")) {
+      std::printf("%-38s error: %s\n", c.name.c_str(), samples.front()["error"].get<std::string>().c_str());
+      return 1;
+    }
+    std::sort(samples.begin(), samples.end(),
+              [](const Json& a, const Json& b) { return a["seconds"].get<double>() < b["seconds"].get<double>(); });
+    Json row = samples[runs / 2];  // the median run
+    double peak = 0.0;
+    for (const Json& s : samples) peak = std::max(peak, s["peak_memory_mib"].get<double>());
+    row["peak_memory_mib"] = peak;
+    row["runs"] = runs;
+    Json labelled{{"case", c.name}, {"config", c.config}};
+    labelled.update(row);
+    row = std::move(labelled);
+    std::string thesis = "-", ratio = "-";
+    if (c.thesis_seconds) {
+      row["thesis_seconds"] = *c.thesis_seconds;
+      row["share_of_thesis_time"] = row["seconds"].get<double>() / *c.thesis_seconds;
+      thesis = std::to_string(*c.thesis_seconds).substr(0, 5);
+      char b[32];
+      std::snprintf(b, sizeof b, "%.3f%%", 100.0 * row["share_of_thesis_time"].get<double>());
+      ratio = b;
+    }
+    std::printf("%-38s %9.4f %9s %8s %9zu %7.3f %7.4f %8.4f %8.1f %9.1f\n", c.name.c_str(), row["seconds"].get<double>(),
+                thesis.c_str(), ratio.c_str(), row["triangles"].get<std::size_t>(), row["q_min"].get<double>(),
+                row["q_mean"].get<double>(), row["q_below_0_5"].get<double>(), row["min_angle_deg"].get<double>(), peak);
+    std::fflush(stdout);
+    results.push_back(row);
+  }
+
+  char host[256] = "unknown";
+  gethostname(host, sizeof host);
+  const Json doc{{"benchmark", "distmesh"},
+                 {"machine", {{"cores", sysconf(_SC_NPROCESSORS_ONLN)}, {"host", host}}},
+                 {"timing", "median of 3 runs of the mesher alone, in a fresh process each"},
+                 {"cases", results}};
+  std::ofstream(source / "bench" / "results.json") << doc.dump(2) << "\n";
+  std::printf("wrote %s\n", (source / "bench" / "results.json").string().c_str());
+  return 0;
+}

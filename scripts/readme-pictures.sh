@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Regenerates the pictures in docs/images/ that README.md shows, with the built tool.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for name in union_polygon_circle graded_hole fibres_6 fibres_20; do
+  ./build/grainmesh domain "data/examples/$name.ini" -o "$tmp/$name" --set output.picture_width=480 > /dev/null
+  cp "$tmp/$name/mesh.png" "docs/images/$name.png"
+done
+echo "pictures written to docs/images/"
