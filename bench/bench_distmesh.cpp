@@ -32,9 +32,7 @@ struct Case {
 
 // Runs one case in this process and returns its measures.
 Json measure(const std::filesystem::path& config) {
-  const DomainJob job = read_domain_job(Config::from_file(config));
-  Rng rng(job.seed);
-  const DistMeshResult r = distmesh(job.problem, job.options, rng);
+  const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(config)));
   const MeshQuality q = measure_quality(r.mesh);
   return {{"seconds", r.stats.seconds},         {"points", r.mesh.points.size()},
           {"triangles", r.mesh.triangles.size()}, {"q_min", q.q_min},

@@ -129,36 +129,21 @@ struct Polygon final : DistanceFunction::Node {
   }
 };
 
-struct Union final : DistanceFunction::Node {
+// min (union, eq. 3.3) or max (intersection, eq. 3.8) of several distances.
+struct Extremum final : DistanceFunction::Node {
   std::vector<DistanceFunction> parts;
+  bool intersection = false;
   double eval(Vec2 p) const override {
-    double d = std::numeric_limits<double>::infinity();
-    for (const auto& f : parts) d = std::min(d, f(p));
-    return d;
-  }
-  Box bounds() const override {
-    Box b;
-    for (const auto& f : parts) b.extend(f.bounds());
-    return b;
-  }
-  void vertices(std::vector<Vec2>& out) const override {
-    for (const auto& f : parts) f.node()->vertices(out);
-  }
-  void limit_by_curvature(Vec2 p, double angle, double gradient, double& h) const override {
-    for (const auto& f : parts) f.node()->limit_by_curvature(p, angle, gradient, h);
-  }
-};
-
-struct Intersection final : DistanceFunction::Node {
-  std::vector<DistanceFunction> parts;
-  double eval(Vec2 p) const override {
-    double d = -std::numeric_limits<double>::infinity();
-    for (const auto& f : parts) d = std::max(d, f(p));
+    double d = parts.front()(p);
+    for (std::size_t i = 1; i < parts.size(); ++i) d = intersection ? std::max(d, parts[i](p)) : std::min(d, parts[i](p));
     return d;
   }
   Box bounds() const override {
     Box b = parts.front().bounds();
-    for (const auto& f : parts) b = intersection(b, f.bounds());
+    for (const auto& f : parts) {
+      if (intersection) b = grainmesh::intersection(b, f.bounds());
+      else b.extend(f.bounds());
+    }
     return b;
   }
   void vertices(std::vector<Vec2>& out) const override {
@@ -236,21 +221,20 @@ DistanceFunction polygon(std::vector<std::vector<Vec2>> rings) {
   return DistanceFunction(std::make_shared<Polygon>(std::move(rings)));
 }
 
-DistanceFunction unite(std::vector<DistanceFunction> parts) {
-  if (parts.empty()) throw GeometryError("union: needs at least one shape");
+namespace {
+DistanceFunction extremum(std::vector<DistanceFunction> parts, bool intersection) {
+  if (parts.empty()) throw GeometryError(std::string(intersection ? "intersection" : "union") + ": needs at least one shape");
   if (parts.size() == 1) return parts.front();
-  auto n = std::make_shared<Union>();
+  auto n = std::make_shared<Extremum>();
   n->parts = std::move(parts);
+  n->intersection = intersection;
   return DistanceFunction(std::move(n));
 }
+}  // namespace
 
-DistanceFunction intersect(std::vector<DistanceFunction> parts) {
-  if (parts.empty()) throw GeometryError("intersection: needs at least one shape");
-  if (parts.size() == 1) return parts.front();
-  auto n = std::make_shared<Intersection>();
-  n->parts = std::move(parts);
-  return DistanceFunction(std::move(n));
-}
+DistanceFunction unite(std::vector<DistanceFunction> parts) { return extremum(std::move(parts), false); }
+
+DistanceFunction intersect(std::vector<DistanceFunction> parts) { return extremum(std::move(parts), true); }
 
 DistanceFunction subtract(DistanceFunction a, DistanceFunction b) {
   return DistanceFunction(std::make_shared<Difference>(std::move(a), std::move(b)));

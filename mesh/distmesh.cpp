@@ -9,28 +9,21 @@
 #include <unordered_map>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "mesh/delaunay.hpp"
 
 namespace grainmesh {
 namespace {
 
-std::string fmt(double v) {
-  if (std::isnan(v)) return "NaN";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-std::string fmt(Vec2 p) { return "(" + fmt(p.x) + ", " + fmt(p.y) + ")"; }
-
 void check_parameters(const DistMeshProblem& pb, const DistMeshOptions& opt) {
   auto positive = [](double v, const std::string& name) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw ConfigError(name + " must be positive, got " + fmt(v));
+    if (!(v > 0.0) || !std::isfinite(v)) throw ConfigError(name + " must be positive, got " + to_text(v));
   };
   positive(pb.h0, "h0");
   if (pb.bbox.empty() || !is_finite(pb.bbox.lo) || !is_finite(pb.bbox.hi))
-    throw ConfigError("bounding box " + fmt(pb.bbox.lo) + " - " + fmt(pb.bbox.hi) + " is empty or not finite");
+    throw ConfigError("bounding box " + to_text(pb.bbox.lo) + " - " + to_text(pb.bbox.hi) + " is empty or not finite");
   if (!(pb.curvature_angle >= 0.0) || !std::isfinite(pb.curvature_angle))
-    throw ConfigError("curvature angle must be >= 0, got " + fmt(pb.curvature_angle));
+    throw ConfigError("curvature angle must be >= 0, got " + to_text(pb.curvature_angle));
   if (pb.curvature_angle > 0.0) positive(pb.curvature_gradient, "curvature gradient");
   positive(opt.fscale, "fscale");
   positive(opt.dt, "dt");
@@ -148,7 +141,7 @@ void Engine::check_size(const std::vector<Vec2>& pts) const {
   pb_.size.eval(pts, h);
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!(h[i] > 0.0) || !std::isfinite(h[i]))
-      throw ConfigError("size function '" + pb_.size.describe() + "' is " + fmt(h[i]) + " at " + fmt(pts[i]) +
+      throw ConfigError("size function '" + pb_.size.describe() + "' is " + to_text(h[i]) + " at " + to_text(pts[i]) +
                         " inside the domain; it must be finite and positive there");
 }
 
@@ -159,7 +152,7 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
   const double dy = spacing * std::sqrt(3.0) / 2.0;
   const double nx = std::floor(bb.width() / spacing) + 1.0, ny = std::floor(bb.height() / dy) + 1.0;
   if (nx * ny > 2e8)
-    throw ConfigError("the initial lattice of spacing " + fmt(spacing) + " would have " + fmt(nx * ny) +
+    throw ConfigError("the initial lattice of spacing " + to_text(spacing) + " would have " + to_text(nx * ny) +
                       " points over the bounding box: raise h0" +
                       (spacing < h0_ ? std::string(" or lower the curvature refinement") : std::string()));
   std::vector<Vec2> pts;
@@ -181,18 +174,18 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
 void Engine::seed_points(Rng& rng) {
   std::vector<Vec2> fixed;
   for (const Vec2 f : pb_.fixed) {
-    if (!is_finite(f)) throw GeometryError("fixed point " + fmt(f) + " is not finite");
+    if (!is_finite(f)) throw GeometryError("fixed point " + to_text(f) + " is not finite");
     const double d = pb_.domain(f);
     if (d > geps_)
-      throw GeometryError("fixed point " + fmt(f) + " lies outside the domain (distance " + fmt(d) + ")");
+      throw GeometryError("fixed point " + to_text(f) + " lies outside the domain (distance " + to_text(d) + ")");
     const bool dup = std::any_of(fixed.begin(), fixed.end(), [&](Vec2 g) { return norm(g - f) <= geps_; });
     if (!dup) fixed.push_back(f);
   }
 
   std::vector<Vec2> pts = lattice(h0_);
   if (pts.empty())
-    throw GeometryError("domain is empty inside its bounding box " + fmt(pb_.bbox.lo) + " - " + fmt(pb_.bbox.hi) +
-                        ": no lattice point of spacing h0 = " + fmt(h0_) + " lies inside");
+    throw GeometryError("domain is empty inside its bounding box " + to_text(pb_.bbox.lo) + " - " + to_text(pb_.bbox.hi) +
+                        ": no lattice point of spacing h0 = " + to_text(h0_) + " lies inside");
   check_size(pts);
   check_size(fixed);
 
@@ -554,7 +547,7 @@ DistMeshResult Engine::run(Rng& rng) {
       triangulate();
       retriangulate = false;
       if (tris_.empty())
-        throw GeometryError("domain is too small for h0 = " + fmt(h0_) + ": no triangle fits inside it");
+        throw GeometryError("domain is too small for h0 = " + to_text(h0_) + ": no triangle fits inside it");
     }
     bar_forces();
     if (opt_.density_control_every > 0 && it % opt_.density_control_every == 0 && density_control()) {

@@ -2,21 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/predicates.hpp"
 
 namespace grainmesh {
 namespace {
-
-std::string fmt_point(Vec2 p) {
-  char buf[80];
-  std::snprintf(buf, sizeof buf, "(%.9g, %.9g)", p.x, p.y);
-  return buf;
-}
 
 // True when q, known to be collinear with segment ab, lies on the closed segment.
 bool on_collinear_segment(Vec2 a, Vec2 b, Vec2 q) {
@@ -68,8 +62,8 @@ void validate_polygon(const PolygonRings& rings) {
       throw GeometryError(what + ": needs at least 3 vertices, has " + std::to_string(ring.size()));
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
-      if (!is_finite(a)) throw GeometryError(what + ": vertex " + fmt_point(a) + " is not finite");
-      if (a == b) throw GeometryError(what + ": repeated vertex " + fmt_point(a));
+      if (!is_finite(a)) throw GeometryError(what + ": vertex " + to_text(a, 9) + " is not finite");
+      if (a == b) throw GeometryError(what + ": repeated vertex " + to_text(a, 9));
       edges.push_back({a, b, r, i});
     }
   }
@@ -80,7 +74,7 @@ void validate_polygon(const PolygonRings& rings) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       const Vec2 prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
       if (orient2d(prev, v, next) == 0 && dot(v - prev, next - v) < 0)
-        throw GeometryError("polygon: edges fold back at vertex " + fmt_point(v));
+        throw GeometryError("polygon: edges fold back at vertex " + to_text(v, 9));
     }
   }
 
@@ -101,8 +95,8 @@ void validate_polygon(const PolygonRings& rings) {
         if ((e.index + 1) % n == f.index || (f.index + 1) % n == e.index) continue;
       }
       if (segments_touch(e.a, e.b, f.a, f.b))
-        throw GeometryError("polygon: edges " + fmt_point(e.a) + "-" + fmt_point(e.b) + " and " +
-                            fmt_point(f.a) + "-" + fmt_point(f.b) + " intersect");
+        throw GeometryError("polygon: edges " + to_text(e.a, 9) + "-" + to_text(e.b, 9) + " and " +
+                            to_text(f.a, 9) + "-" + to_text(f.b, 9) + " intersect");
     }
   }
 
@@ -110,7 +104,7 @@ void validate_polygon(const PolygonRings& rings) {
   for (std::size_t r = 1; r < rings.size(); ++r) {
     const Vec2 v = rings[r][0];
     if (!crosses_odd(rings[0], v))
-      throw GeometryError("polygon hole " + std::to_string(r) + " at " + fmt_point(v) +
+      throw GeometryError("polygon hole " + std::to_string(r) + " at " + to_text(v, 9) +
                           " is not inside the outer ring");
     for (std::size_t s = 1; s < rings.size(); ++s)
       if (s != r && crosses_odd(rings[s], v))

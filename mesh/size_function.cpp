@@ -3,9 +3,9 @@
 #include <muParser.h>
 
 #include <algorithm>
-#include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace grainmesh {
 
@@ -21,19 +21,13 @@ double SizeFunction::operator()(Vec2 p) const {
 
 namespace {
 
-std::string fmt_number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
 struct Constant final : SizeFunction::Node {
   double value;
   void eval(std::span<const Vec2>, std::span<double> out) const override {
     std::fill(out.begin(), out.end(), value);
   }
   double constant_value() const override { return value; }
-  std::string describe() const override { return fmt_number(value); }
+  std::string describe() const override { return to_text(value, 9); }
 };
 
 // muparser keeps the variables it reads by address and its evaluation stack inside the
@@ -92,7 +86,7 @@ struct Minimum final : SizeFunction::Node {
 
 SizeFunction constant_size(double value) {
   if (!(value > 0.0) || !std::isfinite(value))
-    throw ConfigError("size function: constant must be positive and finite, got " + fmt_number(value));
+    throw ConfigError("size function: constant must be positive and finite, got " + to_text(value, 9));
   auto n = std::make_shared<Constant>();
   n->value = value;
   return SizeFunction(std::move(n));

@@ -132,13 +132,17 @@ DomainJob read_domain_job(const Config& c) {
   return job;
 }
 
+DistMeshResult mesh_domain(const DomainJob& job) {
+  Rng rng(job.seed);
+  return distmesh(job.problem, job.options, rng);
+}
+
 namespace {
 
 Json run_and_write(const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out);
   const DomainJob job = read_domain_job(c);
-  Rng rng(job.seed);
-  DistMeshResult result = distmesh(job.problem, job.options, rng);
+  const DistMeshResult result = mesh_domain(job);
   const TriMesh& mesh = result.mesh;
 
   const MeshQuality quality = measure_quality(mesh);

@@ -26,6 +26,9 @@ const std::vector<std::string>& domain_config_keys();
 // Reads and checks a domain config. Throws ConfigError or GeometryError naming the key.
 DomainJob read_domain_job(const Config& config);
 
+// Meshes the job's problem with randomness from the job's seed alone.
+DistMeshResult mesh_domain(const DomainJob& job);
+
 // Meshes the config and writes the outputs into `out`, atomically, report.json last.
 void run_domain_command(const Config& config, const std::filesystem::path& out);
 

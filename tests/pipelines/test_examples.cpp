@@ -46,8 +46,7 @@ const std::map<std::string, Expected>& expected() {
 void check_example(const std::string& name) {
   const Config config = Config::from_file(test::example(name));
   const DomainJob job = read_domain_job(config);
-  Rng rng(job.seed);
-  const DistMeshResult r = distmesh(job.problem, job.options, rng);
+  const DistMeshResult r = mesh_domain(job);
   const TriMesh& mesh = r.mesh;
   const Expected& want = expected().at(name);
 
