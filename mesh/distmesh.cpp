@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <unordered_map>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "mesh/delaunay.hpp"
+#include "mesh/quality.hpp"
 
 namespace grainmesh {
 namespace {
@@ -80,10 +80,6 @@ struct AbsoluteSize final : SizeFunction::Node {
       for (const auto& c : curved) out[i] = std::min(out[i], c.curvature_size(p[i], angle, gradient));
     }
   }
-  double constant_value() const override {
-    if (!curved.empty() || !relative.is_constant()) return std::numeric_limits<double>::quiet_NaN();
-    return relative(Vec2{}) * scale;
-  }
   std::string describe() const override { return relative.describe(); }
 };
 
@@ -104,7 +100,8 @@ class Engine {
  private:
   std::vector<Vec2> lattice(double spacing) const;
   void seed_points(Rng& rng);
-  void check_size(const std::vector<Vec2>& pts) const;
+  std::vector<double> checked_size(const std::vector<Vec2>& pts) const;
+  int interface_mover(int a, int b, const std::vector<double>& di) const;
   void triangulate();
   void bar_forces();
   bool density_control();
@@ -129,20 +126,22 @@ class Engine {
   std::vector<std::array<int, 2>> bars_;     // unique edges of tris_
   std::vector<char> on_boundary_;            // #N: on an edge of one triangle
   std::vector<char> bar_on_boundary_;        // #bars: an edge of one triangle
-  std::vector<char> on_interface_;           // #N: held on dI = 0
+  std::vector<char> on_interface_;           // #N: held on dI = 0 (kept aligned with p_)
   std::vector<Vec2> force_, mid_;            // #N total force; #bars midpoints (at triangulation)
   std::vector<double> len_, len0_, d_, di_;  // #bars lengths, wanted lengths; #N d, dI
   std::vector<double> bar_size_;             // #bars size field at the midpoints
   DistMeshStats stats_;
 };
 
-void Engine::check_size(const std::vector<Vec2>& pts) const {
+// The user's size function at the points; throws where it is not finite and positive.
+std::vector<double> Engine::checked_size(const std::vector<Vec2>& pts) const {
   std::vector<double> h(pts.size());
   pb_.size.eval(pts, h);
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!(h[i] > 0.0) || !std::isfinite(h[i]))
       throw ConfigError("size function '" + pb_.size.describe() + "' is " + to_text(h[i]) + " at " + to_text(pts[i]) +
                         " inside the domain; it must be finite and positive there");
+  return h;
 }
 
 // Equilateral lattice of the given spacing over the bounding box (every other row shifted
@@ -172,27 +171,27 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
 // near the boundary are first projected onto it and thinned to the local size, and the
 // lattice keeps clear of them.
 void Engine::seed_points(Rng& rng) {
-  std::vector<Vec2> fixed;
+  std::vector<Vec2> fixed;  // each once: points closer than geps are the same point
+  PointGrid seen(h0_);
   for (const Vec2 f : pb_.fixed) {
     if (!is_finite(f)) throw GeometryError("fixed point " + to_text(f) + " is not finite");
     const double d = pb_.domain(f);
     if (d > geps_)
       throw GeometryError("fixed point " + to_text(f) + " lies outside the domain (distance " + to_text(d) + ")");
-    const bool dup = std::any_of(fixed.begin(), fixed.end(), [&](Vec2 g) { return norm(g - f) <= geps_; });
-    if (!dup) fixed.push_back(f);
+    if (seen.near(f, geps_)) continue;
+    seen.insert(f);
+    fixed.push_back(f);
   }
 
   std::vector<Vec2> pts = lattice(h0_);
   if (pts.empty())
     throw GeometryError("domain is empty inside its bounding box " + to_text(pb_.bbox.lo) + " - " + to_text(pb_.bbox.hi) +
                         ": no lattice point of spacing h0 = " + to_text(h0_) + " lies inside");
-  check_size(pts);
-  check_size(fixed);
+  const std::vector<double> h = checked_size(pts);
+  checked_size(fixed);
 
   // The absolute size field and the lattice spacing it needs.
   auto size = std::make_shared<AbsoluteSize>(pb_.size);
-  std::vector<double> h(pts.size());
-  pb_.size.eval(pts, h);
   size->scale = h0_ / *std::min_element(h.begin(), h.end());
   double spacing = h0_;
   if (pb_.curvature_angle > 0.0) {
@@ -224,8 +223,7 @@ void Engine::seed_points(Rng& rng) {
       if (taken.near(q, 0.85 * s[i])) continue;
       taken.insert(q);
       p_.push_back(q);
-      on_interface_.resize(p_.size(), 0);
-      on_interface_.back() = interface;
+      on_interface_.push_back(interface);
     }
   };
   auto clear_of = [&](const DistanceFunction& curve, std::size_t i) { return std::abs(curve(pts[i])) > 0.7 * s[i]; };
@@ -245,8 +243,8 @@ void Engine::seed_points(Rng& rng) {
       continue;
     }
     p_.push_back(pts[i]);
+    on_interface_.push_back(0);
   }
-  on_interface_.resize(p_.size(), 0);
   stats_.initial_points = p_.size();
 }
 
@@ -323,7 +321,6 @@ void Engine::bar_forces() {
 bool Engine::density_control() {
   std::vector<char> drop(p_.size(), 0);
   std::vector<Vec2> added_boundary, added_interface;
-  on_interface_.resize(p_.size(), 0);
   bool any = false;
   for (std::size_t e = 0; e < bars_.size(); ++e) {
     const int a = bars_[e][0], b = bars_[e][1];
@@ -361,6 +358,15 @@ void Engine::move_points() {
   for (std::size_t i = nfix_; i < p_.size(); ++i) p_[i] += opt_.dt * force_[i];
 }
 
+// Algorithm 3's choice for a bar crossing the interface: the end nearer to it, unless
+// that end is fixed; -1 when both are.
+int Engine::interface_mover(int a, int b, const std::vector<double>& di) const {
+  const int k = std::abs(di[a]) <= std::abs(di[b]) ? a : b;
+  if (static_cast<std::size_t>(k) >= nfix_) return k;
+  const int other = k == a ? b : a;
+  return static_cast<std::size_t>(other) >= nfix_ ? other : -1;
+}
+
 // Algorithm 3: for each bar whose ends lie on opposite sides of dI = 0, the end nearer
 // to the interface is projected onto it. Beyond the thesis, a point once on the
 // interface stays there: it is projected back after every move, so it slides along the
@@ -368,7 +374,6 @@ void Engine::move_points() {
 void Engine::follow_interface() {
   const DistanceFunction& di = *pb_.interface;
   di_.resize(p_.size());
-  on_interface_.resize(p_.size(), 0);
   for (std::size_t i = 0; i < p_.size(); ++i) {
     if (on_interface_[i] && i >= nfix_) p_[i] = project_to_zero(di, p_[i], deps_, proj_tol_);
     di_[i] = on_interface_[i] ? 0.0 : di(p_[i]);
@@ -376,9 +381,8 @@ void Engine::follow_interface() {
   for (const auto& bar : bars_) {
     const int a = bar[0], b = bar[1];
     if (!((di_[a] > 0.0 && di_[b] < 0.0) || (di_[a] < 0.0 && di_[b] > 0.0))) continue;
-    int k = std::abs(di_[a]) <= std::abs(di_[b]) ? a : b;
-    if (static_cast<std::size_t>(k) < nfix_) k = (k == a) ? b : a;
-    if (static_cast<std::size_t>(k) < nfix_) continue;
+    const int k = interface_mover(a, b, di_);
+    if (k < 0) continue;
     p_[k] = project_to_zero(di, p_[k], deps_, proj_tol_);
     di_[k] = 0.0;
     on_interface_[k] = 1;
@@ -418,26 +422,24 @@ std::size_t Engine::repair_interface() {
         lo = std::min(lo, side(a));
         hi = std::max(hi, side(a));
         if (side(a) * side(b) >= 0) continue;
-        int m = std::abs(di_[a]) <= std::abs(di_[b]) ? a : b;
-        if (static_cast<std::size_t>(m) < nfix_) m = (m == a) ? b : a;
-        if (static_cast<std::size_t>(m) >= nfix_) movers.push_back(m);
+        if (const int m = interface_mover(a, b, di_); m >= 0) movers.push_back(m);
       }
       straddling += (lo < 0 && hi > 0);
     }
     if (straddling == 0 || movers.empty() || pass == 20) return straddling;
     std::sort(movers.begin(), movers.end());
     movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
-    for (int m : movers) p_[m] = project_to_zero(di, p_[m], deps_, proj_tol_);
+    for (int m : movers) {
+      p_[m] = project_to_zero(di, p_[m], deps_, proj_tol_);
+      on_interface_[m] = 1;
+    }
     ++stats_.interface_repairs;
     triangulate();
   }
 }
 
-double signed_quality(Vec2 a, Vec2 b, Vec2 c) {
-  if (signed_area2(a, b, c) <= 0.0) return -1.0;
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
-  return (lb + lc - la) * (lc + la - lb) * (la + lb - lc) / (la * lb * lc);
-}
+// radius_ratio(), or -1 for an inverted or flat triangle.
+double signed_quality(Vec2 a, Vec2 b, Vec2 c) { return signed_area2(a, b, c) <= 0.0 ? -1.0 : radius_ratio(a, b, c); }
 
 // Local optimisation of the worst regions: a free point with a triangle of quality
 // below optimize_below moves along the gradient of the summed quality of its triangles,
@@ -455,9 +457,7 @@ void Engine::optimize_stars() {
   for (int t = 0; t < static_cast<int>(tris_.size()); ++t)
     for (int v : tris_[t]) star[fill[v]++] = t;
 
-  std::vector<char> on_interface(p_.size(), 0);
-  if (pb_.interface)
-    for (std::size_t i = 0; i < p_.size(); ++i) on_interface[i] = std::abs((*pb_.interface)(p_[i])) <= on_interface_tol_;
+  const std::vector<char>& on_interface = on_interface_;
   const double min_gain = 1e-5;  // summed quality: smaller gains are not worth a sweep
 
   auto star_quality = [&](std::size_t i, Vec2 x, double& qmin) {
