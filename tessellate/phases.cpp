@@ -1,0 +1,155 @@
+// Phase labels: which grains make up each phase's area fraction, and the binder offset.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <queue>
+#include <tuple>
+
+#include "tessellate/steps.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// The order in which grains are offered to a phase.
+std::vector<int> arrangement_order(const std::vector<int>& free, const std::vector<std::vector<int>>& neighbours,
+                                   const std::vector<int>& label, Arrangement arrangement,
+                                   const std::vector<double>& rank) {
+  std::vector<int> order = free;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return rank[a] < rank[b]; });
+  if (arrangement == Arrangement::random) return order;
+  std::vector<char> is_free(label.size(), 0);
+  for (int g : free) is_free[g] = 1;
+  std::vector<char> taken(label.size(), 0);
+  if (arrangement == Arrangement::dispersed) {
+    // First every grain with no neighbour taken yet, then the others.
+    std::vector<int> first, second;
+    for (int g : order) {
+      bool alone = true;
+      for (int n : neighbours[g]) alone = alone && !taken[n];
+      (alone ? first : second).push_back(g);
+      if (alone) taken[g] = 1;
+    }
+    first.insert(first.end(), second.begin(), second.end());
+    return first;
+  }
+  // Clustered: grow from the first grain, always taking the free grain with the most
+  // neighbours already taken; restart from the next unreached grain when cut off.
+  std::vector<int> out;
+  std::vector<int> count(label.size(), 0);
+  using Item = std::tuple<int, double, int>;  // (-taken neighbours, rank, grain)
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> heap;
+  std::size_t next_start = 0;
+  while (out.size() < order.size()) {
+    if (heap.empty()) {
+      while (taken[order[next_start]]) ++next_start;
+      heap.emplace(0, rank[order[next_start]], order[next_start]);
+    }
+    const auto [neg, r, g] = heap.top();
+    heap.pop();
+    if (taken[g] || -neg != count[g]) continue;
+    taken[g] = 1;
+    out.push_back(g);
+    for (int n : neighbours[g])
+      if (is_free[n] && !taken[n]) {
+        ++count[n];
+        heap.emplace(-count[n], rank[n], n);
+      }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<int> assign_phases(const std::vector<double>& areas, const std::vector<std::vector<int>>& neighbours,
+                               const std::vector<Phase>& all, const std::vector<int>& phases, double total_area,
+                               Arrangement arrangement, Rng& rng) {
+  const int n = static_cast<int>(areas.size());
+  std::vector<double> rank(n);
+  for (double& r : rank) r = uniform01(rng);
+  int rest = -1;
+  std::vector<int> explicit_phases;
+  for (int p : phases) {
+    if (all[p].rest) rest = p;
+    else explicit_phases.push_back(p);
+  }
+  if (rest < 0) {  // the last phase takes what rounding leaves
+    rest = explicit_phases.back();
+    explicit_phases.pop_back();
+  }
+  std::vector<int> label(n, -1);
+  for (int p : explicit_phases) {
+    std::vector<int> free;
+    for (int g = 0; g < n; ++g)
+      if (label[g] < 0) free.push_back(g);
+    const double target = all[p].fraction * total_area;
+    double sum = 0.0;
+    std::vector<int> chosen;
+    for (int g : arrangement_order(free, neighbours, label, arrangement, rank)) {
+      if (sum >= target) break;
+      // Take the grain if that brings the sum closer to the target.
+      if (std::abs(sum + areas[g] - target) < std::abs(sum - target)) {
+        sum += areas[g];
+        label[g] = p;
+        chosen.push_back(g);
+      }
+    }
+    // Best single swaps: a chosen grain out, a free one of the right size in.
+    for (int round = 0; round < 8; ++round) {
+      std::vector<std::pair<double, int>> pool;
+      for (int g : free)
+        if (label[g] < 0) pool.emplace_back(areas[g], g);
+      std::sort(pool.begin(), pool.end());
+      double best_gain = 0.0;
+      int best_out = -1, best_in = -1;
+      auto consider = [&](int out, int in) {
+        const double gain = std::abs(sum - target) - std::abs(sum - (out >= 0 ? areas[out] : 0.0) + areas[in] - target);
+        if (gain > best_gain) {
+          best_gain = gain;
+          best_out = out;
+          best_in = in;
+        }
+      };
+      for (int out : chosen) {
+        if (label[out] != p) continue;
+        const double want = areas[out] + (target - sum);
+        auto it = std::lower_bound(pool.begin(), pool.end(), std::make_pair(want, -1));
+        if (it != pool.end()) consider(out, it->second);
+        if (it != pool.begin()) consider(out, std::prev(it)->second);
+      }
+      if (best_out < 0) break;
+      label[best_out] = -1;
+      label[best_in] = p;
+      sum += areas[best_in] - areas[best_out];
+      std::replace(chosen.begin(), chosen.end(), best_out, best_in);
+    }
+  }
+  for (int& l : label)
+    if (l < 0) l = rest;
+  return label;
+}
+
+std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t) {
+  std::vector<Vec2> poly = ring;
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n && poly.size() >= 3; ++k) {
+    const Vec2 a = ring[k], b = ring[(k + 1) % n];
+    const Vec2 dir = b - a;
+    const double len = norm(dir);
+    if (len == 0.0) continue;
+    const Vec2 inward = perp(dir) / len;  // left of a counter-clockwise edge
+    const double c = dot(inward, a) + t;
+    std::vector<Vec2> out;
+    for (std::size_t m = 0; m < poly.size(); ++m) {
+      const Vec2 p = poly[m], q = poly[(m + 1) % poly.size()];
+      const double dp = dot(inward, p) - c, dq = dot(inward, q) - c;
+      if (dp >= 0.0) out.push_back(p);
+      if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
+    }
+    poly = std::move(out);
+  }
+  if (poly.size() < 3 || !(polygon_area(poly) > 0.0)) return {};
+  return poly;
+}
+
+}  // namespace grainmesh

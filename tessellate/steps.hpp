@@ -1,0 +1,107 @@
+// The steps tessellate() chains, each on plain data so tests can call one alone.
+#pragma once
+
+#include <vector>
+
+#include "common/random.hpp"
+#include "tessellate/tessellation.hpp"
+#include "tessellate/torus.hpp"
+
+namespace grainmesh {
+
+// --- regularise.cpp ------------------------------------------------------------------
+
+// Merges the end vertices of edges shorter than `threshold`, shortest first, into their
+// midpoint, as long as every ring it touches stays simple and counter-clockwise. A
+// three-sided cell that loses an edge disappears. Returns the number of edges collapsed;
+// `removed_cells` receives the cells that vanished.
+int collapse_short_edges(TorusGraph& g, double threshold, int* removed_cells);
+
+// The direction in which an edge between corners a and b is stored and computed: from
+// the smaller vertex id, or, for an edge to its own image, towards the positive shift.
+inline bool canonical_direction(const Corner& a, const Corner& b) {
+  if (a.v != b.v) return a.v < b.v;
+  return b.i - a.i > 0 || (b.i == a.i && b.j - a.j > 0);
+}
+
+// Each edge once: the cell and ring position where it runs in canonical direction.
+struct EdgeRef {
+  int cell = 0;
+  int at = 0;  // edge from rings[cell][at] to the next corner
+};
+std::vector<EdgeRef> unique_edges(const TorusGraph& g);
+
+// The cell whose ring holds the twin of edge `e` (v then u, same relative shift), and
+// where; {-1, -1} on the boundary of a plane (non-periodic) diagram.
+EdgeRef twin_edge(const TorusGraph& g, const std::vector<std::vector<int>>& vertex_cells, EdgeRef e);
+// Cells around each vertex.
+std::vector<std::vector<int>> vertex_cells(const TorusGraph& g);
+
+// --- window.cpp ----------------------------------------------------------------------
+
+// A segment of a grain boundary, anywhere in the plane (periodic images implied).
+struct Segment {
+  Vec2 a, b;
+};
+
+// The offset in [0, period) of the cell's lines normal to `axis` (0: lines x = c, 1:
+// lines y = c) that keeps crossings steep, away from vertices and apart from each other.
+// `scale` is the length below which a feature counts as short.
+double choose_line_offset(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
+                          double period, double other_period, bool other_periodic, double scale);
+
+// Moves every vertex, seed and corner of a periodic graph by -origin.
+void translate_graph(TorusGraph& g, Vec2 origin);
+
+// Replaces each crossing of a cell line (x = k W, y = k H; only the cell's own sides when
+// not periodic) shallower than `min_angle` by a square step of half-width <= `step`, so
+// the line is crossed at right angles. Returns the number of steps made.
+int square_shallow_crossings(TorusGraph& g, double min_angle, double step);
+
+// --- cut.cpp -------------------------------------------------------------------------
+
+// A corner given as base + (i W, j H), so the same corner reached twice has the same bits.
+struct CutCorner {
+  Vec2 base;
+  int i = 0;
+  int j = 0;
+};
+// The straight edge through which cut points are computed: endpoints p, q in the frame
+// shifted by (i W, j H). Shared edges of two polygons must carry the same p, q, i, j.
+struct CutEdge {
+  Vec2 p, q;
+  int i = 0;
+  int j = 0;
+};
+struct CutPolygon {
+  int grain = 0;
+  int phase = 0;
+  std::vector<CutCorner> corners;  // counter-clockwise
+  std::vector<CutEdge> edges;      // edges[k] runs from corners[k] to corners[k + 1]
+};
+
+// Cuts the polygons (and, when periodic, their lattice images) by the cell [0, W] x [0, H]
+// into regions; builds vertices, edges with their sides and, when periodic, the partner
+// maps. With `matrix_grain` >= 0 the rest of the cell becomes matrix regions of that
+// grain and `matrix_phase`.
+void cut_into_cell(const std::vector<CutPolygon>& polygons, Tessellation& t, int matrix_grain, int matrix_phase);
+
+// The canonical cut polygons of the cells of a graph (grain mode): polygon k for cell
+// cells[k], shared edges carrying one canonical frame.
+std::vector<CutPolygon> cell_polygons(const TorusGraph& g, const std::vector<int>& cells);
+
+// --- phases.cpp ----------------------------------------------------------------------
+
+// A phase for each grain, so that the summed `areas` of the grains of each phase with a
+// fraction approach fraction x total_area (greedy in the arrangement's order, then best
+// single swaps); the rest phase (or, without one, the last phase) takes the remaining
+// grains. `phases` indexes into `all`.
+std::vector<int> assign_phases(const std::vector<double>& areas, const std::vector<std::vector<int>>& neighbours,
+                               const std::vector<Phase>& all, const std::vector<int>& phases, double total_area,
+                               Arrangement arrangement, Rng& rng);
+
+// The convex set of points of a convex-ish polygon at distance >= t inside every edge's
+// line (the inward offset). Empty when nothing is left.
+std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t);
+
+}  // namespace grainmesh

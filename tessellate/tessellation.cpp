@@ -1,0 +1,398 @@
+// tessellate(): seeds -> power diagram -> Lloyd -> regularisation -> phases -> window ->
+// cut, and the checks and statistics of the result.
+#include "tessellate/tessellation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "common/errors.hpp"
+#include "tessellate/steps.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+// Crossings of the cell's sides shallower than this are squared off.
+constexpr double kMinSideAngle = 32.0 * kDegree;
+
+// The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
+std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
+  for (int side = 0; side < 4 && !poly.empty(); ++side) {
+    auto value = [&](Vec2 p) {
+      switch (side) {
+        case 0: return p.x;
+        case 1: return W - p.x;
+        case 2: return p.y;
+        default: return H - p.y;
+      }
+    };
+    std::vector<Vec2> out;
+    for (std::size_t n = 0; n < poly.size(); ++n) {
+      const Vec2 p = poly[n], q = poly[(n + 1) % poly.size()];
+      const double dp = value(p), dq = value(q);
+      if (dp >= 0.0) out.push_back(p);
+      if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
+    }
+    poly = std::move(out);
+  }
+  return poly;
+}
+
+// The polygon of a cell as it counts for areas and centroids: clipped when not periodic.
+std::vector<Vec2> counted_polygon(const TorusGraph& g, int c) {
+  auto poly = g.polygon(c);
+  return g.periodic ? poly : clip_to_cell(std::move(poly), g.width, g.height);
+}
+
+double normal(Rng& rng) {
+  const double u1 = 1.0 - uniform01(rng);  // (0, 1]
+  const double u2 = uniform01(rng);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+}
+
+std::vector<int> live(const TorusGraph& g) {
+  std::vector<int> cells;
+  for (int c = 0; c < static_cast<int>(g.rings.size()); ++c)
+    if (!g.rings[c].empty()) cells.push_back(c);
+  return cells;
+}
+
+// Distinct neighbouring cells of each cell, as indices into `cells`.
+std::vector<std::vector<int>> cell_neighbours(const TorusGraph& g, const std::vector<int>& cells) {
+  std::vector<int> index(g.rings.size(), -1);
+  for (std::size_t k = 0; k < cells.size(); ++k) index[cells[k]] = static_cast<int>(k);
+  const auto vc = vertex_cells(g);
+  std::vector<std::set<int>> sets(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    for (int at = 0; at < static_cast<int>(g.rings[cells[k]].size()); ++at) {
+      const EdgeRef twin = twin_edge(g, vc, {cells[k], at});
+      if (twin.cell >= 0 && twin.cell != cells[k] && index[twin.cell] >= 0) sets[k].insert(index[twin.cell]);
+    }
+  std::vector<std::vector<int>> out;
+  for (auto& s : sets) out.emplace_back(s.begin(), s.end());
+  return out;
+}
+
+// Smallest interior angle of a region at any corner: outer ring as given, holes (stored
+// counter-clockwise) seen from the region, i.e. 360 degrees minus the hole's angle.
+double region_sharpest(const Tessellation& t, const Region& r) {
+  double best = 2.0 * std::numbers::pi;
+  for (std::size_t q = 0; q < r.rings.size(); ++q) {
+    std::vector<Vec2> pts;
+    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
+    if (q > 0) std::reverse(pts.begin(), pts.end());
+    const std::size_t n = pts.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2 a = pts[(k + n - 1) % n] - pts[k], b = pts[(k + 1) % n] - pts[k];
+      double ang = q == 0 ? std::atan2(cross(b, a), dot(b, a)) : std::atan2(cross(a, b), dot(a, b));
+      if (ang < 0.0) ang += 2.0 * std::numbers::pi;
+      best = std::min(best, ang);
+    }
+  }
+  return best;
+}
+
+void mean_std(const std::vector<double>& v, double* mean, double* sd) {
+  double s = 0.0, s2 = 0.0;
+  for (double x : v) s += x;
+  *mean = v.empty() ? 0.0 : s / static_cast<double>(v.size());
+  for (double x : v) s2 += (x - *mean) * (x - *mean);
+  *sd = v.size() > 1 ? std::sqrt(s2 / static_cast<double>(v.size() - 1)) : 0.0;
+}
+
+void check_options(const TessellationOptions& o) {
+  if (!(o.width > 0.0) || !(o.height > 0.0)) throw ConfigError("cell width and height must be positive");
+  if (o.grains < 1) throw ConfigError("the number of grains must be at least 1");
+  if (o.phases.empty()) throw ConfigError("at least one phase is needed");
+  int rests = 0;
+  double sum = 0.0;
+  for (const Phase& p : o.phases) {
+    rests += p.rest ? 1 : 0;
+    sum += p.rest ? 0.0 : p.fraction;
+  }
+  if (rests > 1) throw ConfigError("only one phase may take the rest");
+  if (rests == 0 && std::abs(sum - 1.0) > 1e-9) throw ConfigError("phase fractions must sum to 1");
+  if (rests == 1 && sum > 1.0 + 1e-12) throw ConfigError("phase fractions exceed 1");
+  if (o.phase_mode == PhaseMode::binder && (o.matrix_phase < 0 || o.matrix_phase >= static_cast<int>(o.phases.size())))
+    throw ConfigError("binder mode needs a matrix phase");
+}
+
+double target_fraction(const std::vector<Phase>& phases, int p) {
+  if (!phases[p].rest) return phases[p].fraction;
+  double sum = 0.0;
+  for (const Phase& q : phases) sum += q.rest ? 0.0 : q.fraction;
+  return 1.0 - sum;
+}
+
+std::vector<Segment> graph_segments(const TorusGraph& g) {
+  std::vector<Segment> out;
+  for (const EdgeRef& e : unique_edges(g)) {
+    const auto& ring = g.rings[e.cell];
+    out.push_back({g.point(ring[e.at]), g.point(ring[(e.at + 1) % ring.size()])});
+  }
+  return out;
+}
+
+}  // namespace
+
+double region_area(const Tessellation& t, const Region& r) {
+  double a = 0.0;
+  for (std::size_t q = 0; q < r.rings.size(); ++q) {
+    std::vector<Vec2> pts;
+    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
+    a += (q == 0 ? 1.0 : -1.0) * polygon_area(pts);
+  }
+  return a;
+}
+
+Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
+  check_options(o);
+  const double W = o.width, H = o.height;
+  const int n = o.grains;
+  std::vector<Vec2> seeds(n);
+  for (Vec2& s : seeds) {
+    const double x = uniform01(rng), y = uniform01(rng);
+    s = {x * W, y * H};
+  }
+  std::vector<double> weights(n, 0.0);
+  if (o.size_cv > 0.0) {
+    // Lognormal radii with the asked coefficient of variation, scaled so their disks
+    // would cover half the cell; weights are the radii squared.
+    const double sigma = std::sqrt(std::log1p(o.size_cv * o.size_cv));
+    double disks = 0.0;
+    for (double& w : weights) {
+      const double r = std::exp(sigma * normal(rng));
+      w = r * r;
+      disks += std::numbers::pi * w;
+    }
+    const double scale = 0.5 * W * H / disks;
+    for (double& w : weights) w *= scale;
+  }
+  const double spacing = std::sqrt(W * H / n);
+  const double merge = 1e-9 * spacing;
+  TorusGraph g = power_diagram(seeds, weights, W, H, o.periodic, merge);
+  for (int it = 0; it < o.lloyd_iterations; ++it) {
+    for (int c = 0; c < n; ++c) {
+      if (g.rings[c].empty()) continue;
+      const auto poly = counted_polygon(g, c);
+      if (poly.size() < 3) continue;
+      const Vec2 centroid = polygon_centroid(poly);
+      seeds[c] = o.periodic ? reduce_periodic(centroid, W, H) : centroid;
+    }
+    g = power_diagram(seeds, weights, W, H, o.periodic, merge);
+  }
+
+  Tessellation t;
+  t.width = W;
+  t.height = H;
+  t.periodic = o.periodic;
+  t.phases = o.phases;
+  TessellationStats& st = t.stats;
+  {
+    std::vector<double> d;
+    for (int c : live(g)) d.push_back(std::sqrt(4.0 * polygon_area(counted_polygon(g, c)) / std::numbers::pi));
+    double sd = 0.0;
+    mean_std(d, &st.diameter_mean, &sd);
+  }
+  st.removed_grains = n - g.live_cells();
+  st.edge_threshold = o.min_edge * st.diameter_mean;
+  if (st.edge_threshold > 0.0) {
+    int vanished = 0;
+    st.collapsed_edges = collapse_short_edges(g, st.edge_threshold, &vanished);
+    st.removed_grains += vanished;
+  }
+  // Lengths below this count as short when placing the window.
+  const double scale = st.edge_threshold > 0.0 ? st.edge_threshold : 0.1 * st.diameter_mean;
+
+  const std::vector<int> cells = live(g);
+  const auto neighbours = cell_neighbours(g, cells);
+  {
+    double edges = 0.0, nb = 0.0, shortest = 1e300;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      edges += static_cast<double>(g.rings[cells[k]].size());
+      nb += static_cast<double>(neighbours[k].size());
+    }
+    for (const Segment& s : graph_segments(g)) shortest = std::min(shortest, norm(s.b - s.a));
+    st.edges_per_grain_mean = edges / static_cast<double>(cells.size());
+    st.neighbours_mean = nb / static_cast<double>(cells.size());
+    st.shortest_torus_edge = shortest;
+  }
+
+  std::vector<int> hard;  // phases grains take
+  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
+    if (o.phase_mode == PhaseMode::grain || p != o.matrix_phase) hard.push_back(p);
+
+  std::vector<CutPolygon> polys;
+  int matrix_grain = -1;
+  std::vector<int> grain_cell;  // torus cell of each grain
+  if (o.phase_mode == PhaseMode::grain) {
+    if (o.periodic) {
+      const auto segs = graph_segments(g);
+      const double ox = choose_line_offset(segs, g.vertices, 0, W, H, true, scale);
+      const double oy = choose_line_offset(segs, g.vertices, 1, H, W, true, scale);
+      st.window_origin = {ox, oy};
+      translate_graph(g, st.window_origin);
+    }
+    st.side_jogs = square_shallow_crossings(g, kMinSideAngle, scale);
+    std::vector<double> areas;
+    for (int c : cells) areas.push_back(polygon_area(counted_polygon(g, c)));
+    const auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
+    polys = cell_polygons(g, cells);
+    for (std::size_t k = 0; k < polys.size(); ++k) polys[k].phase = label[k];
+    grain_cell = cells;
+  } else {
+    const double f_m = target_fraction(o.phases, o.matrix_phase);
+    std::vector<std::vector<Vec2>> cell_poly;
+    for (int c : cells) cell_poly.push_back(g.polygon(c));
+    auto grain_area = [&](double off) {
+      double a = 0.0;
+      for (const auto& p : cell_poly) {
+        auto s = shrink_polygon(p, off);
+        if (!o.periodic && !s.empty()) s = clip_to_cell(std::move(s), W, H);
+        if (s.size() >= 3) a += polygon_area(s);
+      }
+      return a;
+    };
+    const std::string what = "binder matrix fraction " + std::to_string(f_m);
+    if (!(f_m > 0.0) || !(f_m < 1.0)) throw ConfigError(what + " cannot be reached: it must lie strictly between 0 and 1");
+    const double target = (1.0 - f_m) * W * H;  // grain area left after shrinking
+    double lo = 0.0, hi = spacing;
+    while (grain_area(hi) > target) {
+      lo = hi;
+      hi *= 2.0;
+      if (hi > 1e3 * std::max(W, H)) throw ConfigError(what + " cannot be reached by any offset");
+    }
+    for (int it = 0; it < 100 && hi - lo > 1e-13 * spacing; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (grain_area(mid) > target ? lo : hi) = mid;
+    }
+    st.binder_offset = 0.5 * (lo + hi);
+    std::vector<std::vector<Vec2>> shrunk;
+    std::vector<std::vector<int>> kept_neighbours;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      auto s = shrink_polygon(cell_poly[k], st.binder_offset);
+      if (s.empty()) {
+        ++st.removed_grains;  // swallowed by the matrix
+        continue;
+      }
+      shrunk.push_back(std::move(s));
+      grain_cell.push_back(cells[k]);
+    }
+    if (shrunk.empty()) throw ConfigError(what + " leaves no grain");
+    if (o.periodic) {
+      std::vector<Segment> segs;
+      std::vector<Vec2> pts;
+      for (const auto& s : shrunk)
+        for (std::size_t k = 0; k < s.size(); ++k) {
+          segs.push_back({s[k], s[(k + 1) % s.size()]});
+          pts.push_back(s[k]);
+        }
+      const double sc = std::min(scale, st.binder_offset);
+      st.window_origin = {choose_line_offset(segs, pts, 0, W, H, true, sc),
+                          choose_line_offset(segs, pts, 1, H, W, true, sc)};
+    }
+    std::vector<double> areas;
+    for (const auto& s : shrunk) {
+      areas.push_back(polygon_area(o.periodic ? s : clip_to_cell(s, W, H)));
+    }
+    std::vector<std::vector<int>> none(shrunk.size());
+    const auto label = assign_phases(areas, none, o.phases, hard, W * H, o.arrangement, rng);
+    for (std::size_t k = 0; k < shrunk.size(); ++k) {
+      CutPolygon poly{static_cast<int>(k), label[k], {}, {}};
+      const std::size_t m = shrunk[k].size();
+      for (std::size_t q = 0; q < m; ++q) {
+        const Vec2 p = shrunk[k][q] - st.window_origin;
+        poly.corners.push_back({p, 0, 0});
+      }
+      for (std::size_t q = 0; q < m; ++q) poly.edges.push_back({poly.corners[q].base, poly.corners[(q + 1) % m].base, 0, 0});
+      polys.push_back(std::move(poly));
+    }
+    matrix_grain = static_cast<int>(shrunk.size());
+    for (Vec2& s : g.seeds) s = o.periodic ? reduce_periodic(s - st.window_origin, W, H) : s;
+  }
+
+  cut_into_cell(polys, t, matrix_grain, matrix_grain >= 0 ? o.matrix_phase : -1);
+
+  // Grains and statistics.
+  const int grains = static_cast<int>(polys.size());
+  t.grains.resize(grains + (matrix_grain >= 0 ? 1 : 0));
+  std::vector<int> cell_to_grain(g.rings.size(), -1);
+  for (int k = 0; k < grains; ++k) cell_to_grain[grain_cell[k]] = k;
+  for (int k = 0; k < grains; ++k) {
+    Grain& gr = t.grains[k];
+    gr.id = k;
+    gr.phase = polys[k].phase;
+    gr.seed = g.seeds[grain_cell[k]];
+  }
+  if (matrix_grain >= 0) {
+    Grain& m = t.grains[matrix_grain];
+    m.id = matrix_grain;
+    m.phase = o.matrix_phase;
+    m.matrix = true;
+    for (int k = 0; k < grains; ++k) {
+      t.grains[k].neighbours = {matrix_grain};
+      m.neighbours.push_back(k);
+    }
+  } else {
+    for (int k = 0; k < grains; ++k)
+      for (int nb : neighbours[k]) t.grains[k].neighbours.push_back(cell_to_grain[cells[nb]]);
+  }
+  for (const Region& r : t.regions) t.grains[r.grain].area += region_area(t, r);
+  std::vector<double> areas, diameters;
+  for (int k = 0; k < grains; ++k) {
+    areas.push_back(t.grains[k].area);
+    diameters.push_back(std::sqrt(4.0 * t.grains[k].area / std::numbers::pi));
+  }
+  st.grains = grains;
+  mean_std(areas, &st.area_mean, &st.area_std);
+  mean_std(diameters, &st.diameter_mean, &st.diameter_std);
+  st.shortest_edge = 1e300;
+  for (const TessEdge& e : t.edges) st.shortest_edge = std::min(st.shortest_edge, norm(t.vertices[e.v1] - t.vertices[e.v0]));
+  double sharpest = 2.0 * std::numbers::pi;
+  for (const Region& r : t.regions) sharpest = std::min(sharpest, region_sharpest(t, r));
+  st.sharpest_corner_deg = sharpest / kDegree;
+  st.phases.assign(o.phases.size(), {});
+  for (std::size_t p = 0; p < o.phases.size(); ++p) st.phases[p].target_fraction = target_fraction(o.phases, static_cast<int>(p));
+  for (const Grain& gr : t.grains) {
+    st.phases[gr.phase].achieved_fraction += gr.area / (W * H);
+    st.phases[gr.phase].grains += gr.matrix ? 0 : 1;
+  }
+  validate(t);
+  return t;
+}
+
+void validate(const Tessellation& t) {
+  const double W = t.width, H = t.height;
+  double total = 0.0;
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    for (const auto& ring : t.regions[r].rings) {
+      std::vector<Vec2> pts;
+      for (int v : ring) pts.push_back(t.vertices[v]);
+      if (!(polygon_area(pts) > 0.0)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not counter-clockwise");
+      if (!ring_is_simple(pts)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not simple");
+    }
+    total += region_area(t, t.regions[r]);
+  }
+  if (std::abs(total - W * H) > 1e-9 * W * H)
+    throw GeometryError("tessellation: region areas sum to " + std::to_string(total) + ", not W x H");
+  for (const TessEdge& e : t.edges) {
+    if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
+    if (e.left < 0 || e.right < 0) {
+      const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
+      const bool on_side = (a.x == 0 && b.x == 0) || (a.x == W && b.x == W) || (a.y == 0 && b.y == 0) || (a.y == H && b.y == H);
+      if (!on_side) throw GeometryError("tessellation: an edge with one side lies inside the cell");
+    }
+  }
+  const double tol = 1e-12 * std::max(W, H);
+  for (const auto& [l, r] : t.partners_x)
+    if (std::abs(t.vertices[r].x - t.vertices[l].x - W) > tol || std::abs(t.vertices[r].y - t.vertices[l].y) > tol)
+      throw GeometryError("tessellation: x partners do not match");
+  for (const auto& [b, u] : t.partners_y)
+    if (std::abs(t.vertices[u].y - t.vertices[b].y - H) > tol || std::abs(t.vertices[u].x - t.vertices[b].x) > tol)
+      throw GeometryError("tessellation: y partners do not match");
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,196 @@
+// Where the cell's sides go on the torus, and what is done where they cross boundaries
+// too shallowly.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <tuple>
+
+#include "tessellate/steps.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+constexpr int kCandidates = 1024;                      // offsets tried per axis
+constexpr double kGoodAngle = 40.0 * std::numbers::pi / 180.0;  // steeper crossings score 1
+
+double coord(Vec2 p, int axis) { return axis == 0 ? p.x : p.y; }
+Vec2 make(int axis, double u, double w) { return axis == 0 ? Vec2{u, w} : Vec2{w, u}; }
+
+double wrap(double x, double period) {
+  double r = std::fmod(x, period);
+  if (r < 0.0) r += period;
+  return r;
+}
+
+}  // namespace
+
+double choose_line_offset(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
+                          double period, double other_period, bool other_periodic, double scale) {
+  const double h = period / kCandidates;
+  std::vector<double> worst(kCandidates, 1.0);  // the weakest feature near each line
+  std::vector<double> sum(kCandidates, 0.0);    // for ties: the total margin
+  std::vector<std::vector<double>> along(kCandidates);
+  auto lines_in = [&](double lo, double hi, auto&& f) {
+    for (long long G = static_cast<long long>(std::ceil(lo / h - 0.5)); (G + 0.5) * h < hi; ++G) {
+      const double c = (G + 0.5) * h;
+      if (c <= lo) continue;
+      f(static_cast<int>(((G % kCandidates) + kCandidates) % kCandidates), c);
+    }
+  };
+  for (const Vec2& p : points) {
+    const double u = coord(p, axis);
+    lines_in(u - scale, u + scale, [&](int g, double c) {
+      const double term = std::abs(c - u) / scale;
+      worst[g] = std::min(worst[g], term);
+      sum[g] += term - 1.0;
+    });
+  }
+  for (const Segment& s : segments) {
+    const double ua = coord(s.a, axis), ub = coord(s.b, axis);
+    const double wa = coord(s.a, 1 - axis), wb = coord(s.b, 1 - axis);
+    const double angle = std::atan2(std::abs(ub - ua), std::abs(wb - wa));
+    const double term = std::min(1.0, angle / kGoodAngle);
+    lines_in(std::min(ua, ub), std::max(ua, ub), [&](int g, double c) {
+      worst[g] = std::min(worst[g], term);
+      sum[g] += term - 1.0;
+      const double w = wa + (c - ua) / (ub - ua) * (wb - wa);
+      along[g].push_back(other_periodic ? wrap(w, other_period) : w);
+    });
+  }
+  int best = 0;
+  double best_score = -1e300;
+  for (int g = 0; g < kCandidates; ++g) {
+    auto& w = along[g];
+    std::sort(w.begin(), w.end());
+    for (std::size_t k = 0; k + 1 < w.size(); ++k) worst[g] = std::min(worst[g], (w[k + 1] - w[k]) / scale);
+    if (other_periodic && w.size() > 1) worst[g] = std::min(worst[g], (w.front() + other_period - w.back()) / scale);
+    const double score = std::min(worst[g], 1.0) + 1e-6 * sum[g];
+    if (score > best_score) {
+      best_score = score;
+      best = g;
+    }
+  }
+  return (best + 0.5) * h;
+}
+
+void translate_graph(TorusGraph& g, Vec2 origin) {
+  std::vector<Corner> shift(g.vertices.size());
+  for (std::size_t v = 0; v < g.vertices.size(); ++v)
+    g.vertices[v] = reduce_periodic(g.vertices[v] - origin, g.width, g.height, &shift[v]);
+  for (auto& ring : g.rings)
+    for (Corner& c : ring) {
+      c.i += shift[c.v].i;
+      c.j += shift[c.v].j;
+    }
+  for (Vec2& s : g.seeds) s = reduce_periodic(s - origin, g.width, g.height);
+}
+
+namespace {
+
+struct Shallow {
+  int u, v, di, dj;  // the edge, by its ends and their relative shift
+  int axis;
+  long long line;    // the line coordinate is line x period
+};
+
+// Inserts the step into edge e of cell c and its twin; false (and no change) when a ring
+// would stop being simple.
+bool insert_step(TorusGraph& g, std::vector<std::vector<int>>& vc, EdgeRef e, const Shallow& s, double step) {
+  auto& ring = g.rings[e.cell];
+  const Corner a = ring[e.at];
+  const Corner b = ring[(e.at + 1) % ring.size()];
+  const EdgeRef twin = twin_edge(g, vc, e);
+  if (twin.cell < 0) return false;
+  const double period = s.axis == 0 ? g.width : g.height;
+  const double c = static_cast<double>(s.line) * period;
+  const Vec2 pa = g.point(a), pb = g.point(b);
+  const double ua = coord(pa, s.axis), ub = coord(pb, s.axis);
+  const double wa = coord(pa, 1 - s.axis), wb = coord(pb, 1 - s.axis);
+  const double w = wa + (c - ua) / (ub - ua) * (wb - wa);
+  const double d = std::min({step, 0.45 * std::abs(ua - c), 0.45 * std::abs(ub - c), 0.45 * std::abs(w - wa),
+                             0.45 * std::abs(wb - w)});
+  if (!(d > 0.0)) return false;
+  const double sign = ua < c ? 1.0 : -1.0;
+  const Vec2 q1 = make(s.axis, c - sign * d, w);
+  const Vec2 q2 = make(s.axis, c + sign * d, w);
+  const int n1 = static_cast<int>(g.vertices.size());
+  const int n2 = n1 + 1;
+  Corner k1{}, k2{};
+  g.vertices.push_back(g.periodic ? reduce_periodic(q1, g.width, g.height, &k1) : q1);
+  g.vertices.push_back(g.periodic ? reduce_periodic(q2, g.width, g.height, &k2) : q2);
+  const Corner twin_a = g.rings[twin.cell][(twin.at + 1) % g.rings[twin.cell].size()];  // u in the twin's frame
+  const int Di = twin_a.i - a.i, Dj = twin_a.j - a.j;
+
+  const auto saved_c = g.rings[e.cell];
+  const auto saved_t = g.rings[twin.cell];
+  ring.insert(ring.begin() + e.at + 1, {Corner{n1, k1.i, k1.j}, Corner{n2, k2.i, k2.j}});
+  auto& tring = g.rings[twin.cell];
+  // When both occurrences are in one cell, the first insertion moved the second.
+  int tat = twin.at;
+  if (twin.cell == e.cell && twin.at > e.at) tat += 2;
+  tring.insert(tring.begin() + tat + 1, {Corner{n2, k2.i + Di, k2.j + Dj}, Corner{n1, k1.i + Di, k1.j + Dj}});
+  for (int cell : {e.cell, twin.cell}) {
+    const auto poly = g.polygon(cell);
+    if (!(polygon_area(poly) > 0.0) || !ring_is_simple(poly)) {
+      g.rings[e.cell] = saved_c;
+      g.rings[twin.cell] = saved_t;
+      g.vertices.resize(n1);
+      return false;
+    }
+  }
+  vc.push_back({std::min(e.cell, twin.cell), std::max(e.cell, twin.cell)});
+  if (vc.back()[0] == vc.back()[1]) vc.back().pop_back();
+  vc.push_back(vc.back());
+  return true;
+}
+
+}  // namespace
+
+int square_shallow_crossings(TorusGraph& g, double min_angle, double step) {
+  auto vc = vertex_cells(g);
+  int made = 0;
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<Shallow> found;
+    for (const EdgeRef& e : unique_edges(g)) {
+      const auto& ring = g.rings[e.cell];
+      const Corner& a = ring[e.at];
+      const Corner& b = ring[(e.at + 1) % ring.size()];
+      const Vec2 pa = g.point(a), pb = g.point(b);
+      bool taken = false;  // one step per edge and pass
+      for (int axis = 0; axis < 2 && !taken; ++axis) {
+        const double period = axis == 0 ? g.width : g.height;
+        const double ua = coord(pa, axis), ub = coord(pb, axis);
+        const double angle = std::atan2(std::abs(ub - ua), std::abs(coord(pb, 1 - axis) - coord(pa, 1 - axis)));
+        if (angle >= min_angle) continue;
+        for (long long k = static_cast<long long>(std::floor(std::min(ua, ub) / period)) + 1;
+             k * period < std::max(ua, ub) && !taken; ++k) {
+          if (!g.periodic && k != 0 && k != 1) continue;
+          found.push_back({a.v, b.v, b.i - a.i, b.j - a.j, axis, k});
+          taken = true;
+        }
+      }
+    }
+    if (found.empty()) break;
+    int done = 0;
+    for (const Shallow& s : found) {
+      for (int c : vc[s.u]) {
+        const auto& ring = g.rings[c];
+        int at = -1;
+        for (int k = 0; k < static_cast<int>(ring.size()); ++k) {
+          const Corner& p = ring[k];
+          const Corner& q = ring[(k + 1) % ring.size()];
+          if (p.v == s.u && q.v == s.v && q.i - p.i == s.di && q.j - p.j == s.dj) at = k;
+        }
+        if (at < 0) continue;
+        if (insert_step(g, vc, {c, at}, s, step)) ++done;
+        break;
+      }
+    }
+    made += done;
+    if (done == 0) break;
+  }
+  return made;
+}
+
+}  // namespace grainmesh
