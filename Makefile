@@ -3,7 +3,7 @@
 # changed is rebuilt (and ccache keeps rebuilds after `make clean` cheap).
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
-RUN_OUT ?= out/fibres_6
+RUN_OUT ?= out
 
 .PHONY: all deps configure build run test bench clean
 
@@ -19,10 +19,12 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# Until the microstructure pipeline exists, `make run` meshes the thesis' 6-fibre cell.
+# Until `grainmesh run` exists, `make run` runs the stages that do: a WC-Co microstructure
+# (tessellate) and the thesis' 6-fibre cell (domain).
 run: build
-	./$(BUILD_DIR)/grainmesh domain data/examples/fibres_6.ini -o $(RUN_OUT)
-	@echo "make run: the mesh is in $(RUN_OUT)/mesh.vtu (open it in ParaView), its picture in $(RUN_OUT)/mesh.png, the figures in $(RUN_OUT)/report.json"
+	./$(BUILD_DIR)/grainmesh tessellate data/examples/grains_wc_co.ini -o $(RUN_OUT)/grains_wc_co
+	./$(BUILD_DIR)/grainmesh domain data/examples/fibres_6.ini -o $(RUN_OUT)/fibres_6
+	@echo "make run: grains in $(RUN_OUT)/grains_wc_co/tessellation.{json,vtp,png}, the fibre mesh in $(RUN_OUT)/fibres_6/mesh.{vtu,png}; figures in each report.json"
 
 test: build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure

@@ -2,11 +2,7 @@
 // times, so that its peak memory is its own; the time is the mesher's alone (seeding,
 // iterations, final optimisation), without reading the config or writing files.
 // Prints a table and writes bench/results.json.
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -16,11 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "bench/child.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 
 using namespace grainmesh;
-using Json = nlohmann::ordered_json;
 
 namespace {
 
@@ -39,35 +35,6 @@ Json measure(const std::filesystem::path& config) {
           {"q_mean", q.q_mean},                 {"q_below_0_5", q.q_below_half},
           {"min_angle_deg", q.min_angle_deg},   {"iterations", r.stats.iterations},
           {"retriangulations", r.stats.retriangulations}, {"converged", r.stats.converged}};
-}
-
-// measure() in a child process; adds the child's peak resident memory.
-Json measure_in_child(const std::filesystem::path& config) {
-  int fd[2];
-  if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fd[0]);
-    std::string out;
-    try {
-      out = measure(config).dump();
-    } catch (const std::exception& e) {
-      out = Json{{"error", e.what()}}.dump();
-    }
-    const ssize_t written = write(fd[1], out.data(), out.size());
-    _exit(written == static_cast<ssize_t>(out.size()) ? 0 : 1);
-  }
-  close(fd[1]);
-  std::string text;
-  char buf[4096];
-  for (ssize_t n; (n = read(fd[0], buf, sizeof buf)) > 0;) text.append(buf, static_cast<std::size_t>(n));
-  close(fd[0]);
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  Json j = Json::parse(text);
-  j["peak_memory_mib"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  return j;
 }
 
 }  // namespace
@@ -90,19 +57,12 @@ int main(int argc, char** argv) {
   std::printf("%-38s %9s %9s %8s %9s %7s %7s %8s %8s %9s\n", "case", "seconds", "thesis s", "ratio", "triangles",
               "q_min", "q_mean", "q<0.5", "min ang", "peak MiB");
   for (const Case& c : cases) {
-    std::vector<Json> samples;
-    for (int i = 0; i < runs; ++i) samples.push_back(measure_in_child(source / c.config));
-    if (samples.front().contains("error")) {
-      std::printf("%-38s error: %s\n", c.name.c_str(), samples.front()["error"].get<std::string>().c_str());
+    Json row = median_in_children(runs, [&] { return measure(source / c.config); });
+    if (row.contains("error")) {
+      std::printf("%-38s error: %s\n", c.name.c_str(), row["error"].get<std::string>().c_str());
       return 1;
     }
-    std::sort(samples.begin(), samples.end(),
-              [](const Json& a, const Json& b) { return a["seconds"].get<double>() < b["seconds"].get<double>(); });
-    Json row = samples[runs / 2];  // the median run
-    double peak = 0.0;
-    for (const Json& s : samples) peak = std::max(peak, s["peak_memory_mib"].get<double>());
-    row["peak_memory_mib"] = peak;
-    row["runs"] = runs;
+    const double peak = row["peak_memory_mib"].get<double>();
     Json labelled{{"case", c.name}, {"config", c.config}};
     labelled.update(row);
     row = std::move(labelled);

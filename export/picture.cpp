@@ -30,26 +30,47 @@ Rgb region_colour(int region) {
   return palette[static_cast<std::size_t>(((region % n) + n) % n)];
 }
 
+// A white image of a box at the asked width, mapping coordinates to pixels, y up.
+class Canvas {
+ public:
+  Canvas(const Box& box, const PictureOptions& options)
+      : box_(box),
+        margin_(options.margin_px),
+        scale_((options.width_px - 2.0 * options.margin_px) / std::max(box.width(), 1e-300)),
+        height_(std::clamp(static_cast<int>(std::ceil(box.height() * scale_)) + 2 * options.margin_px, 1, 20000)),
+        surface_(cairo_image_surface_create(CAIRO_FORMAT_RGB24, options.width_px, height_), cairo_surface_destroy),
+        cr_(cairo_create(surface_.get()), cairo_destroy) {
+    cairo_set_source_rgb(cr_.get(), 1, 1, 1);
+    cairo_paint(cr_.get());
+  }
+  cairo_t* get() const { return cr_.get(); }
+  double scale() const { return scale_; }
+  Vec2 px(Vec2 p) const { return {margin_ + (p.x - box_.lo.x) * scale_, height_ - margin_ - (p.y - box_.lo.y) * scale_}; }
+  void save(const std::filesystem::path& file) {
+    cairo_surface_flush(surface_.get());
+    if (cairo_surface_write_to_png(surface_.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
+      throw IoError(file.string() + ": cannot write PNG");
+  }
+
+ private:
+  Box box_;
+  double margin_;
+  double scale_;
+  int height_;
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface_;
+  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
+};
+
 }  // namespace
 
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
   Box box;
   for (const Vec2 p : mesh.points) box.extend(p);
   if (box.empty() || mesh.triangles.empty()) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
-
-  const double inner_w = options.width_px - 2.0 * options.margin_px;
-  const double scale = inner_w / std::max(box.width(), 1e-300);
-  const int height = std::clamp(static_cast<int>(std::ceil(box.height() * scale)) + 2 * options.margin_px, 1, 20000);
-
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create(CAIRO_FORMAT_RGB24, options.width_px, height), cairo_surface_destroy);
-  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), cairo_destroy);
-  cairo_t* c = cr.get();
-
-  cairo_set_source_rgb(c, 1, 1, 1);
-  cairo_paint(c);
-  // Mesh coordinates to pixels, y up.
-  auto px = [&](Vec2 p) { return Vec2{options.margin_px + (p.x - box.lo.x) * scale, height - options.margin_px - (p.y - box.lo.y) * scale}; };
+  Canvas canvas(box, options);
+  cairo_t* c = canvas.get();
+  const double scale = canvas.scale();
+  auto px = [&](Vec2 p) { return canvas.px(p); };
 
   // Fills without antialiasing, so that neighbouring triangles leave no seams.
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
@@ -98,9 +119,39 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
          {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 
-  cairo_surface_flush(surface.get());
-  if (cairo_surface_write_to_png(surface.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
-    throw IoError(file.string() + ": cannot write PNG");
+  canvas.save(file);
+}
+
+void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t, const PictureOptions& options) {
+  if (t.regions.empty()) throw IoError(file.string() + ": nothing to draw, the tessellation is empty");
+  Canvas canvas(Box{{0.0, 0.0}, {t.width, t.height}}, options);
+  cairo_t* c = canvas.get();
+  cairo_set_fill_rule(c, CAIRO_FILL_RULE_EVEN_ODD);  // holes of matrix regions stay open
+  for (const Region& r : t.regions) {
+    for (const auto& ring : r.rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 p = canvas.px(t.vertices[ring[k]]);
+        k == 0 ? cairo_move_to(c, p.x, p.y) : cairo_line_to(c, p.x, p.y);
+      }
+      cairo_close_path(c);
+    }
+    const Rgb col = region_colour(r.phase);
+    cairo_set_source_rgb(c, col.r, col.g, col.b);
+    cairo_fill(c);
+  }
+  cairo_set_line_cap(c, CAIRO_LINE_CAP_ROUND);
+  for (bool side : {false, true}) {
+    for (const TessEdge& e : t.edges) {
+      if ((e.left < 0 || e.right < 0) != side) continue;
+      const Vec2 a = canvas.px(t.vertices[e.v0]), b = canvas.px(t.vertices[e.v1]);
+      cairo_move_to(c, a.x, a.y);
+      cairo_line_to(c, b.x, b.y);
+    }
+    cairo_set_line_width(c, side ? 2.5 : 1.0);
+    cairo_set_source_rgb(c, 0.1, 0.1, 0.15);
+    cairo_stroke(c);
+  }
+  canvas.save(file);
 }
 
 }  // namespace grainmesh

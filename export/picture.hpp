@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "mesh/trimesh.hpp"
+#include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
 
@@ -16,5 +17,10 @@ struct PictureOptions {
 // fixed palette), thin mesh edges when they are at least a few pixels long, and thick
 // lines along the mesh boundary and between regions. Throws IoError.
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
+
+// The cell with its regions filled by phase (holes left open), grain boundaries in thin
+// dark lines and the cell's sides in a thick one. Throws IoError.
+void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t,
+                            const PictureOptions& options = {});
 
 }  // namespace grainmesh

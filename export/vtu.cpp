@@ -12,9 +12,13 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
+#include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
+
+#include <array>
 
 #include "common/errors.hpp"
 
@@ -88,6 +92,55 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
   writer->SetCompressorTypeToZLib();
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
     throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+}
+
+void write_tessellation_vtp(const std::filesystem::path& file, const Tessellation& t) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(t.vertices.size()));
+  for (std::size_t i = 0; i < t.vertices.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), t.vertices[i].x, t.vertices[i].y, 0.0);
+  vtkNew<vtkCellArray> polys, lines;
+  std::vector<std::array<int, 6>> data;  // kind, grain, phase, region, left, right
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    const Region& region = t.regions[r];
+    if (region.rings.size() != 1) continue;
+    std::vector<vtkIdType> ids(region.rings[0].begin(), region.rings[0].end());
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    data.push_back({0, region.grain, region.phase, static_cast<int>(r), -1, -1});
+  }
+  for (const TessEdge& e : t.edges) {
+    const vtkIdType ids[2] = {e.v0, e.v1};
+    lines->InsertNextCell(2, ids);
+    const int g = e.left >= 0 ? t.regions[e.left].grain : -1;
+    const int p = e.left >= 0 ? t.regions[e.left].phase : -1;
+    data.push_back({1, g, p, -1, e.left, e.right});
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  poly->SetLines(lines);
+  // vtkPolyData numbers verts, lines, polys, strips in that order.
+  std::vector<std::array<int, 6>> ordered(data.begin() + polys->GetNumberOfCells(), data.end());
+  ordered.insert(ordered.end(), data.begin(), data.begin() + polys->GetNumberOfCells());
+  const char* names[6] = {"kind", "grain", "phase", "region", "left", "right"};
+  for (int k = 0; k < 6; ++k) {
+    vtkNew<vtkIntArray> array;
+    array->SetName(names[k]);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(ordered.size()));
+    for (std::size_t c = 0; c < ordered.size(); ++c) array->SetValue(static_cast<vtkIdType>(c), ordered[c][k]);
+    poly->GetCellData()->AddArray(array);
+  }
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  vtkNew<ErrorCatcher> errors;
+  errors->watch(writer);
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(poly);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
+    throw IoError(file.string() + ": cannot write VTP file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
 
 VtuContents read_vtu(const std::filesystem::path& file) {

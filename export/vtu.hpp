@@ -1,4 +1,5 @@
-// VTK XML unstructured grids (.vtu) of triangle meshes, through the VTK library.
+// VTK XML files through the VTK library: unstructured grids (.vtu) of triangle meshes,
+// polydata (.vtp) of tessellations.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "mesh/trimesh.hpp"
+#include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
 
@@ -28,5 +30,15 @@ struct VtuContents {
   std::vector<CellField> fields;
 };
 VtuContents read_vtu(const std::filesystem::path& file);
+
+}  // namespace grainmesh
+
+namespace grainmesh {
+
+// Writes the tessellation as VTK polydata (z = 0): one polygon per region without holes
+// (grain pieces), one line per edge. Cell arrays: kind (0 region, 1 edge), grain, phase,
+// region (-1 on edges), and on edges the regions left and right (-1 on regions).
+// Matrix regions with holes appear through their edges only. Throws IoError.
+void write_tessellation_vtp(const std::filesystem::path& file, const Tessellation& t);
 
 }  // namespace grainmesh

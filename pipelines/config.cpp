@@ -61,9 +61,25 @@ void Config::fail(const std::string& key, const std::string& message) const {
   throw ConfigError(source_ + ": " + key + ": " + message);
 }
 
+namespace {
+
+// A known key matches a key when their dot-separated parts agree, "*" matching any one.
+bool key_matches(std::string_view pattern, std::string_view key) {
+  while (true) {
+    const auto pd = pattern.find('.'), kd = key.find('.');
+    const std::string_view ph = pattern.substr(0, pd), kh = key.substr(0, kd);
+    if (ph != "*" ? ph != kh : kh.empty()) return false;
+    if (pd == std::string_view::npos || kd == std::string_view::npos) return pd == kd;
+    pattern.remove_prefix(pd + 1);
+    key.remove_prefix(kd + 1);
+  }
+}
+
+}  // namespace
+
 void Config::check_keys(const std::vector<std::string>& known) const {
   for (const auto& [key, value] : entries_)
-    if (std::find(known.begin(), known.end(), key) == known.end()) {
+    if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); })) {
       // Point at the section's keys when the section exists, so typos are easy to fix.
       const std::string section = key.substr(0, key.find('.') + 1);
       std::string hint;

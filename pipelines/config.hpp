@@ -21,7 +21,8 @@ class Config {
   // The same from text; `source` names it in messages.
   static Config from_text(std::string_view text, std::string source, const std::vector<std::string>& overrides = {});
 
-  // Throws ConfigError naming the first key that is not in `known`.
+  // Throws ConfigError naming the first key that is not in `known`; a part "*" of a
+  // known key stands for any one name ("phase.*.fraction").
   void check_keys(const std::vector<std::string>& known) const;
 
   bool has(const std::string& key) const;

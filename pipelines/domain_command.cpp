@@ -195,24 +195,10 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   return report;
 }
 
-// The same error, its message starting with the config file's name.
-template <typename E>
-E naming_source(const E& e, const Config& c) {
-  const std::string msg = e.what();
-  return E(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
-}
-
 }  // namespace
 
 void run_domain_command(const Config& c, const std::filesystem::path& out) {
-  Json report;
-  try {
-    report = run_and_write(c, out);
-  } catch (const ConfigError& e) {
-    throw naming_source(e, c);
-  } catch (const GeometryError& e) {
-    throw naming_source(e, c);
-  }
+  const Json report = run_and_write(c, out);
   std::printf("grainmesh domain: %zu points, %zu triangles, q_min %.3f, q_mean %.3f, %s after %d iterations "
               "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.png, report.json}\n",
               report["points"].get<std::size_t>(), report["triangles"].get<std::size_t>(),

@@ -4,6 +4,7 @@
 #include <boost/program_options.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "common/errors.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
+#include "pipelines/tessellate_command.hpp"
 
 namespace po = boost::program_options;
 using namespace grainmesh;
@@ -21,6 +23,8 @@ constexpr const char* kUsage =
     "usage: grainmesh <command> [options]\n"
     "\n"
     "commands:\n"
+    "  tessellate CONFIG -o OUT [--set KEY=VALUE ...]\n"
+    "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      mesh a domain given by distance and size functions (see data/examples/)\n"
     "\n"
@@ -28,28 +32,44 @@ constexpr const char* kUsage =
 
 enum Exit { kOk = 0, kInternal = 1, kConfig = 2, kGeometry = 3, kIo = 4 };
 
-int domain_main(const std::vector<std::string>& args) {
-  po::options_description desc("grainmesh domain CONFIG -o OUT [--set KEY=VALUE ...]");
-  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(), "domain config file (INI)")(
+using Runner = void (*)(const Config&, const std::filesystem::path&);
+
+// The same error, its message starting with the config file's name.
+template <typename E>
+E naming_source(const E& e, const Config& c) {
+  const std::string msg = e.what();
+  return E(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
+}
+
+// A command of the form `grainmesh NAME CONFIG -o OUT [--set KEY=VALUE ...]`.
+int config_command(const std::string& name, const std::vector<std::string>& args, Runner run) {
+  po::options_description desc("grainmesh " + name + " CONFIG -o OUT [--set KEY=VALUE ...]");
+  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(), "config file (INI)")(
       "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "set", po::value<std::vector<std::string>>()->composing(), "override a config key, e.g. --set size.h0=0.05");
+      "set", po::value<std::vector<std::string>>()->composing(), "override a config key, e.g. --set section.key=value");
   po::positional_options_description pos;
   pos.add("config", 1);
   po::variables_map vm;
   try {
     po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
   } catch (const po::error& e) {
-    throw ConfigError(std::string("domain: ") + e.what());
+    throw ConfigError(name + ": " + e.what());
   }
   if (vm.count("help")) {
-    std::cout << desc << "\nConfig keys: see README.md, section 'grainmesh domain'.\n";
+    std::cout << desc << "\nConfig keys: see README.md, section 'grainmesh " << name << "'.\n";
     return kOk;
   }
-  if (!vm.count("config")) throw ConfigError("domain: missing CONFIG file argument");
-  if (!vm.count("output")) throw ConfigError("domain: missing -o OUT (the output directory)");
+  if (!vm.count("config")) throw ConfigError(name + ": missing CONFIG file argument");
+  if (!vm.count("output")) throw ConfigError(name + ": missing -o OUT (the output directory)");
   const auto overrides = vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
   const Config config = Config::from_file(vm["config"].as<std::string>(), overrides);
-  run_domain_command(config, vm["output"].as<std::string>());
+  try {
+    run(config, vm["output"].as<std::string>());
+  } catch (const ConfigError& e) {
+    throw naming_source(e, config);
+  } catch (const GeometryError& e) {
+    throw naming_source(e, config);
+  }
   return kOk;
 }
 
@@ -67,7 +87,8 @@ int main(int argc, char** argv) {
       return kOk;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
-    if (args[0] == "domain") return domain_main(rest);
+    if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
+    if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "grainmesh: error: %s\n", e.what());

@@ -8,4 +8,8 @@ for name in union_polygon_circle graded_hole fibres_6 fibres_20; do
   ./build/grainmesh domain "data/examples/$name.ini" -o "$tmp/$name" --set output.picture_width=480 > /dev/null
   cp "$tmp/$name/mesh.png" "docs/images/$name.png"
 done
+for name in grains_wc_co grains_binder; do
+  ./build/grainmesh tessellate "data/examples/$name.ini" -o "$tmp/$name" --set output.picture_width=480 > /dev/null
+  cp "$tmp/$name/tessellation.png" "docs/images/$name.png"
+done
 echo "pictures written to docs/images/"

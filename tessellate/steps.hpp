@@ -57,6 +57,9 @@ void translate_graph(TorusGraph& g, Vec2 origin);
 // not periodic) shallower than `min_angle` by a square step of half-width <= `step`, so
 // the line is crossed at right angles. Returns the number of steps made.
 int square_shallow_crossings(TorusGraph& g, double min_angle, double step);
+// The same for one polygon of its own (a binder-mode grain), in place.
+int square_shallow_crossings(std::vector<Vec2>& polygon, double width, double height, bool periodic,
+                             double min_angle, double step);
 
 // --- cut.cpp -------------------------------------------------------------------------
 

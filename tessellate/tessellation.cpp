@@ -294,6 +294,12 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
       st.window_origin = {choose_line_offset(segs, pts, 0, W, H, true, sc),
                           choose_line_offset(segs, pts, 1, H, W, true, sc)};
     }
+    // Square off shallow side crossings; each step costs the binder layer at most a
+    // quarter of its thickness.
+    for (auto& s : shrunk) {
+      for (Vec2& p : s) p -= st.window_origin;
+      st.side_jogs += square_shallow_crossings(s, W, H, o.periodic, kMinSideAngle, std::min(scale, 0.25 * st.binder_offset));
+    }
     std::vector<double> areas;
     for (const auto& s : shrunk) {
       areas.push_back(polygon_area(o.periodic ? s : clip_to_cell(s, W, H)));
@@ -304,8 +310,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
       CutPolygon poly{static_cast<int>(k), label[k], {}, {}};
       const std::size_t m = shrunk[k].size();
       for (std::size_t q = 0; q < m; ++q) {
-        const Vec2 p = shrunk[k][q] - st.window_origin;
-        poly.corners.push_back({p, 0, 0});
+        poly.corners.push_back({shrunk[k][q], 0, 0});
       }
       for (std::size_t q = 0; q < m; ++q) poly.edges.push_back({poly.corners[q].base, poly.corners[(q + 1) % m].base, 0, 0});
       polys.push_back(std::move(poly));

@@ -88,6 +88,37 @@ void translate_graph(TorusGraph& g, Vec2 origin) {
 
 namespace {
 
+// The corners of a square step that replaces the crossing of segment pa -> pb with the
+// line coord(axis) = c: q1 before the line, q2 after it, both at the crossing's height
+// and at most `step` from the line. False when the segment's ends leave no room.
+bool step_points(Vec2 pa, Vec2 pb, int axis, double c, double step, Vec2* q1, Vec2* q2) {
+  const double ua = coord(pa, axis), ub = coord(pb, axis);
+  const double wa = coord(pa, 1 - axis), wb = coord(pb, 1 - axis);
+  const double w = wa + (c - ua) / (ub - ua) * (wb - wa);
+  const double d = std::min({step, 0.45 * std::abs(ua - c), 0.45 * std::abs(ub - c), 0.45 * std::abs(w - wa),
+                             0.45 * std::abs(wb - w)});
+  if (!(d > 0.0)) return false;
+  const double sign = ua < c ? 1.0 : -1.0;
+  *q1 = make(axis, c - sign * d, w);
+  *q2 = make(axis, c + sign * d, w);
+  return true;
+}
+
+// The first line coord(axis) = k x period crossed by pa -> pb at less than min_angle, or
+// false. Only k = 0, 1 when not periodic.
+bool shallow_crossing(Vec2 pa, Vec2 pb, int axis, double period, bool periodic, double min_angle, long long* line) {
+  const double ua = coord(pa, axis), ub = coord(pb, axis);
+  const double angle = std::atan2(std::abs(ub - ua), std::abs(coord(pb, 1 - axis) - coord(pa, 1 - axis)));
+  if (angle >= min_angle) return false;
+  for (long long k = static_cast<long long>(std::floor(std::min(ua, ub) / period)) + 1; k * period < std::max(ua, ub);
+       ++k)
+    if (periodic || k == 0 || k == 1) {
+      *line = k;
+      return true;
+    }
+  return false;
+}
+
 struct Shallow {
   int u, v, di, dj;  // the edge, by its ends and their relative shift
   int axis;
@@ -103,17 +134,8 @@ bool insert_step(TorusGraph& g, std::vector<std::vector<int>>& vc, EdgeRef e, co
   const EdgeRef twin = twin_edge(g, vc, e);
   if (twin.cell < 0) return false;
   const double period = s.axis == 0 ? g.width : g.height;
-  const double c = static_cast<double>(s.line) * period;
-  const Vec2 pa = g.point(a), pb = g.point(b);
-  const double ua = coord(pa, s.axis), ub = coord(pb, s.axis);
-  const double wa = coord(pa, 1 - s.axis), wb = coord(pb, 1 - s.axis);
-  const double w = wa + (c - ua) / (ub - ua) * (wb - wa);
-  const double d = std::min({step, 0.45 * std::abs(ua - c), 0.45 * std::abs(ub - c), 0.45 * std::abs(w - wa),
-                             0.45 * std::abs(wb - w)});
-  if (!(d > 0.0)) return false;
-  const double sign = ua < c ? 1.0 : -1.0;
-  const Vec2 q1 = make(s.axis, c - sign * d, w);
-  const Vec2 q2 = make(s.axis, c + sign * d, w);
+  Vec2 q1, q2;
+  if (!step_points(g.point(a), g.point(b), s.axis, static_cast<double>(s.line) * period, step, &q1, &q2)) return false;
   const int n1 = static_cast<int>(g.vertices.size());
   const int n2 = n1 + 1;
   Corner k1{}, k2{};
@@ -157,18 +179,11 @@ int square_shallow_crossings(TorusGraph& g, double min_angle, double step) {
       const Corner& a = ring[e.at];
       const Corner& b = ring[(e.at + 1) % ring.size()];
       const Vec2 pa = g.point(a), pb = g.point(b);
-      bool taken = false;  // one step per edge and pass
-      for (int axis = 0; axis < 2 && !taken; ++axis) {
-        const double period = axis == 0 ? g.width : g.height;
-        const double ua = coord(pa, axis), ub = coord(pb, axis);
-        const double angle = std::atan2(std::abs(ub - ua), std::abs(coord(pb, 1 - axis) - coord(pa, 1 - axis)));
-        if (angle >= min_angle) continue;
-        for (long long k = static_cast<long long>(std::floor(std::min(ua, ub) / period)) + 1;
-             k * period < std::max(ua, ub) && !taken; ++k) {
-          if (!g.periodic && k != 0 && k != 1) continue;
-          found.push_back({a.v, b.v, b.i - a.i, b.j - a.j, axis, k});
-          taken = true;
-        }
+      for (int axis = 0; axis < 2; ++axis) {  // one step per edge and pass
+        long long k = 0;
+        if (!shallow_crossing(pa, pb, axis, axis == 0 ? g.width : g.height, g.periodic, min_angle, &k)) continue;
+        found.push_back({a.v, b.v, b.i - a.i, b.j - a.j, axis, k});
+        break;
       }
     }
     if (found.empty()) break;
@@ -189,6 +204,29 @@ int square_shallow_crossings(TorusGraph& g, double min_angle, double step) {
     }
     made += done;
     if (done == 0) break;
+  }
+  return made;
+}
+
+int square_shallow_crossings(std::vector<Vec2>& poly, double width, double height, bool periodic, double min_angle,
+                             double step) {
+  int made = 0;
+  for (std::size_t k = 0; k < poly.size() && made < 64; ++k) {
+    const Vec2 pa = poly[k], pb = poly[(k + 1) % poly.size()];
+    for (int axis = 0; axis < 2; ++axis) {
+      const double period = axis == 0 ? width : height;
+      long long line = 0;
+      Vec2 q1, q2;
+      if (!shallow_crossing(pa, pb, axis, period, periodic, min_angle, &line) ||
+          !step_points(pa, pb, axis, static_cast<double>(line) * period, step, &q1, &q2))
+        continue;
+      std::vector<Vec2> trial = poly;
+      trial.insert(trial.begin() + static_cast<std::ptrdiff_t>(k) + 1, {q1, q2});
+      if (!(polygon_area(trial) > 0.0) || !ring_is_simple(trial)) continue;
+      poly = std::move(trial);
+      ++made;
+      break;  // the new segments are checked as the loop goes on
+    }
   }
   return made;
 }

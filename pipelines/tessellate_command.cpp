@@ -1,0 +1,213 @@
+#include "pipelines/tessellate_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "export/picture.hpp"
+#include "export/vtu.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+#include "tessellate/tessellation_json.hpp"
+
+namespace grainmesh {
+
+const std::vector<std::string>& tessellate_config_keys() {
+  static const std::vector<std::string> keys{
+      "domain.width",           "domain.height",           "domain.periodic",
+      "tessellation.grains",    "tessellation.grain_size", "tessellation.seed",
+      "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
+      "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
+      "phase.*.fraction",       "phase.*.E",               "phase.*.nu",
+      "output.picture_width"};
+  return keys;
+}
+
+namespace {
+
+double positive(const Config& c, const std::string& key) {
+  if (!c.has(key)) c.fail(key, "missing (required)");
+  const double v = c.number(key);
+  if (!(v > 0.0) || !std::isfinite(v)) c.fail(key, "must be positive, got " + c.text(key));
+  return v;
+}
+
+std::vector<Phase> read_phases(const Config& c) {
+  std::vector<std::string> names;
+  for (const auto& [key, value] : c.entries()) {
+    if (key.rfind("phase.", 0) != 0) continue;
+    const std::string name = key.substr(6, key.rfind('.') - 6);
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  if (names.empty()) c.fail("phase.*.fraction", "no phase given: add a section [phase.NAME] with fraction, E and nu");
+  std::vector<Phase> phases;
+  double sum = 0.0;
+  int rests = 0;
+  for (const auto& name : names) {
+    const std::string key = "phase." + name + ".";
+    Phase p{.name = name};
+    if (!c.has(key + "fraction")) c.fail(key + "fraction", "missing (a number in (0, 1], or rest)");
+    if (c.text(key + "fraction") == "rest") {
+      p.rest = true;
+      ++rests;
+      if (rests > 1) c.fail(key + "fraction", "only one phase may take the rest");
+    } else {
+      p.fraction = c.number(key + "fraction");
+      if (!(p.fraction > 0.0 && p.fraction <= 1.0)) c.fail(key + "fraction", "must lie in (0, 1] or be rest, got " + c.text(key + "fraction"));
+      sum += p.fraction;
+    }
+    p.youngs_modulus = positive(c, key + "E");
+    if (!c.has(key + "nu")) c.fail(key + "nu", "missing (required)");
+    p.poisson_ratio = c.number(key + "nu");
+    if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) c.fail(key + "nu", "must lie in (-1, 0.5), got " + c.text(key + "nu"));
+    phases.push_back(p);
+  }
+  const std::string last = "phase." + names.back() + ".fraction";
+  if (rests == 0 && std::abs(sum - 1.0) > 1e-9)
+    c.fail(last, "the phase fractions sum to " + to_text(sum) + ", not 1 (or let one phase take the rest)");
+  if (rests == 1 && sum >= 1.0 - 1e-12)
+    c.fail(last, "the phase fractions sum to " + to_text(sum) + ", leaving nothing for the rest phase");
+  return phases;
+}
+
+}  // namespace
+
+TessellateJob read_tessellate_job(const Config& c) {
+  c.check_keys(tessellate_config_keys());
+  TessellateJob job;
+  TessellationOptions& o = job.options;
+  o.width = positive(c, "domain.width");
+  o.height = positive(c, "domain.height");
+  o.periodic = c.flag("domain.periodic", true);
+  if (c.has("tessellation.grains") && c.has("tessellation.grain_size"))
+    c.fail("tessellation.grain_size", "give either tessellation.grains or tessellation.grain_size, not both");
+  if (c.has("tessellation.grain_size")) {
+    const double d = positive(c, "tessellation.grain_size");  // mean equivalent-circle diameter
+    const double n = std::round(o.width * o.height / (0.25 * std::numbers::pi * d * d));
+    if (n < 1.0) c.fail("tessellation.grain_size", "is larger than the cell: no grain fits");
+    if (n > 1e7) c.fail("tessellation.grain_size", "gives " + to_text(n) + " grains, more than 10 million");
+    o.grains = static_cast<int>(n);
+  } else {
+    const long long n = c.integer("tessellation.grains", 100);
+    if (n < 1) c.fail("tessellation.grains", "must be at least 1, got " + c.text("tessellation.grains"));
+    if (n > 10'000'000) c.fail("tessellation.grains", "must be at most 10 million");
+    o.grains = static_cast<int>(n);
+  }
+  job.seed = c.unsigned_integer("tessellation.seed", 1);
+  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
+  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
+  o.lloyd_iterations = static_cast<int>(lloyd);
+  o.size_cv = c.number("tessellation.size_cv", 0.0);
+  if (!(o.size_cv >= 0.0 && o.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
+  o.min_edge = c.number("tessellation.min_edge", o.min_edge);
+  if (!(o.min_edge >= 0.0 && o.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
+  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
+  if (mode == "grain") o.phase_mode = PhaseMode::grain;
+  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
+  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
+  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
+  if (arr == "random") o.arrangement = Arrangement::random;
+  else if (arr == "dispersed") o.arrangement = Arrangement::dispersed;
+  else if (arr == "clustered") o.arrangement = Arrangement::clustered;
+  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
+  o.phases = read_phases(c);
+  if (o.phase_mode == PhaseMode::binder) {
+    std::string matrix = c.optional_text("tessellation.matrix_phase").value_or("");
+    if (matrix.empty())
+      for (const Phase& p : o.phases)
+        if (p.name == "matrix" || p.name == "binder") matrix = p.name;
+    if (matrix.empty()) c.fail("tessellation.matrix_phase", "binder mode needs the matrix phase's name");
+    for (std::size_t p = 0; p < o.phases.size(); ++p)
+      if (o.phases[p].name == matrix) o.matrix_phase = static_cast<int>(p);
+    if (o.matrix_phase < 0) c.fail("tessellation.matrix_phase", "no phase is named '" + matrix + "'");
+    if (o.phases.size() < 2) c.fail("tessellation.matrix_phase", "binder mode needs a grain phase besides the matrix");
+  } else if (c.has("tessellation.matrix_phase")) {
+    c.fail("tessellation.matrix_phase", "only used with tessellation.phase_mode = binder");
+  }
+  const long long width = c.integer("output.picture_width", job.picture_width);
+  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  job.picture_width = static_cast<int>(width);
+  return job;
+}
+
+Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
+  Rng rng(job.seed);
+  try {
+    return tessellate(job.options, rng);
+  } catch (const ConfigError& e) {
+    // The only option tessellate() can find unreachable is the binder fraction.
+    const TessellationOptions& o = job.options;
+    const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
+    c.fail(key, e.what());
+  }
+}
+
+namespace {
+
+Json phases_json(const Tessellation& t) {
+  Json out = Json::array();
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    out.push_back({{"name", t.phases[p].name},
+                   {"target_fraction", t.stats.phases[p].target_fraction},
+                   {"achieved_fraction", t.stats.phases[p].achieved_fraction},
+                   {"grains", t.stats.phases[p].grains}});
+  return out;
+}
+
+}  // namespace
+
+void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
+  check_output_replaceable(out);
+  const TessellateJob job = read_tessellate_job(c);
+  const auto start = std::chrono::steady_clock::now();
+  const Tessellation t = run_tessellate_job(job, c);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  StagedOutput staged(out);
+  write_text_file(staged.dir() / "tessellation.json", tessellation_to_json(t));
+  write_tessellation_vtp(staged.dir() / "tessellation.vtp", t);
+  write_tessellation_png(staged.dir() / "tessellation.png", t, {.width_px = job.picture_width});
+  const TessellationStats& s = t.stats;
+  Json report;
+  report["command"] = "tessellate";
+  report["config"] = c.source();
+  report["seed"] = job.seed;
+  report["width"] = t.width;
+  report["height"] = t.height;
+  report["periodic"] = t.periodic;
+  report["grains"] = s.grains;
+  report["phases"] = phases_json(t);
+  report["removed_grains"] = s.removed_grains;
+  report["area_mean"] = s.area_mean;
+  report["area_std"] = s.area_std;
+  report["diameter_mean"] = s.diameter_mean;
+  report["diameter_std"] = s.diameter_std;
+  report["neighbours_mean"] = s.neighbours_mean;
+  report["edges_per_grain_mean"] = s.edges_per_grain_mean;
+  report["edge_threshold"] = s.edge_threshold;
+  report["shortest_edge"] = s.shortest_edge;
+  report["shortest_torus_edge"] = s.shortest_torus_edge;
+  report["sharpest_corner_deg"] = s.sharpest_corner_deg;
+  report["collapsed_edges"] = s.collapsed_edges;
+  report["side_jogs"] = s.side_jogs;
+  report["binder_offset"] = s.binder_offset;
+  report["vertices"] = t.vertices.size();
+  report["edges"] = t.edges.size();
+  report["regions"] = t.regions.size();
+  report["seconds"] = seconds;
+  report["peak_memory_mib"] = peak_memory_mib();
+  write_json(staged.dir() / "report.json", report);
+  staged.commit();
+
+  std::printf("grainmesh tessellate: %d grains, %zu regions, sharpest corner %.1f deg, shortest edge %.3g (%.3f s)\n",
+              s.grains, t.regions.size(), s.sharpest_corner_deg, s.shortest_edge, seconds);
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)\n", t.phases[p].name.c_str(),
+                s.phases[p].target_fraction, s.phases[p].achieved_fraction, s.phases[p].grains);
+  std::printf("  wrote %s/{tessellation.json, tessellation.vtp, tessellation.png, report.json}\n", out.string().c_str());
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,33 @@
+// `grainmesh tessellate CONFIG -o OUT`: a periodic grain microstructure with phase labels,
+// written as OUT/tessellation.json, OUT/tessellation.vtp, OUT/tessellation.png and
+// OUT/report.json (last).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pipelines/config.hpp"
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+struct TessellateJob {
+  TessellationOptions options;
+  std::uint64_t seed = 1;
+  int picture_width = 1200;  // pixels
+};
+
+// The keys a tessellation config may use ("*" is a phase name).
+const std::vector<std::string>& tessellate_config_keys();
+
+// Reads and checks a tessellation config. Throws ConfigError naming the key.
+TessellateJob read_tessellate_job(const Config& config);
+
+// Tessellates with randomness from the job's seed alone. Errors name the config key.
+Tessellation run_tessellate_job(const TessellateJob& job, const Config& config);
+
+void run_tessellate_command(const Config& config, const std::filesystem::path& out);
+
+}  // namespace grainmesh

@@ -1,0 +1,134 @@
+#include "tessellate/tessellation_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json point(Vec2 p) { return Json::array({p.x, p.y}); }
+
+Json statistics(const TessellationStats& s, const std::vector<Phase>& phases) {
+  Json j;
+  j["grains"] = s.grains;
+  j["removed_grains"] = s.removed_grains;
+  j["area_mean"] = s.area_mean;
+  j["area_std"] = s.area_std;
+  j["diameter_mean"] = s.diameter_mean;
+  j["diameter_std"] = s.diameter_std;
+  j["neighbours_mean"] = s.neighbours_mean;
+  j["edges_per_grain_mean"] = s.edges_per_grain_mean;
+  j["edge_threshold"] = s.edge_threshold;
+  j["shortest_edge"] = s.shortest_edge;
+  j["shortest_torus_edge"] = s.shortest_torus_edge;
+  j["sharpest_corner_deg"] = s.sharpest_corner_deg;
+  j["collapsed_edges"] = s.collapsed_edges;
+  j["side_jogs"] = s.side_jogs;
+  j["binder_offset"] = s.binder_offset;
+  j["window_origin"] = point(s.window_origin);
+  Json ph = Json::array();
+  for (std::size_t p = 0; p < s.phases.size(); ++p)
+    ph.push_back({{"name", phases[p].name},
+                  {"target_fraction", s.phases[p].target_fraction},
+                  {"achieved_fraction", s.phases[p].achieved_fraction},
+                  {"grains", s.phases[p].grains}});
+  j["phases"] = ph;
+  return j;
+}
+
+Vec2 read_point(const Json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+
+}  // namespace
+
+std::string tessellation_to_json(const Tessellation& t) {
+  Json j;
+  j["format"] = "grainmesh-tessellation";
+  j["version"] = 1;
+  j["domain"] = {{"width", t.width}, {"height", t.height}, {"periodic", t.periodic}};
+  Json phases = Json::array();
+  for (const Phase& p : t.phases)
+    phases.push_back({{"name", p.name}, {"target_fraction", p.fraction}, {"rest", p.rest},
+                      {"E", p.youngs_modulus}, {"nu", p.poisson_ratio}});
+  j["phases"] = phases;
+  Json grains = Json::array();
+  for (const Grain& g : t.grains)
+    grains.push_back({{"id", g.id}, {"phase", g.phase}, {"seed", point(g.seed)}, {"area", g.area},
+                      {"neighbours", g.neighbours}, {"matrix", g.matrix}});
+  j["grains"] = grains;
+  Json vertices = Json::array();
+  for (Vec2 v : t.vertices) vertices.push_back(point(v));
+  j["vertices"] = vertices;
+  Json edges = Json::array();
+  for (const TessEdge& e : t.edges) edges.push_back({e.v0, e.v1, e.left, e.right});
+  j["edges"] = edges;
+  Json regions = Json::array();
+  for (const Region& r : t.regions) regions.push_back({{"grain", r.grain}, {"phase", r.phase}, {"rings", r.rings}});
+  j["regions"] = regions;
+  j["partners"] = {{"x", t.partners_x}, {"y", t.partners_y}};
+  j["statistics"] = statistics(t.stats, t.phases);
+  return j.dump(1) + "\n";
+}
+
+Tessellation tessellation_from_json(const std::string& text, const std::string& source) {
+  Tessellation t;
+  try {
+    const Json j = Json::parse(text);
+    if (j.value("format", "") != "grainmesh-tessellation")
+      throw GeometryError(source + ": not a grainmesh tessellation (format key)");
+    if (j.at("version").get<int>() != 1)
+      throw GeometryError(source + ": tessellation version " + j.at("version").dump() + " is not supported");
+    const Json& d = j.at("domain");
+    t.width = d.at("width").get<double>();
+    t.height = d.at("height").get<double>();
+    t.periodic = d.at("periodic").get<bool>();
+    for (const Json& p : j.at("phases"))
+      t.phases.push_back(Phase{p.at("name").get<std::string>(), p.at("target_fraction").get<double>(),
+                               p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>()});
+    for (const Json& g : j.at("grains"))
+      t.grains.push_back(Grain{g.at("id").get<int>(), g.at("phase").get<int>(), read_point(g.at("seed")),
+                               g.at("area").get<double>(), g.at("neighbours").get<std::vector<int>>(),
+                               g.at("matrix").get<bool>()});
+    for (const Json& v : j.at("vertices")) t.vertices.push_back(read_point(v));
+    for (const Json& e : j.at("edges"))
+      t.edges.push_back({e.at(0).get<int>(), e.at(1).get<int>(), e.at(2).get<int>(), e.at(3).get<int>()});
+    for (const Json& r : j.at("regions"))
+      t.regions.push_back(Region{r.at("grain").get<int>(), r.at("phase").get<int>(),
+                                 r.at("rings").get<std::vector<std::vector<int>>>()});
+    t.partners_x = j.at("partners").at("x").get<std::vector<std::pair<int, int>>>();
+    t.partners_y = j.at("partners").at("y").get<std::vector<std::pair<int, int>>>();
+    const Json& s = j.at("statistics");
+    t.stats.grains = s.at("grains").get<int>();
+    t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();
+    t.stats.shortest_edge = s.at("shortest_edge").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    throw GeometryError(source + ": " + e.what());
+  }
+  const int nv = static_cast<int>(t.vertices.size());
+  const int nr = static_cast<int>(t.regions.size());
+  for (const Region& r : t.regions) {
+    if (r.grain < 0 || r.grain >= static_cast<int>(t.grains.size()) || r.phase < 0 ||
+        r.phase >= static_cast<int>(t.phases.size()) || r.rings.empty())
+      throw GeometryError(source + ": a region names a grain or phase that does not exist");
+    for (const auto& ring : r.rings)
+      for (int v : ring)
+        if (v < 0 || v >= nv) throw GeometryError(source + ": a ring names vertex " + std::to_string(v) + " that does not exist");
+  }
+  for (const TessEdge& e : t.edges)
+    if (e.v0 < 0 || e.v0 >= nv || e.v1 < 0 || e.v1 >= nv || e.left >= nr || e.right >= nr)
+      throw GeometryError(source + ": an edge names a vertex or region that does not exist");
+  for (const auto* pairs : {&t.partners_x, &t.partners_y})
+    for (const auto& [a, b] : *pairs)
+      if (a < 0 || a >= nv || b < 0 || b >= nv) throw GeometryError(source + ": a partner names a vertex that does not exist");
+  try {
+    validate(t);
+  } catch (const GeometryError& e) {
+    throw GeometryError(source + ": " + e.what());
+  }
+  return t;
+}
+
+}  // namespace grainmesh

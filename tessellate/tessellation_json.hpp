@@ -1,0 +1,27 @@
+// tessellation.json: the tessellation stage's output and the mesh stage's input.
+// Schema (version 1), lengths in the config's unit:
+//   format      "grainmesh-tessellation"; version 1
+//   domain      {width, height, periodic}
+//   phases      [{name, target_fraction, rest, E, nu}]
+//   grains      [{id, phase, seed: [x, y], area, neighbours: [grain ids], matrix}]
+//   vertices    [[x, y]]                       #V positions
+//   edges       [[v0, v1, left, right]]        regions left/right of v0 -> v1, -1 outside
+//   regions     [{grain, phase, rings: [[vertex ids]]}]  rings[0] outer, others holes;
+//               every ring counter-clockwise
+//   partners    {x: [[left, right]], y: [[bottom, top]]}  periodic vertex pairs
+//   statistics  the TessellationStats fields
+// Doubles are written in shortest round-trip form, so reading gives the same bits.
+#pragma once
+
+#include <string>
+
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+std::string tessellation_to_json(const Tessellation& t);
+
+// Parses and validates; errors (GeometryError) start with `source`.
+Tessellation tessellation_from_json(const std::string& text, const std::string& source);
+
+}  // namespace grainmesh

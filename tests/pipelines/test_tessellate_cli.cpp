@@ -1,0 +1,105 @@
+// `grainmesh tessellate`, driven as a user would: outputs, reports, bad input.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+#include "helpers.hpp"
+#include "tessellate/tessellation_json.hpp"
+
+using namespace grainmesh;
+using test::run_grainmesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::size_t entries(const fs::path& dir) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
+}
+
+}  // namespace
+
+TEST_CASE("every grains example tessellates and meets its phase targets", "[cli][tessellate]") {
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(test::source_dir() / "data" / "examples")) {
+    const std::string stem = entry.path().stem().string();
+    if (stem.rfind("grains_", 0) != 0) continue;
+    ++files;
+    test::ScratchDir dir("tess");
+    const auto r = run_grainmesh({"tessellate", entry.path().string(), "-o", (dir / "out").string()});
+    INFO(stem << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    for (const char* f : {"tessellation.json", "tessellation.vtp", "tessellation.png", "report.json"})
+      CHECK(fs::file_size(dir / "out" / f) > 1000);
+    const auto report = nlohmann::json::parse(test::read_file(dir / "out" / "report.json"));
+    CHECK(report["grains"].get<int>() >= 50);
+    for (const auto& p : report["phases"]) {
+      CHECK(p.contains("name"));
+      CHECK(std::abs(p["achieved_fraction"].get<double>() - p["target_fraction"].get<double>()) <= 0.01);
+    }
+    CHECK(report["sharpest_corner_deg"].get<double>() >= 30.0);
+    // What grainmesh mesh will read: it parses and validates.
+    const auto path = (dir / "out" / "tessellation.json").string();
+    const Tessellation t = tessellation_from_json(test::read_file(path), path);
+    CHECK(static_cast<int>(t.grains.size()) >= report["grains"].get<int>());
+    CHECK(entries(dir.path()) == 1);
+  }
+  CHECK(files >= 2);
+}
+
+TEST_CASE("grainmesh tessellate is reproducible from its seed", "[cli][tessellate]") {
+  test::ScratchDir dir("tess");
+  const std::string cfg = test::example("grains_wc_co").string();
+  for (const char* out : {"a", "b"})
+    REQUIRE(run_grainmesh({"tessellate", cfg, "-o", (dir / out).string()}).exit_code == 0);
+  for (const char* f : {"tessellation.json", "tessellation.vtp", "tessellation.png"})
+    CHECK(test::read_file(dir / "a" / f) == test::read_file(dir / "b" / f));
+  REQUIRE(run_grainmesh({"tessellate", cfg, "-o", (dir / "c").string(), "--set", "tessellation.seed=2"}).exit_code == 0);
+  CHECK(test::read_file(dir / "a" / "tessellation.json") != test::read_file(dir / "c" / "tessellation.json"));
+}
+
+TEST_CASE("bad tessellation input gives one line naming the key and no output", "[cli][tessellate]") {
+  test::ScratchDir dir("tess");
+  const std::string grain = test::example("grains_wc_co").string();
+  const std::string binder = test::example("grains_binder").string();
+  struct Case {
+    std::string config;
+    std::vector<std::string> sets;
+    std::string says;
+  };
+  const std::vector<Case> cases{
+      {grain, {"tessellation.grains=0"}, "tessellation.grains: must be at least 1"},
+      {grain, {"tessellation.grains=-3"}, "tessellation.grains: must be at least 1"},
+      {grain, {"domain.width=0"}, "domain.width: must be positive"},
+      {grain, {"domain.height=-1.7e-6"}, "domain.height: must be positive"},
+      {grain, {"phase.WC.fraction=0.5"}, "the phase fractions sum to 0.65, not 1"},
+      {grain, {"phase.Co.fraction=1"}, "leaving nothing for the rest phase"},
+      {grain, {"phase.Co.fraction=rest"}, "phase.Co.fraction: only one phase may take the rest"},
+      {grain, {"tessellation.phase_mode=layered"}, "tessellation.phase_mode: unknown mode 'layered'"},
+      {grain, {"tessellation.arrangement=striped"}, "tessellation.arrangement: unknown arrangement"},
+      {grain, {"tessellation.grain_size=1e-7"}, "give either tessellation.grains or tessellation.grain_size"},
+      {grain, {"phase.Co.nu=0.5"}, "phase.Co.nu: must lie in (-1, 0.5)"},
+      {grain, {"phase.Co.E=-1"}, "phase.Co.E: must be positive"},
+      {grain, {"phase.Co.colour=red"}, "unknown key 'phase.Co.colour'"},
+      {binder, {"phase.Co.fraction=0.9999999999999"}, "phase.Co.fraction"},
+      {binder, {"tessellation.matrix_phase=Ni"}, "tessellation.matrix_phase: no phase is named 'Ni'"},
+      {binder, {"phase.WC.fraction=0.88", "phase.Co.fraction=0.2"}, "the phase fractions sum to 1.08, not 1"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"tessellate", c.config, "-o", (dir / "out").string()};
+    for (const auto& s : c.sets) {
+      args.push_back("--set");
+      args.push_back(s);
+    }
+    const auto r = run_grainmesh(args);
+    INFO("set " << c.sets.front() << "\nstderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.says) != std::string::npos);
+    CHECK(r.err.rfind("grainmesh: error: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir / "out"));
+    CHECK(entries(dir.path()) == 0);
+  }
+}
