@@ -45,6 +45,7 @@ Json measure(const Case& c) {
           {"regions", t.regions.size()},
           {"vertices", t.vertices.size()},
           {"sharpest_corner_deg", t.stats.sharpest_corner_deg},
+          {"shortest_edge_over_threshold", t.stats.shortest_edge / t.stats.edge_threshold},
           {"side_jogs", t.stats.side_jogs},
           {"co_fraction", t.stats.phases[1].achieved_fraction}};
 }
@@ -56,13 +57,15 @@ int main(int argc, char** argv) {
   const int runs = 3;
   const std::vector<Case> cases{
       {"200 grains, 3 Lloyd", 200, 3, PhaseMode::grain, 0, 0},
+      {"2000 grains, 3 Lloyd", 2000, 3, PhaseMode::grain, 0, 0},
       {"10k grains, 10 Lloyd", 10'000, 10, PhaseMode::grain, 2.0, 0},
       {"10k grains, 10 Lloyd, binder", 10'000, 10, PhaseMode::binder, 0, 0},
       {"100k grains, Poisson", 100'000, 0, PhaseMode::grain, 30.0, 2048},
       {"100k grains, 3 Lloyd", 100'000, 3, PhaseMode::grain, 30.0, 2048},
   };
   Json results = Json::array();
-  std::printf("%-32s %9s %8s %9s %8s %9s %7s\n", "case", "seconds", "limit s", "regions", "sharpest", "peak MiB", "ok");
+  std::printf("%-32s %9s %8s %9s %8s %9s %9s %7s\n", "case", "seconds", "limit s", "regions", "sharpest", "short/thr",
+              "peak MiB", "ok");
   bool all_ok = true;
   for (const Case& c : cases) {
     Json row = median_in_children(runs, [&] { return measure(c); });
@@ -77,9 +80,10 @@ int main(int argc, char** argv) {
     labelled.update(row);
     if (c.limit_seconds > 0) labelled["limit_seconds"] = c.limit_seconds;
     if (c.limit_mib > 0) labelled["limit_mib"] = c.limit_mib;
-    std::printf("%-32s %9.3f %8s %9zu %8.1f %9.1f %7s\n", c.name.c_str(), s,
+    std::printf("%-32s %9.3f %8s %9zu %8.1f %9.2f %9.1f %7s\n", c.name.c_str(), s,
                 c.limit_seconds > 0 ? std::to_string(c.limit_seconds).substr(0, 4).c_str() : "-",
-                row["regions"].get<std::size_t>(), row["sharpest_corner_deg"].get<double>(), mib, ok ? "yes" : "NO");
+                row["regions"].get<std::size_t>(), row["sharpest_corner_deg"].get<double>(),
+                row["shortest_edge_over_threshold"].get<double>(), mib, ok ? "yes" : "NO");
     std::fflush(stdout);
     results.push_back(labelled);
   }

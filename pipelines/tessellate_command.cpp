@@ -193,6 +193,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   report["sharpest_corner_deg"] = s.sharpest_corner_deg;
   report["collapsed_edges"] = s.collapsed_edges;
   report["side_jogs"] = s.side_jogs;
+  report["pushed_vertices"] = s.pushed_vertices;
   report["binder_offset"] = s.binder_offset;
   report["vertices"] = t.vertices.size();
   report["edges"] = t.edges.size();

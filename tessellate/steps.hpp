@@ -44,11 +44,23 @@ struct Segment {
   Vec2 a, b;
 };
 
-// The offset in [0, period) of the cell's lines normal to `axis` (0: lines x = c, 1:
-// lines y = c) that keeps crossings steep, away from vertices and apart from each other.
-// `scale` is the length below which a feature counts as short.
-double choose_line_offset(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
-                          double period, double other_period, bool other_periodic, double scale);
+// The `count` best offsets in [0, period), best first, of the cell's lines normal to
+// `axis` (0: lines x = c, 1: lines y = c): crossings steep, away from the points and
+// apart from each other and from the positions `along` the line where the other axis'
+// line already is. `scale` is the length below which a feature counts as short.
+std::vector<double> best_line_offsets(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
+                                      double period, double other_period, bool other_periodic, double scale,
+                                      const std::vector<double>& along, int count);
+
+// Where the segments cross the line coord(axis) = c (and its periodic images), reduced.
+std::vector<Vec2> line_crossings(const std::vector<Segment>& segments, int axis, double c, double width,
+                                 double height);
+
+// Moves each vertex closer than `distance` to a cell line (x = k W, y = k H; the cell's
+// own sides when not periodic) straight away from it to that distance, when the cells
+// around it stay simple, no corner of theirs becomes sharper than `min_angle` and no edge
+// at the vertex shorter than `min_edge` (or than it was). Returns the vertices moved.
+int push_vertices_off_lines(TorusGraph& g, double distance, double min_angle, double min_edge);
 
 // Moves every vertex, seed and corner of a periodic graph by -origin.
 void translate_graph(TorusGraph& g, Vec2 origin);

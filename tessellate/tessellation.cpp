@@ -17,6 +17,27 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 // Crossings of the cell's sides shallower than this are squared off.
 constexpr double kMinSideAngle = 32.0 * kDegree;
+// The corner angle that moving a vertex off a cell side may not go below.
+constexpr double kMinCorner = 30.0 * kDegree;
+// Vertices closer than this x the short-edge length to a cell side are moved off it, so
+// a square step next to them still has legs of the full length.
+constexpr double kPushDistance = 1.25;
+// Cells up to this many grains try this many windows (x) as many (y) and keep the best.
+constexpr std::size_t kTrialCells = 5000;
+constexpr int kWindowTrials = 4;
+
+// The best `count` cell origins on the torus: x first, then y for each x, keeping clear
+// of where the x side crosses boundaries and of the x side itself.
+std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std::vector<Vec2>& points, double W,
+                                    double H, double scale, int count) {
+  std::vector<Vec2> out;
+  for (double ox : best_line_offsets(segs, points, 0, W, H, true, scale, {}, count)) {
+    std::vector<Vec2> pts = points;
+    for (const Vec2& p : line_crossings(segs, 0, ox, W, H)) pts.push_back(p);
+    for (double oy : best_line_offsets(segs, pts, 1, H, W, true, scale, {ox}, count)) out.push_back({ox, oy});
+  }
+  return out;
+}
 
 // The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
 std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
@@ -127,6 +148,48 @@ double target_fraction(const std::vector<Phase>& phases, int p) {
   return 1.0 - sum;
 }
 
+std::vector<Segment> graph_segments(const TorusGraph& g);
+
+// Places the cell on the torus (periodic) and clears its sides: junctions pushed off
+// them, shallow crossings squared off. Small cells try the best few windows and keep
+// the one whose cut has the mildest sharpest corner and shortest edge.
+void place_window(TorusGraph& g, const std::vector<int>& cells, double scale, TessellationStats& st) {
+  const int tries = g.periodic && cells.size() <= kTrialCells ? kWindowTrials : 1;
+  const std::vector<Vec2> origins =
+      g.periodic ? window_candidates(graph_segments(g), g.vertices, g.width, g.height, scale, tries)
+                 : std::vector<Vec2>{Vec2{}};
+  const double edge = st.edge_threshold > 0.0 ? st.edge_threshold : scale;
+  double best_score = -1.0;
+  TorusGraph best;
+  for (const Vec2 origin : origins) {
+    TorusGraph trial = g;
+    if (trial.periodic) translate_graph(trial, origin);
+    const int pushed = push_vertices_off_lines(trial, kPushDistance * scale, kMinCorner, st.edge_threshold);
+    const int jogs = square_shallow_crossings(trial, kMinSideAngle, scale);
+    double score = 0.0;
+    if (origins.size() > 1) {
+      Tessellation t;
+      t.width = trial.width;
+      t.height = trial.height;
+      t.periodic = trial.periodic;
+      cut_into_cell(cell_polygons(trial, cells), t, -1, -1);
+      double sharpest = 2.0 * std::numbers::pi, shortest = 1e300;
+      for (const Region& r : t.regions) sharpest = std::min(sharpest, region_sharpest(t, r));
+      for (const TessEdge& e : t.edges) shortest = std::min(shortest, norm(t.vertices[e.v1] - t.vertices[e.v0]));
+      score = std::min(1.0, sharpest / kMinCorner) + std::min(1.0, shortest / edge);
+    }
+    if (score > best_score) {
+      best_score = score;
+      best = std::move(trial);
+      st.window_origin = origin;
+      st.pushed_vertices = pushed;
+      st.side_jogs = jogs;
+    }
+    if (score >= 2.0) break;  // nothing sharp, nothing short: no better window to find
+  }
+  g = std::move(best);
+}
+
 std::vector<Segment> graph_segments(const TorusGraph& g) {
   std::vector<Segment> out;
   for (const EdgeRef& e : unique_edges(g)) {
@@ -229,14 +292,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
   int matrix_grain = -1;
   std::vector<int> grain_cell;  // torus cell of each grain
   if (o.phase_mode == PhaseMode::grain) {
-    if (o.periodic) {
-      const auto segs = graph_segments(g);
-      const double ox = choose_line_offset(segs, g.vertices, 0, W, H, true, scale);
-      const double oy = choose_line_offset(segs, g.vertices, 1, H, W, true, scale);
-      st.window_origin = {ox, oy};
-      translate_graph(g, st.window_origin);
-    }
-    st.side_jogs = square_shallow_crossings(g, kMinSideAngle, scale);
+    place_window(g, cells, scale, st);
     std::vector<double> areas;
     for (int c : cells) areas.push_back(polygon_area(counted_polygon(g, c)));
     const auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
@@ -290,9 +346,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
           segs.push_back({s[k], s[(k + 1) % s.size()]});
           pts.push_back(s[k]);
         }
-      const double sc = std::min(scale, st.binder_offset);
-      st.window_origin = {choose_line_offset(segs, pts, 0, W, H, true, sc),
-                          choose_line_offset(segs, pts, 1, H, W, true, sc)};
+      st.window_origin = window_candidates(segs, pts, W, H, std::min(scale, st.binder_offset), 1).front();
     }
     // Square off shallow side crossings; each step costs the binder layer at most a
     // quarter of its thickness.

@@ -83,6 +83,7 @@ struct TessellationStats {
   double sharpest_corner_deg = 0.0; // over every region corner, cell-side crossings included
   int collapsed_edges = 0;
   int side_jogs = 0;                // shallow cell-side crossings replaced by a square step
+  int pushed_vertices = 0;          // junctions moved off a cell side
   double binder_offset = 0.0;       // t of binder mode
   Vec2 window_origin{};             // where the cell was placed on the torus
   std::vector<PhaseStats> phases;

@@ -28,6 +28,7 @@ Json statistics(const TessellationStats& s, const std::vector<Phase>& phases) {
   j["sharpest_corner_deg"] = s.sharpest_corner_deg;
   j["collapsed_edges"] = s.collapsed_edges;
   j["side_jogs"] = s.side_jogs;
+  j["pushed_vertices"] = s.pushed_vertices;
   j["binder_offset"] = s.binder_offset;
   j["window_origin"] = point(s.window_origin);
   Json ph = Json::array();

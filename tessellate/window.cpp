@@ -25,8 +25,9 @@ double wrap(double x, double period) {
 
 }  // namespace
 
-double choose_line_offset(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
-                          double period, double other_period, bool other_periodic, double scale) {
+std::vector<double> best_line_offsets(const std::vector<Segment>& segments, const std::vector<Vec2>& points, int axis,
+                                      double period, double other_period, bool other_periodic, double scale,
+                                      const std::vector<double>& fixed_along, int count) {
   const double h = period / kCandidates;
   std::vector<double> worst(kCandidates, 1.0);  // the weakest feature near each line
   std::vector<double> sum(kCandidates, 0.0);    // for ties: the total margin
@@ -58,20 +59,96 @@ double choose_line_offset(const std::vector<Segment>& segments, const std::vecto
       along[g].push_back(other_periodic ? wrap(w, other_period) : w);
     });
   }
-  int best = 0;
-  double best_score = -1e300;
+  std::vector<std::pair<double, int>> ranked;  // (-score, candidate): best first, ties by position
   for (int g = 0; g < kCandidates; ++g) {
     auto& w = along[g];
+    w.insert(w.end(), fixed_along.begin(), fixed_along.end());
     std::sort(w.begin(), w.end());
     for (std::size_t k = 0; k + 1 < w.size(); ++k) worst[g] = std::min(worst[g], (w[k + 1] - w[k]) / scale);
     if (other_periodic && w.size() > 1) worst[g] = std::min(worst[g], (w.front() + other_period - w.back()) / scale);
-    const double score = std::min(worst[g], 1.0) + 1e-6 * sum[g];
-    if (score > best_score) {
-      best_score = score;
-      best = g;
+    ranked.emplace_back(-(std::min(worst[g], 1.0) + 1e-6 * sum[g]), g);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  // The best candidates at least a few grid steps apart, so they differ in substance.
+  std::vector<double> out;
+  std::vector<int> taken;
+  for (const auto& [score, g] : ranked) {
+    if (static_cast<int>(out.size()) == count) break;
+    bool near = false;
+    for (int t : taken) {
+      const int d = std::abs(t - g);
+      near = near || std::min(d, kCandidates - d) < 8;
+    }
+    if (near) continue;
+    taken.push_back(g);
+    out.push_back((g + 0.5) * h);
+  }
+  return out;
+}
+
+std::vector<Vec2> line_crossings(const std::vector<Segment>& segments, int axis, double c, double width,
+                                 double height) {
+  const double period = axis == 0 ? width : height;
+  std::vector<Vec2> out;
+  for (const Segment& s : segments) {
+    const double ua = coord(s.a, axis), ub = coord(s.b, axis);
+    const double wa = coord(s.a, 1 - axis), wb = coord(s.b, 1 - axis);
+    for (long long k = static_cast<long long>(std::ceil((std::min(ua, ub) - c) / period));
+         c + k * period < std::max(ua, ub); ++k) {
+      const double x = c + k * period;
+      if (x <= std::min(ua, ub)) continue;
+      const double w = wa + (x - ua) / (ub - ua) * (wb - wa);
+      out.push_back(reduce_periodic(make(axis, c, w), width, height));
     }
   }
-  return (best + 0.5) * h;
+  return out;
+}
+
+int push_vertices_off_lines(TorusGraph& g, double distance, double min_angle, double min_edge) {
+  const auto vc = vertex_cells(g);
+  // The sharpest corner and the shortest edge at v of the cells around v; -1 when one
+  // of them is not a simple counter-clockwise polygon.
+  auto worst = [&](int v, double* shortest) {
+    double sharpest = 2.0 * std::numbers::pi;
+    *shortest = 1e300;
+    for (int c : vc[v]) {
+      const auto poly = g.polygon(c);
+      if (!(polygon_area(poly) > 0.0) || !ring_is_simple(poly)) return -1.0;
+      sharpest = std::min(sharpest, sharpest_corner(poly));
+      const std::size_t n = poly.size();
+      for (std::size_t k = 0; k < n; ++k)
+        if (g.rings[c][k].v == v || g.rings[c][(k + 1) % n].v == v)
+          *shortest = std::min(*shortest, norm(poly[(k + 1) % n] - poly[k]));
+    }
+    return sharpest;
+  };
+  int moved = 0;
+  for (int v = 0; v < static_cast<int>(g.vertices.size()); ++v) {
+    if (vc[v].empty()) continue;
+    const Vec2 old = g.vertices[v];
+    Vec2 p = old;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double period = axis == 0 ? g.width : g.height;
+      const double u = coord(p, axis);
+      const double line = g.periodic ? std::round(u / period) * period : (u < 0.5 * period ? 0.0 : period);
+      const double d = u - line;
+      if (std::abs(d) >= distance) continue;
+      double target = line + (d < 0.0 ? -distance : distance);
+      if (g.periodic && (target < 0.0 || target >= period)) target = line == 0.0 ? distance : period - distance;
+      p = make(axis, target, coord(p, 1 - axis));
+    }
+    if (p == old) continue;
+    double short_before = 0.0, short_after = 0.0;
+    const double before = worst(v, &short_before);
+    g.vertices[v] = p;
+    const double after = worst(v, &short_after);
+    if (after < 0.0 || after < std::min(before, min_angle) || short_after < std::min(short_before, min_edge)) {
+      g.vertices[v] = old;
+      continue;
+    }
+    ++moved;
+  }
+  return moved;
 }
 
 void translate_graph(TorusGraph& g, Vec2 origin) {
@@ -95,7 +172,8 @@ bool step_points(Vec2 pa, Vec2 pb, int axis, double c, double step, Vec2* q1, Ve
   const double ua = coord(pa, axis), ub = coord(pb, axis);
   const double wa = coord(pa, 1 - axis), wb = coord(pb, 1 - axis);
   const double w = wa + (c - ua) / (ub - ua) * (wb - wa);
-  const double d = std::min({step, 0.45 * std::abs(ua - c), 0.45 * std::abs(ub - c), 0.45 * std::abs(w - wa),
+  // Corners at q1 and q2 stay >= 90 degrees as long as the ends lie beyond them.
+  const double d = std::min({step, 0.8 * std::abs(ua - c), 0.8 * std::abs(ub - c), 0.45 * std::abs(w - wa),
                              0.45 * std::abs(wb - w)});
   if (!(d > 0.0)) return false;
   const double sign = ua < c ? 1.0 : -1.0;

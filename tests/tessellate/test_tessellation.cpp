@@ -241,6 +241,8 @@ TEST_CASE("three Lloyd iterations: no region corner sharper than 30 degrees", "[
       const Tessellation t = make(o, seed);
       INFO("aspect " << aspect << " seed " << seed);
       CHECK(t.stats.sharpest_corner_deg >= 30.0);
+      // Junctions kept off the sides: no cut edge much shorter than the threshold.
+      CHECK(t.stats.shortest_edge >= 0.9 * t.stats.edge_threshold);
       double sharpest = 360.0;  // recomputed from the regions
       for (const Region& r : t.regions)
         sharpest = std::min(sharpest, sharpest_corner(ring_points(t, r.rings[0])) * 180.0 / std::numbers::pi);
