@@ -110,12 +110,29 @@ std::vector<int> assign_phases(const std::vector<double>& areas, const std::vect
           best_in = in;
         }
       };
+      // A swap keeps the arrangement: clustered grains join next to the phase, dispersed
+      // ones away from it.
+      auto fits = [&](int in, int out) {
+        if (arrangement == Arrangement::random) return true;
+        bool touches = false;
+        for (int n : neighbours[in]) touches = touches || (n != out && label[n] == p);
+        return arrangement == Arrangement::clustered ? touches : !touches;
+      };
+      constexpr int kScan = 64;  // pool entries looked at on either side of the ideal size
       for (int out : chosen) {
         if (label[out] != p) continue;
         const double want = areas[out] + (target - sum);
-        auto it = std::lower_bound(pool.begin(), pool.end(), std::make_pair(want, -1));
-        if (it != pool.end()) consider(out, it->second);
-        if (it != pool.begin()) consider(out, std::prev(it)->second);
+        const auto at = std::lower_bound(pool.begin(), pool.end(), std::make_pair(want, -1)) - pool.begin();
+        for (auto k = at; k < static_cast<std::ptrdiff_t>(pool.size()) && k < at + kScan; ++k)
+          if (fits(pool[k].second, out)) {
+            consider(out, pool[k].second);
+            break;
+          }
+        for (auto k = at - 1; k >= 0 && k >= at - kScan; --k)
+          if (fits(pool[k].second, out)) {
+            consider(out, pool[k].second);
+            break;
+          }
       }
       if (best_out < 0) break;
       label[best_out] = -1;
