@@ -57,7 +57,7 @@ std::vector<EdgeRef> unique_edges(const TorusGraph& g) {
 
 namespace {
 
-// Collapses the edge from corner a to corner b (both of cell `cell`) into its midpoint,
+// Collapses the edge from corner a to the next corner b of one ring into its midpoint,
 // or leaves everything as it was and returns false.
 bool try_collapse(TorusGraph& g, std::vector<std::vector<int>>& vc, Corner a, Corner b, int* removed) {
   const int u = a.v, v = b.v;

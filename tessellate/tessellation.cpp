@@ -327,7 +327,6 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     }
     st.binder_offset = 0.5 * (lo + hi);
     std::vector<std::vector<Vec2>> shrunk;
-    std::vector<std::vector<int>> kept_neighbours;
     for (std::size_t k = 0; k < cells.size(); ++k) {
       auto s = shrink_polygon(cell_poly[k], st.binder_offset);
       if (s.empty()) {
