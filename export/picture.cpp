@@ -115,7 +115,8 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
   if (mean_len >= 3.0)
     stroke([](const MeshEdge&) { return true; }, std::clamp(mean_len / 25.0, 0.4, 1.0), {0.25, 0.25, 0.30});
   const double thick = std::clamp(mean_len / 6.0, 1.5, 3.0);
-  stroke([&](const MeshEdge& e) { return e.right >= 0 && mesh.region[e.left] != mesh.region[e.right]; }, thick,
+  const std::vector<int>& outline = options.outline_by.empty() ? mesh.region : options.outline_by;
+  stroke([&](const MeshEdge& e) { return e.right >= 0 && outline[e.left] != outline[e.right]; }, thick,
          {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 

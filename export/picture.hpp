@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
@@ -11,6 +12,7 @@ namespace grainmesh {
 struct PictureOptions {
   int width_px = 1200;  // image width; the height follows the mesh's aspect ratio
   int margin_px = 20;
+  std::vector<int> outline_by{};  // #T labels: thick lines where they differ; empty = the region
 };
 
 // Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a

@@ -1,5 +1,6 @@
 #include "mesh/delaunay.hpp"
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -15,26 +16,63 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-}  // namespace
+using CVb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using CFb = CGAL::Constrained_triangulation_face_base_2<K>;
+using CTds = CGAL::Triangulation_data_structure_2<CVb, CFb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CTds, CGAL::Exact_predicates_tag>;
 
-std::vector<std::array<int, 3>> delaunay_triangulation(std::span<const Vec2> points) {
+std::vector<std::pair<K::Point_2, int>> with_ids(std::span<const Vec2> points) {
   std::vector<std::pair<K::Point_2, int>> input;
   input.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!is_finite(points[i])) throw GeometryError("delaunay: point " + std::to_string(i) + " is not finite");
     input.emplace_back(K::Point_2(points[i].x, points[i].y), static_cast<int>(i));
   }
+  return input;
+}
+
+template <typename T>
+std::vector<std::array<int, 3>> faces(const T& tri) {
   std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(tri.number_of_faces());
+  for (auto f : tri.finite_face_handles())
+    triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  return triangles;
+}
+}  // namespace
+
+std::vector<std::array<int, 3>> delaunay_triangulation(std::span<const Vec2> points) {
+  const auto input = with_ids(points);
   try {
     // The range insert sorts along a Hilbert curve first (deterministically).
-    Delaunay dt(input.begin(), input.end());
-    triangles.reserve(dt.number_of_faces());
-    for (auto f : dt.finite_face_handles())
-      triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    const Delaunay dt(input.begin(), input.end());
+    return faces(dt);
   } catch (const CGAL::Failure_exception& e) {
     throw GeometryError(std::string("delaunay: CGAL failed: ") + e.what());
   }
-  return triangles;
+}
+
+std::vector<std::array<int, 3>> constrained_delaunay_triangulation(std::span<const Vec2> points,
+                                                                   std::span<const std::array<int, 2>> constraints) {
+  const auto input = with_ids(points);
+  try {
+    Cdt cdt;
+    cdt.insert(input.begin(), input.end());
+    std::vector<Cdt::Vertex_handle> handle(points.size());
+    for (auto v : cdt.finite_vertex_handles()) handle[static_cast<std::size_t>(v->info())] = v;
+    for (const auto& [a, b] : constraints) {
+      for (int i : {a, b})
+        if (i < 0 || static_cast<std::size_t>(i) >= points.size())
+          throw GeometryError("delaunay: constraint names point " + std::to_string(i) + " that does not exist");
+      // A point coincident with another has no vertex of its own: insert finds the other.
+      for (int i : {a, b})
+        if (handle[i] == Cdt::Vertex_handle()) handle[i] = cdt.insert(input[i].first);
+      if (handle[a] != handle[b]) cdt.insert_constraint(handle[a], handle[b]);
+    }
+    return faces(cdt);
+  } catch (const CGAL::Failure_exception& e) {
+    throw GeometryError(std::string("delaunay: CGAL failed: ") + e.what());
+  }
 }
 
 }  // namespace grainmesh

@@ -98,6 +98,7 @@ class Engine {
   DistMeshResult run(Rng& rng);
 
  private:
+  bool fixed_boundary() const { return !pb_.constraints.empty(); }
   std::vector<Vec2> lattice(double spacing) const;
   void seed_points(Rng& rng);
   std::vector<double> checked_size(const std::vector<Vec2>& pts) const;
@@ -178,16 +179,16 @@ void Engine::seed_points(Rng& rng) {
     const double d = pb_.domain(f);
     if (d > geps_)
       throw GeometryError("fixed point " + to_text(f) + " lies outside the domain (distance " + to_text(d) + ")");
-    if (seen.near(f, geps_)) continue;
+    if (!fixed_boundary() && seen.near(f, geps_)) continue;
     seen.insert(f);
     fixed.push_back(f);
   }
 
   std::vector<Vec2> pts = lattice(h0_);
-  if (pts.empty())
+  if (pts.empty() && !fixed_boundary())  // a seeded boundary alone still makes a mesh
     throw GeometryError("domain is empty inside its bounding box " + to_text(pb_.bbox.lo) + " - " + to_text(pb_.bbox.hi) +
                         ": no lattice point of spacing h0 = " + to_text(h0_) + " lies inside");
-  const std::vector<double> h = checked_size(pts);
+  const std::vector<double> h = checked_size(pts.empty() ? fixed : pts);
   checked_size(fixed);
 
   // The absolute size field and the lattice spacing it needs.
@@ -228,7 +229,8 @@ void Engine::seed_points(Rng& rng) {
   };
   auto clear_of = [&](const DistanceFunction& curve, std::size_t i) { return std::abs(curve(pts[i])) > 0.7 * s[i]; };
   on_interface_.assign(p_.size(), 0);
-  if (opt_.boundary_seeding) {
+  const bool seed_boundary = opt_.boundary_seeding && !fixed_boundary();
+  if (seed_boundary) {
     seed_curve(pb_.domain, false);
     if (pb_.interface) seed_curve(*pb_.interface, true);
   }
@@ -236,7 +238,10 @@ void Engine::seed_points(Rng& rng) {
     const double keep = (spacing / s[i]) * (spacing / s[i]);
     const double u = uniform01(rng);  // one draw per lattice point: the stream never depends on the grid
     if (u >= keep) continue;
-    if (opt_.boundary_seeding) {
+    if (fixed_boundary()) {
+      // Clear of the seeded boundary by half a size, so no sliver forms against it.
+      if (pb_.domain(pts[i]) > -0.5 * s[i] || taken.near(pts[i], 0.5 * s[i])) continue;
+    } else if (seed_boundary) {
       if (!clear_of(pb_.domain, i) || (pb_.interface && !clear_of(*pb_.interface, i)) || taken.near(pts[i], 0.5 * s[i]))
         continue;
     } else if (taken.near(pts[i], 0.5 * spacing)) {
@@ -252,7 +257,8 @@ void Engine::seed_points(Rng& rng) {
 // are the unique edges, and an edge of one triangle only lies on the mesh boundary.
 void Engine::triangulate() {
   tris_.clear();
-  for (const auto& t : delaunay_triangulation(p_)) {
+  const auto all = fixed_boundary() ? constrained_delaunay_triangulation(p_, pb_.constraints) : delaunay_triangulation(p_);
+  for (const auto& t : all) {
     const Vec2 c = (p_[t[0]] + p_[t[1]] + p_[t[2]]) / 3.0;
     if (pb_.domain(c) < -geps_) tris_.push_back(t);
   }
@@ -327,7 +333,7 @@ bool Engine::density_control() {
     if (len0_[e] > 2.0 * len_[e]) {
       for (int v : bars_[e])
         if (static_cast<std::size_t>(v) >= nfix_) drop[v] = any = true;
-    } else if (opt_.split_long_edges && len_[e] > 1.5 * len0_[e] / opt_.fscale) {
+    } else if (opt_.split_long_edges && !fixed_boundary() && len_[e] > 1.5 * len0_[e] / opt_.fscale) {
       const Vec2 mid = 0.5 * (p_[a] + p_[b]);
       if (bar_on_boundary_[e]) {
         added_boundary.push_back(project_to_zero(pb_.domain, mid, deps_, proj_tol_));
@@ -394,7 +400,21 @@ void Engine::project_boundary() {
   d_.resize(p_.size());
   for (std::size_t i = 0; i < p_.size(); ++i) {
     d_[i] = pb_.domain(p_[i]);
-    if (i >= nfix_ && d_[i] > 0.0) p_[i] = project_to_zero(pb_.domain, p_[i], deps_, proj_tol_);
+    if (i < nfix_) continue;
+    if (!fixed_boundary()) {
+      if (d_[i] > 0.0) p_[i] = project_to_zero(pb_.domain, p_[i], deps_, proj_tol_);
+      continue;
+    }
+    // Never onto the boundary between two fixed seeds: back inside, a third of the local
+    // size from it, along the distance gradient.
+    const double margin = (*size_)(p_[i]) / 3.0;
+    for (int step = 0; step < 4 && d_[i] > -margin; ++step) {
+      const Vec2 g = numerical_gradient(pb_.domain, p_[i], d_[i], deps_);
+      const double g2 = norm2(g);
+      if (!(g2 > 0.0)) break;
+      p_[i] -= ((d_[i] + margin) / g2) * g;
+      d_[i] = pb_.domain(p_[i]);
+    }
   }
 }
 

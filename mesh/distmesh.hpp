@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,12 @@ struct DistMeshProblem {
   Box bbox;                                   // where the initial lattice is spread
   std::vector<Vec2> fixed{};                  // mesh nodes that never move (corners)
   std::optional<DistanceFunction> interface{};  // internal boundary dI = 0 the mesh follows
+  // Segments between fixed points (pairs of indices into `fixed`) that must be mesh
+  // edges. When given, the fixed points are the whole boundary (the mesh stage's shared
+  // seeds): the mesh is a constrained Delaunay triangulation, no point is seeded on or
+  // projected onto the boundary, and points that leave the domain are pulled back inside
+  // to a third of their size from the boundary. Every fixed point is kept, in order.
+  std::vector<std::array<int, 2>> constraints{};
   // Curved boundaries (of the domain and the interface) get edges of at most
   // curvature_angle radians, R curvature_angle long, growing by curvature_gradient per
   // unit distance away from them. 0 = no limit.

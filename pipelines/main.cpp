@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
+#include "pipelines/mesh_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
 namespace po = boost::program_options;
@@ -25,6 +26,8 @@ constexpr const char* kUsage =
     "commands:\n"
     "  tessellate CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
+    "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
+    "      mesh every grain of a tessellation, conforming and periodic\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      mesh a domain given by distance and size functions (see data/examples/)\n"
     "\n"
@@ -73,6 +76,35 @@ int config_command(const std::string& name, const std::vector<std::string>& args
   return kOk;
 }
 
+// `grainmesh mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]`.
+int mesh_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]");
+  desc.add_options()("help,h", "show this help")("tessellation", po::value<std::string>(),
+                                                 "tessellation.json written by grainmesh tessellate")(
+      "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
+      "config", po::value<std::string>(), "mesh config file (INI) with mesh.* and phase.NAME.size keys")(
+      "set", po::value<std::vector<std::string>>()->composing(), "set a key, e.g. --set mesh.size=0.01");
+  po::positional_options_description pos;
+  pos.add("tessellation", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+  } catch (const po::error& e) {
+    throw ConfigError(std::string("mesh: ") + e.what());
+  }
+  if (vm.count("help")) {
+    std::cout << desc << "\nKeys: see README.md, section 'grainmesh mesh'.\n";
+    return kOk;
+  }
+  if (!vm.count("tessellation")) throw ConfigError("mesh: missing TESSELLATION.json argument");
+  if (!vm.count("output")) throw ConfigError("mesh: missing -o OUT (the output directory)");
+  const auto overrides = vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides)
+                                           : Config::from_text("", "--set", overrides);
+  run_mesh_command(vm["tessellation"].as<std::string>(), config, vm["output"].as<std::string>());
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,6 +120,7 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
+    if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const ConfigError& e) {

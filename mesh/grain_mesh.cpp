@@ -1,0 +1,296 @@
+#include "mesh/grain_mesh.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "mesh/polygon.hpp"
+
+namespace grainmesh {
+
+double region_size(const GrainMeshOptions& o, int phase) {
+  if (phase >= 0 && static_cast<std::size_t>(phase) < o.phase_size.size() && o.phase_size[phase] > 0.0)
+    return o.phase_size[phase];
+  return o.size;
+}
+
+namespace {
+
+std::int64_t edge_key(int a, int b) { return static_cast<std::int64_t>(std::min(a, b)) << 32 | std::max(a, b); }
+
+// Exact coordinates as a map key: shared seeds are recognised by their bits.
+std::pair<std::uint64_t, std::uint64_t> bits(Vec2 p) {
+  std::pair<std::uint64_t, std::uint64_t> k;
+  const double x = p.x + 0.0, y = p.y + 0.0;
+  std::memcpy(&k.first, &x, sizeof x);
+  std::memcpy(&k.second, &y, sizeof y);
+  return k;
+}
+
+struct BitsHash {
+  std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
+    return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
+  }
+};
+
+// A stream per region that does not depend on which thread meshes it (SplitMix64).
+std::uint64_t region_stream(std::uint64_t seed, std::uint64_t r) {
+  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + r + 1;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The side of the cell an edge runs along: 0 left, 1 right, 2 bottom, 3 top, -1 none.
+int edge_side(const Tessellation& t, const TessEdge& e) {
+  const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
+  if (a.x == 0.0 && b.x == 0.0) return 0;
+  if (a.x == t.width && b.x == t.width) return 1;
+  if (a.y == 0.0 && b.y == 0.0) return 2;
+  if (a.y == t.height && b.y == t.height) return 3;
+  return -1;
+}
+
+struct RegionResult {
+  std::vector<Vec2> interior;                  // new points, in the engine's order
+  std::vector<std::array<int, 3>> triangles;   // ids: >= 0 global, < 0 -(1 + interior index)
+  int iterations = 0;
+  bool converged = true;
+};
+
+}  // namespace
+
+std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& o) {
+  const std::size_t ne = t.edges.size();
+  std::vector<double> h(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    double s = 1e300;
+    for (int r : {t.edges[e].left, t.edges[e].right})
+      if (r >= 0) s = std::min(s, region_size(o, t.regions[r].phase));
+    h[e] = s;
+  }
+  std::unordered_map<std::int64_t, int> index;
+  for (std::size_t e = 0; e < ne; ++e) index[edge_key(t.edges[e].v0, t.edges[e].v1)] = static_cast<int>(e);
+  // Periodic sides: right/top edge -> its partner on the left/bottom, sharing one size.
+  std::vector<int> partner(ne, -1);
+  if (t.periodic) {
+    std::unordered_map<int, int> to_left, to_bottom;  // right -> left, top -> bottom vertex
+    for (const auto& [l, r] : t.partners_x) to_left[r] = l;
+    for (const auto& [b, u] : t.partners_y) to_bottom[u] = b;
+    for (std::size_t e = 0; e < ne; ++e) {
+      const int side = edge_side(t, t.edges[e]);
+      if (side != 1 && side != 3) continue;
+      const auto& to_low = side == 1 ? to_left : to_bottom;
+      const auto a = to_low.find(t.edges[e].v0), b = to_low.find(t.edges[e].v1);
+      const auto it = (a != to_low.end() && b != to_low.end()) ? index.find(edge_key(a->second, b->second)) : index.end();
+      if (it == index.end()) throw GeometryError("mesh: a side edge of the periodic cell has no partner edge");
+      partner[e] = it->second;
+      h[it->second] = h[e] = std::min(h[e], h[it->second]);
+    }
+  }
+  std::vector<std::vector<Vec2>> seeds(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (partner[e] >= 0) continue;
+    const Vec2 a = t.vertices[t.edges[e].v0], b = t.vertices[t.edges[e].v1];
+    const int n = std::max(1, static_cast<int>(std::lround(norm(b - a) / h[e])));
+    for (int k = 1; k < n; ++k) seeds[e].push_back(a + (static_cast<double>(k) / n) * (b - a));
+  }
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (partner[e] < 0) continue;
+    const TessEdge& low = t.edges[partner[e]];
+    const bool right = edge_side(t, t.edges[e]) == 1;
+    std::vector<Vec2> s = seeds[partner[e]];
+    for (Vec2& p : s) (right ? p.x : p.y) = right ? t.width : t.height;
+    // Same direction when v0 of this edge is the partner of low.v0.
+    const Vec2 v0 = t.vertices[t.edges[e].v0], l0 = t.vertices[low.v0];
+    if ((right ? v0.y != l0.y : v0.x != l0.x)) std::reverse(s.begin(), s.end());
+    seeds[e] = std::move(s);
+  }
+  return seeds;
+}
+
+GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
+  if (!(o.size > 0.0) || !std::isfinite(o.size)) throw ConfigError("mesh: the element size must be positive");
+  const auto start = std::chrono::steady_clock::now();
+  const auto seeds = seed_edges(t, o);
+  GrainMesh out;
+  // Global nodes: tessellation vertices, then edge seeds, then each region's interior.
+  std::vector<Vec2>& pts = out.mesh.points;
+  pts = t.vertices;
+  std::vector<int> first_seed(t.edges.size());
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    first_seed[e] = static_cast<int>(pts.size());
+    pts.insert(pts.end(), seeds[e].begin(), seeds[e].end());
+  }
+  std::unordered_map<std::int64_t, int> index;
+  for (std::size_t e = 0; e < t.edges.size(); ++e) index[edge_key(t.edges[e].v0, t.edges[e].v1)] = static_cast<int>(e);
+
+  const int nr = static_cast<int>(t.regions.size());
+  std::vector<RegionResult> results(nr);
+  auto mesh_region = [&](int r) {
+    const Region& region = t.regions[r];
+    const double h = region_size(o, region.phase);
+    std::vector<std::vector<Vec2>> rings;
+    std::vector<int> ids;  // global id of each fixed point
+    std::vector<Vec2> fixed;
+    std::vector<std::array<int, 2>> constraints;
+    for (const auto& ring : region.rings) {
+      std::vector<Vec2> loop;
+      const int base = static_cast<int>(ids.size());
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const int a = ring[k], b = ring[(k + 1) % ring.size()];
+        loop.push_back(t.vertices[a]);
+        ids.push_back(a);
+        const auto it = index.find(edge_key(a, b));
+        if (it == index.end()) throw GeometryError("mesh: region " + std::to_string(r) + " has a side that is no edge");
+        const int e = it->second;
+        const int n = static_cast<int>(seeds[e].size());
+        const bool forward = t.edges[e].v0 == a;
+        for (int q = 0; q < n; ++q) {
+          const int s = forward ? q : n - 1 - q;
+          loop.push_back(seeds[e][s]);
+          ids.push_back(first_seed[e] + s);
+        }
+      }
+      const int count = static_cast<int>(loop.size());
+      for (int k = 0; k < count; ++k) constraints.push_back({base + k, base + (k + 1) % count});
+      fixed.insert(fixed.end(), loop.begin(), loop.end());
+      rings.push_back(std::move(loop));
+    }
+    const DistanceFunction domain = polygon(rings);
+    const DistMeshProblem pb{.domain = domain, .size = constant_size(1.0), .h0 = h, .bbox = domain.bounds(),
+                             .fixed = std::move(fixed), .interface = {}, .constraints = std::move(constraints)};
+    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, BitsHash> fixed_id;
+    for (std::size_t k = 0; k < pb.fixed.size(); ++k) fixed_id.emplace(bits(pb.fixed[k]), ids[k]);
+    Rng rng(region_stream(o.seed, static_cast<std::uint64_t>(r)));
+    const DistMeshResult res = distmesh(pb, o.distmesh, rng);
+    RegionResult& rr = results[r];
+    std::vector<int> local(res.mesh.points.size());
+    for (std::size_t i = 0; i < res.mesh.points.size(); ++i) {
+      const auto it = fixed_id.find(bits(res.mesh.points[i]));
+      if (it != fixed_id.end()) {
+        local[i] = it->second;
+      } else {
+        local[i] = -1 - static_cast<int>(rr.interior.size());
+        rr.interior.push_back(res.mesh.points[i]);
+      }
+    }
+    for (const auto& tri : res.mesh.triangles) rr.triangles.push_back({local[tri[0]], local[tri[1]], local[tri[2]]});
+    rr.iterations = res.stats.iterations;
+    rr.converged = res.stats.converged;
+  };
+  tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+  arena.execute([&] { tbb::parallel_for(0, nr, [&](int r) { mesh_region(r); }); });
+
+  for (int r = 0; r < nr; ++r) {
+    const int base = static_cast<int>(pts.size());
+    pts.insert(pts.end(), results[r].interior.begin(), results[r].interior.end());
+    for (auto tri : results[r].triangles) {
+      for (int& v : tri)
+        if (v < 0) v = base + (-1 - v);
+      out.mesh.triangles.push_back(tri);
+      out.mesh.region.push_back(t.regions[r].grain);
+      out.phase.push_back(t.regions[r].phase);
+    }
+    out.iterations_max = std::max(out.iterations_max, results[r].iterations);
+    out.unconverged_regions += results[r].converged ? 0 : 1;
+  }
+  out.regions = nr;
+  if (t.periodic) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double far = axis == 0 ? t.width : t.height;
+      std::map<double, int> high;
+      for (int v = 0; v < static_cast<int>(pts.size()); ++v)
+        if ((axis == 0 ? pts[v].x : pts[v].y) == far) high[axis == 0 ? pts[v].y : pts[v].x] = v;
+      auto& pairs = axis == 0 ? out.pairs_x : out.pairs_y;
+      for (int v = 0; v < static_cast<int>(pts.size()); ++v) {
+        if ((axis == 0 ? pts[v].x : pts[v].y) != 0.0) continue;
+        const auto it = high.find(axis == 0 ? pts[v].y : pts[v].x);
+        if (it == high.end()) throw GeometryError("mesh: a node on a cell side has no periodic partner");
+        pairs.emplace_back(v, it->second);
+      }
+    }
+  }
+  validate(out.mesh);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
+  const TriMesh& mesh = m.mesh;
+  const double W = t.width, H = t.height;
+  Conformity c;
+  const auto edges = mesh_edges(mesh);  // throws for an edge of three triangles
+  for (const MeshEdge& e : edges) {
+    if (e.right >= 0) continue;
+    ++c.boundary_edges;
+    const Vec2 a = mesh.points[e.a], b = mesh.points[e.b];
+    const bool on_side = (a.x == 0 && b.x == 0) || (a.x == W && b.x == W) || (a.y == 0 && b.y == 0) || (a.y == H && b.y == H);
+    if (!on_side)
+      throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one triangle but lies inside the cell");
+  }
+  // Each triangle inside the region of its grain: its centroid strictly inside one of the
+  // grain's regions and its corners no farther than rounding from it.
+  std::vector<std::vector<int>> regions_of(t.grains.size());
+  std::vector<PolygonDistance> dist;
+  dist.reserve(t.regions.size());
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    PolygonRings rings;
+    for (const auto& ring : t.regions[r].rings) {
+      rings.emplace_back();
+      for (int v : ring) rings.back().push_back(t.vertices[v]);
+    }
+    dist.emplace_back(rings);
+    regions_of[t.regions[r].grain].push_back(static_cast<int>(r));
+  }
+  const double tol = 1e-12 * std::max(W, H);
+  std::vector<double> area(t.grains.size(), 0.0);
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const int g = mesh.region[k];
+    if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size())
+      throw GeometryError("conformity: triangle " + std::to_string(k) + " names grain " + std::to_string(g));
+    const Vec2 centre = triangle_centroid(mesh, static_cast<int>(k));
+    bool inside = false;
+    for (int r : regions_of[g]) {
+      if (!dist[r].contains(centre)) continue;
+      inside = true;
+      for (int v : mesh.triangles[k])
+        if (dist[r](mesh.points[v]) > tol)
+          throw GeometryError("conformity: triangle " + std::to_string(k) + " reaches out of its grain " + std::to_string(g));
+    }
+    if (!inside) throw GeometryError("conformity: triangle " + std::to_string(k) + " lies outside its grain " + std::to_string(g));
+    area[g] += triangle_area(mesh, static_cast<int>(k));
+  }
+  for (const Grain& g : t.grains) {
+    const double err = std::abs(area[g.id] - g.area) / g.area;
+    c.max_area_error = std::max(c.max_area_error, err);
+    if (err > area_tolerance)
+      throw GeometryError("conformity: grain " + std::to_string(g.id) + " has mesh area " + to_text(area[g.id], 12) +
+                          " for polygon area " + to_text(g.area, 12));
+  }
+  if (t.periodic) {
+    std::size_t left = 0, bottom = 0;
+    for (const Vec2 p : mesh.points) {
+      left += p.x == 0.0 ? 1 : 0;
+      bottom += p.y == 0.0 ? 1 : 0;
+    }
+    if (m.pairs_x.size() != left || m.pairs_y.size() != bottom)
+      throw GeometryError("conformity: not every node on the left or bottom side is paired");
+    for (const auto& [a, b] : m.pairs_x)
+      c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{W, 0.0}));
+    for (const auto& [a, b] : m.pairs_y)
+      c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{0.0, H}));
+    if (c.max_pair_mismatch > tol) throw GeometryError("conformity: periodic node pairs do not match");
+  }
+  return c;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,64 @@
+// The mesh stage on a tessellation: every edge seeded once, every region meshed by the
+// DistMesh engine with its seeded boundary fixed, the pieces merged into one conforming
+// mesh with a grain and a phase per triangle and, when periodic, paired side nodes.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "mesh/distmesh.hpp"
+#include "mesh/trimesh.hpp"
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+struct GrainMeshOptions {
+  double size = 0.0;                 // element edge length, the tessellation's unit; > 0
+  std::vector<double> phase_size;    // per phase (index as in the tessellation); 0 or
+                                     // missing = `size`
+  int threads = 0;                   // regions meshed in parallel; 0 = all cores
+  std::uint64_t seed = 1;            // region r uses a stream derived from (seed, r)
+  DistMeshOptions distmesh{};        // the engine's constants
+};
+
+struct GrainMesh {
+  TriMesh mesh;                      // mesh.region[t] = grain id of triangle t
+  std::vector<int> phase;            // #T phase of each triangle
+  // Node pairs (left, right) with right = left + (W, 0) and (bottom, top) with
+  // top = bottom + (0, H); empty when the tessellation is not periodic.
+  std::vector<std::pair<int, int>> pairs_x, pairs_y;
+  int regions = 0;
+  int iterations_max = 0;            // the most force iterations any region needed
+  int unconverged_regions = 0;       // regions that hit the iteration limit (still valid)
+  double seconds = 0.0;
+};
+
+// The size every edge and region gets: options.size, or the phase's own.
+double region_size(const GrainMeshOptions& options, int phase);
+
+// Points along each tessellation edge (its end vertices excluded), from v0 to v1, spaced
+// evenly by the edge's size (the finer of its two sides). Edges on the right (top) side of
+// a periodic cell get the points of their partner on the left (bottom) side moved by W
+// (H), bit for bit.
+std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& options);
+
+// Meshes every region (in parallel; the result does not depend on the thread count) and
+// merges them. Throws GeometryError when a region cannot be meshed.
+GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& options);
+
+// What check_conformity measured.
+struct Conformity {
+  double max_area_error = 0.0;       // max over grains |mesh area - polygon area| / polygon area
+  double max_pair_mismatch = 0.0;    // max over node pairs of the position error
+  std::size_t boundary_edges = 0;    // edges with one triangle (all on the cell's sides)
+};
+
+// Checks the mesh against its tessellation: each edge in one or two triangles; edges
+// with one triangle on the cell's sides only; every triangle inside the region of its
+// grain; each grain's area equal to its polygons' within `area_tolerance` (relative);
+// periodic pairs complete and matching within 1e-12 max(W, H). Throws GeometryError
+// naming the first violation.
+Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance = 1e-9);
+
+}  // namespace grainmesh

@@ -1,0 +1,115 @@
+#include "pipelines/mesh_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "export/picture.hpp"
+#include "export/vtu.hpp"
+#include "mesh/quality.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+#include "tessellate/tessellation_json.hpp"
+
+namespace grainmesh {
+
+const std::vector<std::string>& mesh_config_keys() {
+  static const std::vector<std::string> keys{"mesh.size",          "mesh.triangles_per_grain", "mesh.threads",
+                                             "mesh.seed",          "mesh.max_iterations",      "phase.*.size",
+                                             "output.picture_width"};
+  return keys;
+}
+
+Tessellation read_tessellation_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(file.string() + ": cannot open tessellation file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return tessellation_from_json(text.str(), file.string());
+}
+
+MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
+  c.check_keys(mesh_config_keys());
+  MeshJob job;
+  GrainMeshOptions& o = job.options;
+  if (c.has("mesh.size") && c.has("mesh.triangles_per_grain"))
+    c.fail("mesh.triangles_per_grain", "give either mesh.size or mesh.triangles_per_grain, not both");
+  if (c.has("mesh.size")) {
+    o.size = c.number("mesh.size");
+    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail("mesh.size", "must be positive, got " + c.text("mesh.size"));
+  } else {
+    const double n = c.number("mesh.triangles_per_grain", 100.0);
+    if (!(n >= 2.0 && n <= 1e6)) c.fail("mesh.triangles_per_grain", "must lie between 2 and 1e6");
+    // Equilateral triangles of side h have area h^2 sqrt(3) / 4.
+    const double grain_area = t.width * t.height / std::max(1, t.stats.grains);
+    o.size = std::sqrt(4.0 * grain_area / (n * std::sqrt(3.0)));
+  }
+  o.phase_size.assign(t.phases.size(), 0.0);
+  for (const auto& [key, value] : c.entries()) {
+    if (key.rfind("phase.", 0) != 0) continue;
+    const std::string name = key.substr(6, key.rfind('.') - 6);
+    std::size_t p = 0;
+    while (p < t.phases.size() && t.phases[p].name != name) ++p;
+    if (p == t.phases.size()) c.fail(key, "the tessellation has no phase named '" + name + "'");
+    o.phase_size[p] = c.number(key);
+    if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + value);
+  }
+  const long long threads = c.integer("mesh.threads", 0);
+  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
+  o.threads = static_cast<int>(threads);
+  o.seed = c.unsigned_integer("mesh.seed", 1);
+  const long long iterations = c.integer("mesh.max_iterations", o.distmesh.max_iterations);
+  if (iterations < 1 || iterations > 100'000'000) c.fail("mesh.max_iterations", "must be at least 1");
+  o.distmesh.max_iterations = static_cast<int>(iterations);
+  const long long width = c.integer("output.picture_width", job.picture_width);
+  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  job.picture_width = static_cast<int>(width);
+  return job;
+}
+
+void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
+  check_output_replaceable(out);
+  const Tessellation t = read_tessellation_file(tessellation);
+  const MeshJob job = read_mesh_job(c, t);
+  const GrainMesh m = mesh_tessellation(t, job.options);
+  const Conformity conformity = check_conformity(t, m);
+  const MeshQuality q = measure_quality(m.mesh);
+
+  StagedOutput staged(out);
+  write_vtu(staged.dir() / "mesh.vtu", m.mesh,
+            {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  TriMesh by_phase = m.mesh;
+  by_phase.region = m.phase;
+  write_mesh_png(staged.dir() / "mesh.png", by_phase, {.width_px = job.picture_width, .outline_by = m.mesh.region});
+  Json report;
+  report["command"] = "mesh";
+  report["tessellation"] = tessellation.string();
+  report["points"] = m.mesh.points.size();
+  report["triangles"] = m.mesh.triangles.size();
+  report["grains"] = t.grains.size();
+  report["regions"] = m.regions;
+  report["cells_per_grain_mean"] = static_cast<double>(m.mesh.triangles.size()) / static_cast<double>(t.grains.size());
+  report["size"] = job.options.size;
+  add_quality(report, q);
+  report["max_grain_area_error"] = conformity.max_area_error;
+  report["max_pair_mismatch"] = conformity.max_pair_mismatch;
+  report["pairs_x"] = m.pairs_x.size();
+  report["pairs_y"] = m.pairs_y.size();
+  report["boundary_edges"] = conformity.boundary_edges;
+  report["iterations_max"] = m.iterations_max;
+  report["unconverged_regions"] = m.unconverged_regions;
+  report["threads"] = job.options.threads;
+  report["seed"] = job.options.seed;
+  report["seconds"] = m.seconds;
+  report["peak_memory_mib"] = peak_memory_mib();
+  write_json(staged.dir() / "report.json", report);
+  staged.commit();
+  std::printf("grainmesh mesh: %zu points, %zu triangles (%.0f per grain), q_min %.3f, q_mean %.3f, conforming "
+              "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.png, report.json}\n",
+              m.mesh.points.size(), m.mesh.triangles.size(), report["cells_per_grain_mean"].get<double>(), q.q_min,
+              q.q_mean, m.seconds, out.string().c_str());
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,31 @@
+// `grainmesh mesh TESSELLATION.json -o OUT`: the mesh stage on a tessellation, written as
+// OUT/mesh.vtu, OUT/mesh.png and OUT/report.json (last).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mesh/grain_mesh.hpp"
+#include "pipelines/config.hpp"
+
+namespace grainmesh {
+
+struct MeshJob {
+  GrainMeshOptions options;
+  int picture_width = 1200;  // pixels
+};
+
+// The keys a mesh config (or --set) may use ("*" is a phase name).
+const std::vector<std::string>& mesh_config_keys();
+
+// Reads and checks the mesh keys against the tessellation they will mesh.
+MeshJob read_mesh_job(const Config& config, const Tessellation& t);
+
+// Reads and validates tessellation.json. Throws IoError or GeometryError naming the file.
+Tessellation read_tessellation_file(const std::filesystem::path& file);
+
+void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
+                      const std::filesystem::path& out);
+
+}  // namespace grainmesh
