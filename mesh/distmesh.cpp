@@ -100,6 +100,7 @@ class Engine {
  private:
   bool fixed_boundary() const { return !pb_.constraints.empty(); }
   std::vector<Vec2> lattice(double spacing) const;
+  std::vector<Vec2> graded_points() const;
   void seed_points(Rng& rng);
   std::vector<double> checked_size(const std::vector<Vec2>& pts) const;
   int interface_mover(int a, int b, const std::vector<double>& di) const;
@@ -131,6 +132,9 @@ class Engine {
   std::vector<Vec2> force_, mid_;            // #N total force; #bars midpoints (at triangulation)
   std::vector<double> len_, len0_, d_, di_;  // #bars lengths, wanted lengths; #N d, dI
   std::vector<double> bar_size_;             // #bars size field at the midpoints
+  std::vector<double> point_size_;           // #N size at the points (absolute sizes only)
+  std::vector<double> dval_;                 // #N d at dpos_, the last exact evaluation
+  std::vector<Vec2> dpos_;
   DistMeshStats stats_;
 };
 
@@ -167,6 +171,30 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
   return pts;
 }
 
+// With an absolute size field: the centres of a quadtree's leaves over the bounding box,
+// each leaf split until it is about the size at its centre (or h0), kept where
+// d < geps. Costs in proportion to the points made, however fine the finest size.
+// (Leaves are split until no wider than 1.25 x the size at their centre.)
+std::vector<Vec2> Engine::graded_points() const {
+  std::vector<Vec2> out;
+  const double w0 = std::max(pb_.bbox.width(), pb_.bbox.height());
+  std::vector<std::pair<Vec2, double>> stack{{pb_.bbox.centre(), w0}};
+  while (!stack.empty()) {
+    const auto [c, w] = stack.back();
+    stack.pop_back();
+    if (pb_.domain(c) > 0.75 * w) continue;  // the cell lies wholly outside
+    // Leaves end between 0.625 and 1.25 times the size: one point per leaf then has about
+    // the density of an equilateral lattice of that spacing.
+    if (w > h0_ && w > 1.25 * pb_.size(c)) {
+      const double q = 0.25 * w;
+      for (const Vec2 d : {Vec2{-q, -q}, Vec2{q, -q}, Vec2{-q, q}, Vec2{q, q}}) stack.push_back({c + d, 0.5 * w});
+      continue;
+    }
+    if (pb_.domain(c) < geps_) out.push_back(c);
+  }
+  return out;
+}
+
 // Step 1: equilateral lattice, keep d < geps, then keep each point with probability
 // (s_min / s)^2 so that density follows the size field. With boundary seeding, points
 // near the boundary are first projected onto it and thinned to the local size, and the
@@ -184,7 +212,7 @@ void Engine::seed_points(Rng& rng) {
     fixed.push_back(f);
   }
 
-  std::vector<Vec2> pts = lattice(h0_);
+  std::vector<Vec2> pts = pb_.absolute_size ? graded_points() : lattice(h0_);
   if (pts.empty() && !fixed_boundary())  // a seeded boundary alone still makes a mesh
     throw GeometryError("domain is empty inside its bounding box " + to_text(pb_.bbox.lo) + " - " + to_text(pb_.bbox.hi) +
                         ": no lattice point of spacing h0 = " + to_text(h0_) + " lies inside");
@@ -193,7 +221,7 @@ void Engine::seed_points(Rng& rng) {
 
   // The absolute size field and the lattice spacing it needs.
   auto size = std::make_shared<AbsoluteSize>(pb_.size);
-  size->scale = h0_ / *std::min_element(h.begin(), h.end());
+  size->scale = pb_.absolute_size ? 1.0 : h0_ / *std::min_element(h.begin(), h.end());
   double spacing = h0_;
   if (pb_.curvature_angle > 0.0) {
     size->angle = pb_.curvature_angle;
@@ -211,7 +239,9 @@ void Engine::seed_points(Rng& rng) {
   size_->eval(pts, s);
   p_ = fixed;
   nfix_ = fixed.size();
-  PointGrid taken(spacing);
+  // Graded points ask "near" within half their own size, so the grid's cells must be as
+  // large as the largest size.
+  PointGrid taken(pb_.absolute_size && !s.empty() ? *std::max_element(s.begin(), s.end()) : spacing);
   for (const Vec2 f : fixed) taken.insert(f);
 
   // Seeds on a curve: lattice points within one local size of it, projected onto it,
@@ -235,7 +265,7 @@ void Engine::seed_points(Rng& rng) {
     if (pb_.interface) seed_curve(*pb_.interface, true);
   }
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double keep = (spacing / s[i]) * (spacing / s[i]);
+    const double keep = pb_.absolute_size ? 1.0 : (spacing / s[i]) * (spacing / s[i]);  // graded points are sized
     const double u = uniform01(rng);  // one draw per lattice point: the stream never depends on the grid
     if (u >= keep) continue;
     if (fixed_boundary()) {
@@ -290,6 +320,10 @@ void Engine::triangulate() {
   for (std::size_t e = 0; e < bars_.size(); ++e) mid_[e] = 0.5 * (p_[bars_[e][0]] + p_[bars_[e][1]]);
   bar_size_.resize(bars_.size());
   size_->eval(mid_, bar_size_);
+  if (pb_.absolute_size) {
+    point_size_.resize(p_.size());
+    size_->eval(p_, point_size_);
+  }
   pold_ = p_;
   ++stats_.retriangulations;
 }
@@ -351,6 +385,7 @@ bool Engine::density_control() {
       on_interface_[out++] = on_interface_[i];
     }
   stats_.density_removed += p_.size() - out;
+  dval_.clear();  // indices changed
   p_.resize(out);
   on_interface_.resize(out);
   for (const Vec2 q : added_boundary) p_.push_back(q), on_interface_.push_back(0);
@@ -398,16 +433,34 @@ void Engine::follow_interface() {
 // Step 5: points that left the domain are projected back onto its boundary (eq. 2.13).
 void Engine::project_boundary() {
   d_.resize(p_.size());
+  if (dval_.size() != p_.size()) {  // points were added or removed: nothing cached
+    dval_.assign(p_.size(), std::numeric_limits<double>::infinity());
+    dpos_ = p_;
+  }
   for (std::size_t i = 0; i < p_.size(); ++i) {
+    // d is 1-Lipschitz: a point that was deep inside and moved little since is still
+    // inside, and its bound is enough for everything below.
+    const double deep = geps_ + (fixed_boundary() ? (i < point_size_.size() ? point_size_[i] : h0_) / 3.0 : 0.0);
+    const double bound = dval_[i] + norm(p_[i] - dpos_[i]);
+    if (bound < -deep) {
+      d_[i] = bound;
+      continue;
+    }
     d_[i] = pb_.domain(p_[i]);
+    dval_[i] = d_[i];
+    dpos_[i] = p_[i];
     if (i < nfix_) continue;
     if (!fixed_boundary()) {
-      if (d_[i] > 0.0) p_[i] = project_to_zero(pb_.domain, p_[i], deps_, proj_tol_);
+      if (d_[i] > 0.0) {
+        p_[i] = project_to_zero(pb_.domain, p_[i], deps_, proj_tol_);
+        dval_[i] = std::numeric_limits<double>::infinity();  // on the boundary now: check again
+      }
       continue;
     }
     // Never onto the boundary between two fixed seeds: back inside, a third of the local
     // size from it, along the distance gradient.
     const double margin = (*size_)(p_[i]) / 3.0;
+    const bool pulled = d_[i] > -margin;
     for (int step = 0; step < 4 && d_[i] > -margin; ++step) {
       const Vec2 g = numerical_gradient(pb_.domain, p_[i], d_[i], deps_);
       const double g2 = norm2(g);
@@ -415,12 +468,22 @@ void Engine::project_boundary() {
       p_[i] -= ((d_[i] + margin) / g2) * g;
       d_[i] = pb_.domain(p_[i]);
     }
+    dval_[i] = d_[i];
+    dpos_[i] = p_[i];
+    // Held off the boundary, it feels the boundary's reaction like a projected point
+    // and is not judged for convergence (d = 0 marks it, as on the boundary).
+    if (pulled) d_[i] = 0.0;
   }
 }
 
+// In units of h0; with a graded absolute size, each point's move relative to its own size.
 double Engine::max_move_since_triangulation() const {
   double moved2 = 0.0;
-  for (std::size_t i = 0; i < p_.size(); ++i) moved2 = std::max(moved2, norm2(p_[i] - pold_[i]));
+  const bool graded = pb_.absolute_size && point_size_.size() == p_.size();
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    const double scale = graded ? point_size_[i] / h0_ : 1.0;
+    moved2 = std::max(moved2, norm2(p_[i] - pold_[i]) / (scale * scale));
+  }
   return std::sqrt(moved2);
 }
 
@@ -581,9 +644,13 @@ DistMeshResult Engine::run(Rng& rng) {
 
     // Points on the boundary feel the boundary's reaction and never come to rest; the
     // others (interface points included) are judged by how far they actually moved.
+    // With a graded absolute size, each point is judged against its own size.
     double max_move2 = 0.0;
-    for (std::size_t i = nfix_; i < p_.size(); ++i)
-      if (d_[i] < -geps_) max_move2 = std::max(max_move2, norm2(p_[i] - before_[i]));
+    for (std::size_t i = nfix_; i < p_.size(); ++i) {
+      if (!(d_[i] < -geps_)) continue;
+      const double scale = pb_.absolute_size && i < point_size_.size() ? point_size_[i] / h0_ : 1.0;
+      max_move2 = std::max(max_move2, norm2(p_[i] - before_[i]) / (scale * scale));
+    }
     if (std::sqrt(max_move2) < opt_.dptol * h0_) {
       stats_.converged = true;
       stats_.stop_reason = "converged: every interior point moved less than dptol h0";

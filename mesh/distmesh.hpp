@@ -47,6 +47,9 @@ struct DistMeshProblem {
   // projected onto the boundary, and points that leave the domain are pulled back inside
   // to a third of their size from the boundary. Every fixed point is kept, in order.
   std::vector<std::array<int, 2>> constraints{};
+  // The size function gives absolute lengths (not scaled so that its least value is h0);
+  // h0 is then the finest lattice spacing and must not exceed the size anywhere.
+  bool absolute_size = false;
   // Curved boundaries (of the domain and the interface) get edges of at most
   // curvature_angle radians, R curvature_angle long, growing by curvature_gradient per
   // unit distance away from them. 0 = no limit.

@@ -66,9 +66,46 @@ struct RegionResult {
   bool converged = true;
 };
 
+// Points strictly between a and b, evenly in the integral of 1/h.
+std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& h) {
+  const double len = norm(b - a);
+  double finest = h.base();
+  constexpr int kProbe = 32;
+  for (int k = 0; k <= kProbe; ++k) finest = std::min(finest, h(a + (static_cast<double>(k) / kProbe) * (b - a)));
+  const int m = std::clamp(static_cast<int>(std::ceil(4.0 * len / finest)), 16, 1 << 20);
+  std::vector<double> cum(m + 1, 0.0);  // integral of 1/h up to sample k
+  double prev = 1.0 / h(a);
+  for (int k = 1; k <= m; ++k) {
+    const double next = 1.0 / h(a + (static_cast<double>(k) / m) * (b - a));
+    cum[k] = cum[k - 1] + 0.5 * (prev + next) * len / m;
+    prev = next;
+  }
+  const int n = std::max(1, static_cast<int>(std::lround(cum[m])));
+  std::vector<Vec2> out;
+  int k = 0;
+  for (int q = 1; q < n; ++q) {
+    const double target = cum[m] * q / n;
+    while (cum[k + 1] < target) ++k;
+    const double s = (k + (target - cum[k]) / (cum[k + 1] - cum[k])) / m;
+    out.push_back(a + s * (b - a));
+  }
+  return out;
+}
+
 }  // namespace
 
-std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& o) {
+FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& o) {
+  double largest = o.size, finest = o.size;
+  for (std::size_t p = 0; p < t.phases.size(); ++p) {
+    largest = std::max(largest, region_size(o, static_cast<int>(p)));
+    finest = std::min(finest, region_size(o, static_cast<int>(p)));
+  }
+  std::vector<SizeSource> sources;
+  if (o.feature_size) sources = feature_sources(t, 0.5 * finest, largest, o.feature_fraction, o.gradient);
+  return FeatureSize(std::move(sources), largest, o.gradient);
+}
+
+std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& o, const FeatureSize& size) {
   const std::size_t ne = t.edges.size();
   std::vector<double> h(ne);
   for (std::size_t e = 0; e < ne; ++e) {
@@ -100,8 +137,10 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] >= 0) continue;
     const Vec2 a = t.vertices[t.edges[e].v0], b = t.vertices[t.edges[e].v1];
-    const int n = std::max(1, static_cast<int>(std::lround(norm(b - a) / h[e])));
-    for (int k = 1; k < n; ++k) seeds[e].push_back(a + (static_cast<double>(k) / n) * (b - a));
+    Box box;
+    box.extend(a);
+    box.extend(b);
+    seeds[e] = seed_segment(a, b, size.restricted(box, h[e]));
   }
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] < 0) continue;
@@ -120,7 +159,8 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
 GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   if (!(o.size > 0.0) || !std::isfinite(o.size)) throw ConfigError("mesh: the element size must be positive");
   const auto start = std::chrono::steady_clock::now();
-  const auto seeds = seed_edges(t, o);
+  const FeatureSize size = tessellation_size(t, o);
+  const auto seeds = seed_edges(t, o, size);
   GrainMesh out;
   // Global nodes: tessellation vertices, then edge seeds, then each region's interior.
   std::vector<Vec2>& pts = out.mesh.points;
@@ -166,8 +206,14 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
       rings.push_back(std::move(loop));
     }
     const DistanceFunction domain = polygon(rings);
-    const DistMeshProblem pb{.domain = domain, .size = constant_size(1.0), .h0 = h, .bbox = domain.bounds(),
-                             .fixed = std::move(fixed), .interface = {}, .constraints = std::move(constraints)};
+    const FeatureSize field = size.restricted(domain.bounds(), h);
+    // The finest size is on the boundary, where the features are; a margin for the
+    // stretches between seeds.
+    double h0 = h;
+    for (const Vec2 p : fixed) h0 = std::min(h0, 0.9 * field(p));
+    const DistMeshProblem pb{.domain = domain, .size = field.as_size_function(), .h0 = h0, .bbox = domain.bounds(),
+                             .fixed = std::move(fixed), .interface = {}, .constraints = std::move(constraints),
+                             .absolute_size = true};
     std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, BitsHash> fixed_id;
     for (std::size_t k = 0; k < pb.fixed.size(); ++k) fixed_id.emplace(bits(pb.fixed[k]), ids[k]);
     Rng rng(region_stream(o.seed, static_cast<std::uint64_t>(r)));

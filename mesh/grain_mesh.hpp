@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/distmesh.hpp"
+#include "mesh/feature_size.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -19,7 +20,12 @@ struct GrainMeshOptions {
                                      // missing = `size`
   int threads = 0;                   // regions meshed in parallel; 0 = all cores
   std::uint64_t seed = 1;            // region r uses a stream derived from (seed, r)
-  DistMeshOptions distmesh{};        // the engine's constants
+  bool feature_size = true;          // refine at short edges and thin layers
+  double feature_fraction = 0.5;     // element size there, x the local feature size
+  double gradient = 0.3;             // how fast the size grows away from them
+  // The engine's constants; a region stops after 1000 iterations (still a valid mesh):
+  // the quality is reached long before the last points settle in thin layers.
+  DistMeshOptions distmesh{.max_iterations = 1000};
 };
 
 struct GrainMesh {
@@ -34,14 +40,20 @@ struct GrainMesh {
   double seconds = 0.0;
 };
 
-// The size every edge and region gets: options.size, or the phase's own.
+// The size every edge and region gets away from small features: options.size, or the
+// phase's own.
 double region_size(const GrainMeshOptions& options, int phase);
 
-// Points along each tessellation edge (its end vertices excluded), from v0 to v1, spaced
-// evenly by the edge's size (the finer of its two sides). Edges on the right (top) side of
-// a periodic cell get the points of their partner on the left (bottom) side moved by W
-// (H), bit for bit.
-std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& options);
+// The size field of a tessellation: the phase sizes, lowered near short edges and thin
+// layers (when options.feature_size). Its base is the largest phase size.
+FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& options);
+
+// Points along each tessellation edge (its end vertices excluded), from v0 to v1, evenly
+// in the integral of 1/h along it, h the size field capped by the edge's phase size (the
+// finer of its two sides). Edges on the right (top) side of a periodic cell get the
+// points of their partner on the left (bottom) side moved by W (H), bit for bit.
+std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& options,
+                                          const FeatureSize& size);
 
 // Meshes every region (in parallel; the result does not depend on the thread count) and
 // merges them. Throws GeometryError when a region cannot be meshed.

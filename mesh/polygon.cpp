@@ -120,6 +120,19 @@ double polygon_area(const PolygonRings& rings) {
   return area;
 }
 
+namespace {
+
+// Polygons with more edges than this get a grid.
+constexpr std::size_t kGridEdges = 64;
+
+double edge_distance2(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a, ap = p - a;
+  const double t = std::clamp(dot(ap, ab) / norm2(ab), 0.0, 1.0);
+  return norm2(ap - t * ab);
+}
+
+}  // namespace
+
 PolygonDistance::PolygonDistance(const PolygonRings& rings) {
   validate_polygon(rings);
   for (const auto& ring : rings)
@@ -128,21 +141,75 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
       b_.push_back(ring[(i + 1) % ring.size()]);
       bounds_.extend(ring[i]);
     }
+  if (a_.size() <= kGridEdges) return;
+  // About two edges per cell.
+  const double side = std::max(bounds_.width(), bounds_.height());
+  const int n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(a_.size()) / 2.0)), 1, 2048);
+  cell_ = side / n;
+  nx_ = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell_)));
+  ny_ = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell_)));
+  auto cx = [&](double x) { return std::clamp(static_cast<int>((x - bounds_.lo.x) / cell_), 0, nx_ - 1); };
+  auto cy = [&](double y) { return std::clamp(static_cast<int>((y - bounds_.lo.y) / cell_), 0, ny_ - 1); };
+  std::vector<std::vector<int>> cells(static_cast<std::size_t>(nx_) * ny_), rows(ny_);
+  for (int e = 0; e < static_cast<int>(a_.size()); ++e) {
+    const int x0 = cx(std::min(a_[e].x, b_[e].x)), x1 = cx(std::max(a_[e].x, b_[e].x));
+    const int y0 = cy(std::min(a_[e].y, b_[e].y)), y1 = cy(std::max(a_[e].y, b_[e].y));
+    for (int y = y0; y <= y1; ++y) {
+      rows[y].push_back(e);
+      for (int x = x0; x <= x1; ++x) cells[static_cast<std::size_t>(y) * nx_ + x].push_back(e);
+    }
+  }
+  auto flatten = [](const std::vector<std::vector<int>>& lists, std::vector<int>& start, std::vector<int>& flat) {
+    start.assign(lists.size() + 1, 0);
+    for (std::size_t c = 0; c < lists.size(); ++c) start[c + 1] = start[c] + static_cast<int>(lists[c].size());
+    flat.clear();
+    for (const auto& l : lists) flat.insert(flat.end(), l.begin(), l.end());
+  };
+  flatten(cells, start_, edges_);
+  flatten(rows, row_start_, row_edges_);
 }
 
 double PolygonDistance::unsigned_distance(Vec2 p) const {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t e = 0; e < a_.size(); ++e) {
-    const Vec2 ab = b_[e] - a_[e], ap = p - a_[e];
-    const double t = std::clamp(dot(ap, ab) / norm2(ab), 0.0, 1.0);
-    best = std::min(best, norm2(ap - t * ab));
+  if (nx_ == 0) {
+    for (std::size_t e = 0; e < a_.size(); ++e) best = std::min(best, edge_distance2(p, a_[e], b_[e]));
+    return std::sqrt(best);
+  }
+  // Square rings of cells around p's (clamped) cell, until the ring is farther than the
+  // best distance found: every edge in a nearer cell has been seen.
+  const int px = static_cast<int>(std::floor((p.x - bounds_.lo.x) / cell_));
+  const int py = static_cast<int>(std::floor((p.y - bounds_.lo.y) / cell_));
+  const int qx = std::clamp(px, 0, nx_ - 1), qy = std::clamp(py, 0, ny_ - 1);
+  // Distance from p to the clamped cell, so rings count from there.
+  const double outside = std::hypot(std::max({bounds_.lo.x - p.x, 0.0, p.x - bounds_.hi.x}),
+                                    std::max({bounds_.lo.y - p.y, 0.0, p.y - bounds_.hi.y}));
+  const int rings = std::max(nx_, ny_);
+  for (int r = 0; r <= rings; ++r) {
+    const double reach = outside + (r - 1) * cell_;  // any edge in ring r is at least this far
+    if (r > 0 && reach > 0.0 && reach * reach > best) break;
+    for (int y = qy - r; y <= qy + r; ++y) {
+      if (y < 0 || y >= ny_) continue;
+      const bool edge_row = y == qy - r || y == qy + r;
+      for (int x = qx - r; x <= qx + r; x += (edge_row ? 1 : 2 * r)) {
+        if (x >= 0 && x < nx_) {
+          const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+          for (int k = start_[c]; k < start_[c + 1]; ++k)
+            best = std::min(best, edge_distance2(p, a_[edges_[k]], b_[edges_[k]]));
+        }
+        if (!edge_row && r == 0) break;
+      }
+    }
   }
   return std::sqrt(best);
 }
 
 bool PolygonDistance::contains(Vec2 p) const {
+  if (!bounds_.contains(p)) return false;
   bool odd = false;
-  for (std::size_t e = 0; e < a_.size(); ++e) {
+  const int row = nx_ == 0 ? -1 : std::clamp(static_cast<int>((p.y - bounds_.lo.y) / cell_), 0, ny_ - 1);
+  const int count = row < 0 ? static_cast<int>(a_.size()) : row_start_[row + 1] - row_start_[row];
+  for (int k = 0; k < count; ++k) {
+    const int e = row < 0 ? k : row_edges_[row_start_[row] + k];
     const Vec2 a = a_[e], b = b_[e];
     if ((a.y > p.y) != (b.y > p.y)) {
       const int o = orient2d(a, b, p);

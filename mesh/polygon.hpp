@@ -38,6 +38,13 @@ class PolygonDistance {
   // Edge e runs from a[e] to b[e]; stored flat for the hot loop.
   std::vector<Vec2> a_, b_;
   Box bounds_;
+  // Large polygons (a binder matrix) bin their edges in a uniform grid: every cell an
+  // edge's box touches lists it. Empty for small polygons.
+  double cell_ = 0.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_, edges_;  // cell c lists edges_[start_[c] .. start_[c + 1])
+  std::vector<int> row_start_, row_edges_;  // the same by rows, for the inside test
+
 };
 
 }  // namespace grainmesh

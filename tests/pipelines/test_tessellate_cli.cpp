@@ -103,3 +103,46 @@ TEST_CASE("bad tessellation input gives one line naming the key and no output", 
     CHECK(entries(dir.path()) == 0);
   }
 }
+
+TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cli][mesh]") {
+  test::ScratchDir dir("mesh");
+  REQUIRE(run_grainmesh({"tessellate", test::example("grains_wc_co").string(), "-o", (dir / "t").string(), "--set",
+                         "tessellation.grains=60"})
+              .exit_code == 0);
+  const std::string tess = (dir / "t" / "tessellation.json").string();
+  const auto r = run_grainmesh({"mesh", tess, "-o", (dir / "m").string(), "--set", "mesh.triangles_per_grain=40"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* f : {"mesh.vtu", "mesh.png"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "m" / "report.json"));
+  CHECK(report["max_grain_area_error"].get<double>() <= 1e-9);
+  CHECK(report["max_pair_mismatch"].get<double>() == 0.0);
+  CHECK(report["cells_per_grain_mean"].get<double>() > 20.0);
+  CHECK(report["pairs_x"].get<int>() > 0);
+
+  // Bad input: one line, non-zero exit, no output directory.
+  std::ofstream(dir / "broken.json") << "{\"format\": \"grainmesh-tessellation\", \"version\": 1";
+  struct Case {
+    std::vector<std::string> args;
+    int exit_code;
+    std::string says;
+  };
+  const std::vector<Case> cases{
+      {{"mesh", (dir / "none.json").string()}, 4, "none.json: cannot open tessellation file"},
+      {{"mesh", (dir / "broken.json").string()}, 3, "broken.json: "},
+      {{"mesh", tess, "--set", "mesh.size=0"}, 2, "mesh.size: must be positive"},
+      {{"mesh", tess, "--set", "mesh.size=-1"}, 2, "mesh.size: must be positive"},
+      {{"mesh", tess, "--set", "phase.Ni.size=1e-8"}, 2, "phase.Ni.size: the tessellation has no phase named 'Ni'"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = c.args;
+    args.push_back("-o");
+    args.push_back((dir / "out").string());
+    const auto res = run_grainmesh(args);
+    INFO("args " << c.args.back() << "\nstderr: " << res.err);
+    CHECK(res.exit_code == c.exit_code);
+    CHECK(res.err.find(c.says) != std::string::npos);
+    CHECK(std::count(res.err.begin(), res.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
+}

@@ -1,0 +1,221 @@
+#include "mesh/feature_size.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace grainmesh {
+
+FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gradient)
+    : sources_(std::move(sources)), base_(base), gradient_(gradient) {
+  if (sources_.size() < 32) return;  // a plain loop is faster
+  Box box;
+  double finest = base_;
+  for (const SizeSource& s : sources_) {
+    box.extend(s.p);
+    finest = std::min(finest, s.h);
+  }
+  cell_ = std::max((base_ - finest) / gradient_, 1e-300);
+  lo_ = box.lo;
+  nx_ = static_cast<int>(std::min(4096.0, std::floor(box.width() / cell_) + 1));
+  ny_ = static_cast<int>(std::min(4096.0, std::floor(box.height() / cell_) + 1));
+  cell_ = std::max({cell_, box.width() / nx_, box.height() / ny_});
+  std::vector<int> bin(sources_.size());
+  start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+  for (std::size_t k = 0; k < sources_.size(); ++k) {
+    const int x = std::min(nx_ - 1, static_cast<int>((sources_[k].p.x - lo_.x) / cell_));
+    const int y = std::min(ny_ - 1, static_cast<int>((sources_[k].p.y - lo_.y) / cell_));
+    bin[k] = y * nx_ + x;
+    ++start_[bin[k] + 1];
+  }
+  for (std::size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
+  order_.resize(sources_.size());
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t k = 0; k < sources_.size(); ++k) order_[fill[bin[k]]++] = static_cast<int>(k);
+}
+
+double FeatureSize::operator()(Vec2 x) const {
+  double h = base_;
+  if (nx_ == 0) {
+    for (const SizeSource& s : sources_) h = std::min(h, s.h + gradient_ * norm(x - s.p));
+    return h;
+  }
+  // Only the bins within one cell (the binding reach) can lower h.
+  const int cx = static_cast<int>(std::floor((x.x - lo_.x) / cell_));
+  const int cy = static_cast<int>(std::floor((x.y - lo_.y) / cell_));
+  for (int y = std::max(0, cy - 1); y <= std::min(ny_ - 1, cy + 1); ++y)
+    for (int b = y * nx_ + std::max(0, cx - 1); b <= y * nx_ + std::min(nx_ - 1, cx + 1); ++b)
+      for (int k = start_[b]; k < start_[b + 1]; ++k) {
+        const SizeSource& s = sources_[order_[k]];
+        h = std::min(h, s.h + gradient_ * norm(x - s.p));
+      }
+  return h;
+}
+
+FeatureSize FeatureSize::restricted(const Box& box, double base) const {
+  std::vector<SizeSource> kept;
+  for (const SizeSource& s : sources_) {
+    if (s.h >= base) continue;
+    const double reach = (base - s.h) / gradient_;  // beyond this the source cannot bind
+    const double dx = std::max({box.lo.x - s.p.x, 0.0, s.p.x - box.hi.x});
+    const double dy = std::max({box.lo.y - s.p.y, 0.0, s.p.y - box.hi.y});
+    if (dx * dx + dy * dy < reach * reach) kept.push_back(s);
+  }
+  return FeatureSize(std::move(kept), base, gradient_);
+}
+
+namespace {
+
+struct FeatureNode final : SizeFunction::Node {
+  explicit FeatureNode(FeatureSize f) : size(std::move(f)) {}
+  void eval(std::span<const Vec2> p, std::span<double> out) const override {
+    for (std::size_t i = 0; i < p.size(); ++i) out[i] = size(p[i]);
+  }
+  double constant_value() const override {
+    return size.sources() == 0 ? size.base() : std::numeric_limits<double>::quiet_NaN();
+  }
+  std::string describe() const override { return "feature size"; }
+  FeatureSize size;
+};
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double l2 = norm2(d);
+  const double s = l2 > 0.0 ? std::clamp(dot(p - a, d) / l2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + s * d));
+}
+
+// Edges (with their periodic images) in a uniform grid, for "nearest edge within R".
+class EdgeGrid {
+ public:
+  EdgeGrid(const Tessellation& t, double cell, double reach) : t_(t), cell_(cell) {
+    lo_ = {-reach, -reach};
+    nx_ = std::max(1, static_cast<int>(std::ceil((t.width + 2 * reach) / cell)));
+    ny_ = std::max(1, static_cast<int>(std::ceil((t.height + 2 * reach) / cell)));
+    bins_.resize(static_cast<std::size_t>(nx_) * ny_);
+    const int k = t.periodic ? 1 : 0;
+    for (int e = 0; e < static_cast<int>(t.edges.size()); ++e)
+      for (int j = -k; j <= k; ++j)
+        for (int i = -k; i <= k; ++i) {
+          const Vec2 shift{i * t.width, j * t.height};
+          const Vec2 a = t.vertices[t.edges[e].v0] + shift, b = t.vertices[t.edges[e].v1] + shift;
+          Box box;
+          box.extend(a);
+          box.extend(b);
+          const int x0 = bin_x(box.lo.x), x1 = bin_x(box.hi.x), y0 = bin_y(box.lo.y), y1 = bin_y(box.hi.y);
+          if (x1 < 0 || y1 < 0 || x0 >= nx_ || y0 >= ny_) continue;
+          segments_.push_back({a, b, e});
+          for (int y = std::max(y0, 0); y <= std::min(y1, ny_ - 1); ++y)
+            for (int x = std::max(x0, 0); x <= std::min(x1, nx_ - 1); ++x)
+              bins_[static_cast<std::size_t>(y) * nx_ + x].push_back(static_cast<int>(segments_.size()) - 1);
+        }
+  }
+
+  // Distance from p to the nearest edge for which `skip(edge)` is false, at most `reach`.
+  template <typename Skip>
+  double nearest(Vec2 p, double reach, Skip&& skip) const {
+    double best = reach;
+    const int x0 = std::max(0, bin_x(p.x - reach)), x1 = std::min(nx_ - 1, bin_x(p.x + reach));
+    const int y0 = std::max(0, bin_y(p.y - reach)), y1 = std::min(ny_ - 1, bin_y(p.y + reach));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        for (int s : bins_[static_cast<std::size_t>(y) * nx_ + x]) {
+          const Seg& g = segments_[s];
+          if (skip(g.edge)) continue;
+          best = std::min(best, segment_distance(p, g.a, g.b));
+        }
+    return best;
+  }
+
+ private:
+  struct Seg {
+    Vec2 a, b;
+    int edge;
+  };
+  int bin_x(double x) const { return static_cast<int>(std::floor((x - lo_.x) / cell_)); }
+  int bin_y(double y) const { return static_cast<int>(std::floor((y - lo_.y) / cell_)); }
+  const Tessellation& t_;
+  double cell_;
+  Vec2 lo_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<Seg> segments_;
+  std::vector<std::vector<int>> bins_;
+};
+
+}  // namespace
+
+SizeFunction FeatureSize::as_size_function() const { return SizeFunction(std::make_shared<FeatureNode>(*this)); }
+
+std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
+                                        double gradient) {
+  const double reach = max_size / fraction;  // features wider than this never bind
+  const EdgeGrid grid(t, std::max(spacing, reach), reach);
+  // A vertex and its periodic partners are one point of the torus.
+  std::vector<int> cls(t.vertices.size());
+  for (std::size_t v = 0; v < cls.size(); ++v) cls[v] = static_cast<int>(v);
+  auto root = [&](int v) {
+    while (cls[v] != v) v = cls[v] = cls[cls[v]];
+    return v;
+  };
+  for (const auto* pairs : {&t.partners_x, &t.partners_y})
+    for (const auto& [a, b] : *pairs) cls[root(a)] = root(b);
+  std::vector<std::vector<int>> incident(t.vertices.size());
+  for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
+    incident[root(t.edges[e].v0)].push_back(e);
+    incident[root(t.edges[e].v1)].push_back(e);
+  }
+  // Cell-side edges are not features of their own on a periodic cell: the grain goes on.
+  auto on_side = [&](int e) {
+    const TessEdge& ed = t.edges[e];
+    return t.periodic && (ed.left < 0 || ed.right < 0);
+  };
+  std::vector<SizeSource> out;
+  auto add = [&](Vec2 p, double lfs) {
+    if (fraction * lfs < max_size) out.push_back({p, fraction * lfs});
+  };
+  for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) {
+    const auto& mine = incident[root(v)];
+    double lfs = grid.nearest(t.vertices[v], reach, [&](int e) {
+      return on_side(e) || std::find(mine.begin(), mine.end(), e) != mine.end();
+    });
+    for (int e : mine)
+      if (!on_side(e)) lfs = std::min(lfs, norm(t.vertices[t.edges[e].v1] - t.vertices[t.edges[e].v0]));
+    add(t.vertices[v], lfs);
+  }
+  for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
+    if (on_side(e)) continue;
+    const TessEdge& ed = t.edges[e];
+    const Vec2 a = t.vertices[ed.v0], b = t.vertices[ed.v1];
+    const int n = static_cast<int>(std::ceil(norm(b - a) / spacing));
+    for (int k = 1; k < n; ++k) {
+      const Vec2 p = a + (static_cast<double>(k) / n) * (b - a);
+      // Edges meeting this one at its ends do not count: near a junction they come
+      // arbitrarily close without making anything thin.
+      const int r0 = root(ed.v0), r1 = root(ed.v1);
+      const double lfs = grid.nearest(p, reach, [&](int f) {
+        if (f == e || on_side(f)) return true;
+        const int o0 = root(t.edges[f].v0), o1 = root(t.edges[f].v1);
+        return o0 == r0 || o0 == r1 || o1 == r0 || o1 == r1;
+      });
+      add(p, lfs);
+    }
+  }
+  if (t.periodic) {
+    // Images of the sources that reach across a side, so the field is periodic.
+    const std::size_t n = out.size();
+    for (std::size_t s = 0; s < n; ++s) {
+      const double r = (max_size - out[s].h) / gradient;
+      for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+          if (i == 0 && j == 0) continue;
+          const Vec2 q = out[s].p + Vec2{i * t.width, j * t.height};
+          const double dx = std::max({-q.x, 0.0, q.x - t.width}), dy = std::max({-q.y, 0.0, q.y - t.height});
+          if (dx * dx + dy * dy < r * r) out.push_back({q, out[s].h});
+        }
+    }
+  }
+  return out;
+}
+
+}  // namespace grainmesh

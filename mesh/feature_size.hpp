@@ -1,0 +1,52 @@
+// The element size a tessellation's own geometry asks for: short edges and thin layers
+// (a binder between grains, a sliver of a grain cut by the cell's side) get at least two
+// elements across, and the size grows away from them no faster than a gradient limit.
+#pragma once
+
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "mesh/size_function.hpp"
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+// A point that wants elements of size h around it.
+struct SizeSource {
+  Vec2 p;
+  double h = 0.0;
+};
+
+// h(x) = min(base, min over sources (s.h + gradient |x - s.p|)): absolute lengths.
+class FeatureSize {
+ public:
+  FeatureSize(std::vector<SizeSource> sources, double base, double gradient);
+
+  double operator()(Vec2 x) const;
+  // The sources that can lower the size somewhere in `box`, with a new base.
+  FeatureSize restricted(const Box& box, double base) const;
+  SizeFunction as_size_function() const;
+  double base() const { return base_; }
+  std::size_t sources() const { return sources_.size(); }
+
+ private:
+  std::vector<SizeSource> sources_;
+  double base_;
+  double gradient_;
+  // Sources binned in a uniform grid of cells `cell_` wide from `lo_`; a source can bind
+  // only within (base - finest) / gradient of itself.
+  Vec2 lo_{};
+  double cell_ = 1.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_, order_;  // bin b holds order_[start_[b] .. start_[b + 1])
+};
+
+// Sources at the tessellation's vertices and along its edges (about every `spacing`):
+// each wants `fraction` x its local feature size, the distance to the nearest edge that
+// does not touch it (and, at a vertex, the length of its shortest edge). Only sources
+// wanting less than `max_size` are kept; periodic cells get the images that reach across
+// their sides.
+std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
+                                        double gradient);
+
+}  // namespace grainmesh
