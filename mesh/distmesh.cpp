@@ -171,6 +171,9 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
   return pts;
 }
 
+// Above this many lattice points at the finest spacing, seeding starts from a quadtree.
+constexpr double kMaxLatticePoints = 20000.0;
+
 // With an absolute size field: the centres of a quadtree's leaves over the bounding box,
 // each leaf split until it is about the size at its centre (or h0), kept where
 // d < geps. Costs in proportion to the points made, however fine the finest size.
@@ -212,7 +215,10 @@ void Engine::seed_points(Rng& rng) {
     fixed.push_back(f);
   }
 
-  std::vector<Vec2> pts = pb_.absolute_size ? graded_points() : lattice(h0_);
+  // A graded start only where a lattice at the finest spacing would be large.
+  const double lattice_points = pb_.bbox.width() * pb_.bbox.height() / (h0_ * h0_);
+  const bool graded = pb_.absolute_size && lattice_points > kMaxLatticePoints;
+  std::vector<Vec2> pts = graded ? graded_points() : lattice(h0_);
   if (pts.empty() && !fixed_boundary())  // a seeded boundary alone still makes a mesh
     throw GeometryError("domain is empty inside its bounding box " + to_text(pb_.bbox.lo) + " - " + to_text(pb_.bbox.hi) +
                         ": no lattice point of spacing h0 = " + to_text(h0_) + " lies inside");
@@ -265,7 +271,7 @@ void Engine::seed_points(Rng& rng) {
     if (pb_.interface) seed_curve(*pb_.interface, true);
   }
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double keep = pb_.absolute_size ? 1.0 : (spacing / s[i]) * (spacing / s[i]);  // graded points are sized
+    const double keep = graded ? 1.0 : (spacing / s[i]) * (spacing / s[i]);  // graded points are sized
     const double u = uniform01(rng);  // one draw per lattice point: the stream never depends on the grid
     if (u >= keep) continue;
     if (fixed_boundary()) {
@@ -459,7 +465,7 @@ void Engine::project_boundary() {
     }
     // Never onto the boundary between two fixed seeds: back inside, a third of the local
     // size from it, along the distance gradient.
-    const double margin = (*size_)(p_[i]) / 3.0;
+    const double margin = 0.5 * (*size_)(p_[i]);
     const bool pulled = d_[i] > -margin;
     for (int step = 0; step < 4 && d_[i] > -margin; ++step) {
       const Vec2 g = numerical_gradient(pb_.domain, p_[i], d_[i], deps_);

@@ -67,6 +67,9 @@ FeatureSize FeatureSize::restricted(const Box& box, double base) const {
 
 namespace {
 
+// cos 60 degrees: edges meeting at less than this angle count as a feature.
+constexpr double kAcute = 0.5;
+
 struct FeatureNode final : SizeFunction::Node {
   explicit FeatureNode(FeatureSize f) : size(std::move(f)) {}
   void eval(std::span<const Vec2> p, std::span<double> out) const override {
@@ -196,7 +199,16 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
       const double lfs = grid.nearest(p, reach, [&](int f) {
         if (f == e || on_side(f)) return true;
         const int o0 = root(t.edges[f].v0), o1 = root(t.edges[f].v1);
-        return o0 == r0 || o0 == r1 || o1 == r0 || o1 == r1;
+        if (o0 != r0 && o0 != r1 && o1 != r0 && o1 != r1) return false;
+        // An edge meeting this one at an acute angle makes a sharp corner, which
+        // wants small elements close to it; wider junctions do not.
+        const int shared = (o0 == r0 || o1 == r0) ? ed.v0 : ed.v1;
+        const Vec2 v = t.vertices[shared];
+        const Vec2 mine = (shared == ed.v0 ? b : a) - v;
+        const TessEdge& o = t.edges[f];
+        Vec2 other = t.vertices[o.v0] == v ? t.vertices[o.v1] - v : t.vertices[o.v0] - v;
+        if (!(t.vertices[o.v0] == v || t.vertices[o.v1] == v)) return true;  // meets an image: leave it
+        return dot(mine, other) < kAcute * norm(mine) * norm(other);
       });
       add(p, lfs);
     }
