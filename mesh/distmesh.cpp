@@ -173,6 +173,8 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
 
 // Above this many lattice points at the finest spacing, seeding starts from a quadtree.
 constexpr double kMaxLatticePoints = 20000.0;
+// Initial points keep this many sizes clear of a seeded boundary.
+constexpr double kClear = 0.4;
 
 // With an absolute size field: the centres of a quadtree's leaves over the bounding box,
 // each leaf split until it is about the size at its centre (or h0), kept where
@@ -276,7 +278,7 @@ void Engine::seed_points(Rng& rng) {
     if (u >= keep) continue;
     if (fixed_boundary()) {
       // Clear of the seeded boundary by half a size, so no sliver forms against it.
-      if (pb_.domain(pts[i]) > -0.5 * s[i] || taken.near(pts[i], 0.5 * s[i])) continue;
+      if (pb_.domain(pts[i]) > -kClear * s[i] || taken.near(pts[i], kClear * s[i])) continue;
     } else if (seed_boundary) {
       if (!clear_of(pb_.domain, i) || (pb_.interface && !clear_of(*pb_.interface, i)) || taken.near(pts[i], 0.5 * s[i]))
         continue;
