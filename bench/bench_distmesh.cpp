@@ -82,13 +82,7 @@ int main(int argc, char** argv) {
     results.push_back(row);
   }
 
-  char host[256] = "unknown";
-  gethostname(host, sizeof host);
-  const Json doc{{"benchmark", "distmesh"},
-                 {"machine", {{"cores", sysconf(_SC_NPROCESSORS_ONLN)}, {"host", host}}},
-                 {"timing", "median of 3 runs of the mesher alone, in a fresh process each"},
-                 {"cases", results}};
-  std::ofstream(source / "bench" / "results.json") << doc.dump(2) << "\n";
-  std::printf("wrote %s\n", (source / "bench" / "results.json").string().c_str());
+  write_results(source / "bench" / "results.json", "distmesh",
+                "median of 3 runs of the mesher alone, in a fresh process each", results);
   return 0;
 }

@@ -87,13 +87,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     results.push_back(labelled);
   }
-  char host[256] = "unknown";
-  gethostname(host, sizeof host);
-  const Json doc{{"benchmark", "tessellate"},
-                 {"machine", {{"cores", sysconf(_SC_NPROCESSORS_ONLN)}, {"host", host}}},
-                 {"timing", "median of 3 runs of tessellate() alone, in a fresh process each"},
-                 {"cases", results}};
-  std::ofstream(source / "bench" / "tessellate_results.json") << doc.dump(2) << "\n";
-  std::printf("wrote %s\n", (source / "bench" / "tessellate_results.json").string().c_str());
+  write_results(source / "bench" / "tessellate_results.json", "tessellate",
+                "median of 3 runs of tessellate() alone, in a fresh process each", results);
   return all_ok ? 0 : 1;
 }

@@ -8,6 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -63,6 +66,19 @@ Json median_in_children(int runs, F&& measure) {
   row["peak_memory_mib"] = peak;
   row["runs"] = runs;
   return row;
+}
+
+// Writes `file` with the benchmark's name, this machine, how it was timed, and the cases.
+inline void write_results(const std::filesystem::path& file, const std::string& benchmark, const std::string& timing,
+                          const Json& cases) {
+  char host[256] = "unknown";
+  gethostname(host, sizeof host);
+  const Json doc{{"benchmark", benchmark},
+                 {"machine", {{"cores", sysconf(_SC_NPROCESSORS_ONLN)}, {"host", host}}},
+                 {"timing", timing},
+                 {"cases", cases}};
+  std::ofstream(file) << doc.dump(2) << "\n";
+  std::printf("wrote %s\n", file.string().c_str());
 }
 
 }  // namespace grainmesh

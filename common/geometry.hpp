@@ -34,6 +34,14 @@ inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
+// Squared distance from p to the segment ab (a point when a == b).
+inline double segment_distance2(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a, ap = p - a;
+  const double l2 = norm2(ab);
+  const double t = l2 > 0.0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
+  return norm2(ap - t * ab);
+}
+
 // Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise.
 // Floating point; use orient2d() where the sign must be right.
 inline double signed_area2(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }

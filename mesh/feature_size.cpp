@@ -35,8 +35,8 @@ FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gr
   for (std::size_t k = 0; k < sources_.size(); ++k) order_[fill[bin[k]]++] = static_cast<int>(k);
 }
 
-double FeatureSize::operator()(Vec2 x) const {
-  double h = base_;
+double FeatureSize::at(Vec2 x, double cap) const {
+  double h = std::min(cap, base_);
   if (nx_ == 0) {
     for (const SizeSource& s : sources_) h = std::min(h, s.h + gradient_ * norm(x - s.p));
     return h;
@@ -53,41 +53,23 @@ double FeatureSize::operator()(Vec2 x) const {
   return h;
 }
 
-FeatureSize FeatureSize::restricted(const Box& box, double base) const {
-  std::vector<SizeSource> kept;
-  for (const SizeSource& s : sources_) {
-    if (s.h >= base) continue;
-    const double reach = (base - s.h) / gradient_;  // beyond this the source cannot bind
-    const double dx = std::max({box.lo.x - s.p.x, 0.0, s.p.x - box.hi.x});
-    const double dy = std::max({box.lo.y - s.p.y, 0.0, s.p.y - box.hi.y});
-    if (dx * dx + dy * dy < reach * reach) kept.push_back(s);
-  }
-  return FeatureSize(std::move(kept), base, gradient_);
-}
-
 namespace {
 
 // cos 60 degrees: edges meeting at less than this angle count as a feature.
 constexpr double kAcute = 0.5;
 
-struct FeatureNode final : SizeFunction::Node {
-  explicit FeatureNode(FeatureSize f) : size(std::move(f)) {}
+struct CappedNode final : SizeFunction::Node {
+  CappedNode(std::shared_ptr<const FeatureSize> s, double c) : size(std::move(s)), cap(c) {}
   void eval(std::span<const Vec2> p, std::span<double> out) const override {
-    for (std::size_t i = 0; i < p.size(); ++i) out[i] = size(p[i]);
+    for (std::size_t i = 0; i < p.size(); ++i) out[i] = size->at(p[i], cap);
   }
   double constant_value() const override {
-    return size.sources() == 0 ? size.base() : std::numeric_limits<double>::quiet_NaN();
+    return size->sources() == 0 ? std::min(cap, size->base()) : std::numeric_limits<double>::quiet_NaN();
   }
   std::string describe() const override { return "feature size"; }
-  FeatureSize size;
+  std::shared_ptr<const FeatureSize> size;
+  double cap;
 };
-
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double l2 = norm2(d);
-  const double s = l2 > 0.0 ? std::clamp(dot(p - a, d) / l2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + s * d));
-}
 
 // Edges (with their periodic images) in a uniform grid, for "nearest edge within R".
 class EdgeGrid {
@@ -126,7 +108,7 @@ class EdgeGrid {
         for (int s : bins_[static_cast<std::size_t>(y) * nx_ + x]) {
           const Seg& g = segments_[s];
           if (skip(g.edge)) continue;
-          best = std::min(best, segment_distance(p, g.a, g.b));
+          best = std::min(best, std::sqrt(segment_distance2(p, g.a, g.b)));
         }
     return best;
   }
@@ -148,7 +130,9 @@ class EdgeGrid {
 
 }  // namespace
 
-SizeFunction FeatureSize::as_size_function() const { return SizeFunction(std::make_shared<FeatureNode>(*this)); }
+SizeFunction capped_size(std::shared_ptr<const FeatureSize> size, double cap) {
+  return SizeFunction(std::make_shared<CappedNode>(std::move(size), cap));
+}
 
 std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
                                         double gradient) {

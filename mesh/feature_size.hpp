@@ -3,6 +3,7 @@
 // elements across, and the size grows away from them no faster than a gradient limit.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "common/geometry.hpp"
@@ -22,10 +23,9 @@ class FeatureSize {
  public:
   FeatureSize(std::vector<SizeSource> sources, double base, double gradient);
 
-  double operator()(Vec2 x) const;
-  // The sources that can lower the size somewhere in `box`, with a new base.
-  FeatureSize restricted(const Box& box, double base) const;
-  SizeFunction as_size_function() const;
+  double operator()(Vec2 x) const { return at(x, base_); }
+  // min(cap, h(x)), for a part (a phase) whose own size is below the base.
+  double at(Vec2 x, double cap) const;
   double base() const { return base_; }
   std::size_t sources() const { return sources_.size(); }
 
@@ -40,6 +40,9 @@ class FeatureSize {
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, order_;  // bin b holds order_[start_[b] .. start_[b + 1])
 };
+
+// min(cap, size), as the size function the DistMesh engine takes; shares `size`.
+SizeFunction capped_size(std::shared_ptr<const FeatureSize> size, double cap);
 
 // Sources at the tessellation's vertices and along its edges (about every `spacing`):
 // each wants `fraction` x its local feature size, the distance to the nearest edge that

@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <unordered_map>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/point_key.hpp"
 #include "mesh/polygon.hpp"
 
 namespace grainmesh {
@@ -26,20 +26,12 @@ namespace {
 
 std::int64_t edge_key(int a, int b) { return static_cast<std::int64_t>(std::min(a, b)) << 32 | std::max(a, b); }
 
-// Exact coordinates as a map key: shared seeds are recognised by their bits.
-std::pair<std::uint64_t, std::uint64_t> bits(Vec2 p) {
-  std::pair<std::uint64_t, std::uint64_t> k;
-  const double x = p.x + 0.0, y = p.y + 0.0;
-  std::memcpy(&k.first, &x, sizeof x);
-  std::memcpy(&k.second, &y, sizeof y);
-  return k;
+// Edge id by its two end vertices, either order.
+std::unordered_map<std::int64_t, int> edge_index(const Tessellation& t) {
+  std::unordered_map<std::int64_t, int> index;
+  for (std::size_t e = 0; e < t.edges.size(); ++e) index[edge_key(t.edges[e].v0, t.edges[e].v1)] = static_cast<int>(e);
+  return index;
 }
-
-struct BitsHash {
-  std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
-    return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
-  }
-};
 
 // A stream per region that does not depend on which thread meshes it (SplitMix64).
 std::uint64_t region_stream(std::uint64_t seed, std::uint64_t r) {
@@ -49,15 +41,7 @@ std::uint64_t region_stream(std::uint64_t seed, std::uint64_t r) {
   return z ^ (z >> 31);
 }
 
-// The side of the cell an edge runs along: 0 left, 1 right, 2 bottom, 3 top, -1 none.
-int edge_side(const Tessellation& t, const TessEdge& e) {
-  const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
-  if (a.x == 0.0 && b.x == 0.0) return 0;
-  if (a.x == t.width && b.x == t.width) return 1;
-  if (a.y == 0.0 && b.y == 0.0) return 2;
-  if (a.y == t.height && b.y == t.height) return 3;
-  return -1;
-}
+int edge_side(const Tessellation& t, const TessEdge& e) { return cell_side(t, t.vertices[e.v0], t.vertices[e.v1]); }
 
 struct RegionResult {
   std::vector<Vec2> interior;                  // new points, in the engine's order
@@ -67,9 +51,10 @@ struct RegionResult {
 };
 
 // Points strictly between a and b, evenly in the integral of 1/h.
-std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& h) {
+std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& size, double cap) {
+  const auto h = [&](Vec2 x) { return size.at(x, cap); };
   const double len = norm(b - a);
-  double finest = h.base();
+  double finest = cap;
   constexpr int kProbe = 32;
   for (int k = 0; k <= kProbe; ++k) finest = std::min(finest, h(a + (static_cast<double>(k) / kProbe) * (b - a)));
   const int m = std::clamp(static_cast<int>(std::ceil(4.0 * len / finest)), 16, 1 << 20);
@@ -114,8 +99,7 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
       if (r >= 0) s = std::min(s, region_size(o, t.regions[r].phase));
     h[e] = s;
   }
-  std::unordered_map<std::int64_t, int> index;
-  for (std::size_t e = 0; e < ne; ++e) index[edge_key(t.edges[e].v0, t.edges[e].v1)] = static_cast<int>(e);
+  const auto index = edge_index(t);
   // Periodic sides: right/top edge -> its partner on the left/bottom, sharing one size.
   std::vector<int> partner(ne, -1);
   if (t.periodic) {
@@ -137,10 +121,7 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] >= 0) continue;
     const Vec2 a = t.vertices[t.edges[e].v0], b = t.vertices[t.edges[e].v1];
-    Box box;
-    box.extend(a);
-    box.extend(b);
-    seeds[e] = seed_segment(a, b, size.restricted(box, h[e]));
+    seeds[e] = seed_segment(a, b, size, h[e]);
   }
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] < 0) continue;
@@ -159,8 +140,8 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
 GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   if (!(o.size > 0.0) || !std::isfinite(o.size)) throw ConfigError("mesh: the element size must be positive");
   const auto start = std::chrono::steady_clock::now();
-  const FeatureSize size = tessellation_size(t, o);
-  const auto seeds = seed_edges(t, o, size);
+  const auto size = std::make_shared<const FeatureSize>(tessellation_size(t, o));
+  const auto seeds = seed_edges(t, o, *size);
   GrainMesh out;
   // Global nodes: tessellation vertices, then edge seeds, then each region's interior.
   std::vector<Vec2>& pts = out.mesh.points;
@@ -170,8 +151,7 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     first_seed[e] = static_cast<int>(pts.size());
     pts.insert(pts.end(), seeds[e].begin(), seeds[e].end());
   }
-  std::unordered_map<std::int64_t, int> index;
-  for (std::size_t e = 0; e < t.edges.size(); ++e) index[edge_key(t.edges[e].v0, t.edges[e].v1)] = static_cast<int>(e);
+  const auto index = edge_index(t);
 
   const int nr = static_cast<int>(t.regions.size());
   std::vector<RegionResult> results(nr);
@@ -206,22 +186,22 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
       rings.push_back(std::move(loop));
     }
     const DistanceFunction domain = polygon(rings);
-    const FeatureSize field = size.restricted(domain.bounds(), h);
     // The finest size is on the boundary, where the features are; a margin for the
     // stretches between seeds.
     double h0 = h;
-    for (const Vec2 p : fixed) h0 = std::min(h0, 0.9 * field(p));
-    const DistMeshProblem pb{.domain = domain, .size = field.as_size_function(), .h0 = h0, .bbox = domain.bounds(),
+    for (const Vec2 p : fixed) h0 = std::min(h0, 0.9 * size->at(p, h));
+    const DistMeshProblem pb{.domain = domain, .size = capped_size(size, h), .h0 = h0, .bbox = domain.bounds(),
                              .fixed = std::move(fixed), .interface = {}, .constraints = std::move(constraints),
                              .absolute_size = true};
-    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, BitsHash> fixed_id;
-    for (std::size_t k = 0; k < pb.fixed.size(); ++k) fixed_id.emplace(bits(pb.fixed[k]), ids[k]);
+    // Fixed points come back with their bits: that is how the engine's output finds them.
+    PointMap<int> fixed_id;
+    for (std::size_t k = 0; k < pb.fixed.size(); ++k) fixed_id.emplace(point_key(pb.fixed[k]), ids[k]);
     Rng rng(region_stream(o.seed, static_cast<std::uint64_t>(r)));
     const DistMeshResult res = distmesh(pb, o.distmesh, rng);
     RegionResult& rr = results[r];
     std::vector<int> local(res.mesh.points.size());
     for (std::size_t i = 0; i < res.mesh.points.size(); ++i) {
-      const auto it = fixed_id.find(bits(res.mesh.points[i]));
+      const auto it = fixed_id.find(point_key(res.mesh.points[i]));
       if (it != fixed_id.end()) {
         local[i] = it->second;
       } else {
@@ -279,8 +259,7 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
     if (e.right >= 0) continue;
     ++c.boundary_edges;
     const Vec2 a = mesh.points[e.a], b = mesh.points[e.b];
-    const bool on_side = (a.x == 0 && b.x == 0) || (a.x == W && b.x == W) || (a.y == 0 && b.y == 0) || (a.y == H && b.y == H);
-    if (!on_side)
+    if (cell_side(t, a, b) < 0)
       throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one triangle but lies inside the cell");
   }
   // Each triangle inside the region of its grain: its centroid strictly inside one of the

@@ -125,12 +125,6 @@ namespace {
 // Polygons with more edges than this get a grid.
 constexpr std::size_t kGridEdges = 64;
 
-double edge_distance2(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a, ap = p - a;
-  const double t = std::clamp(dot(ap, ab) / norm2(ab), 0.0, 1.0);
-  return norm2(ap - t * ab);
-}
-
 }  // namespace
 
 PolygonDistance::PolygonDistance(const PolygonRings& rings) {
@@ -172,7 +166,7 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
 double PolygonDistance::unsigned_distance(Vec2 p) const {
   double best = std::numeric_limits<double>::infinity();
   if (nx_ == 0) {
-    for (std::size_t e = 0; e < a_.size(); ++e) best = std::min(best, edge_distance2(p, a_[e], b_[e]));
+    for (std::size_t e = 0; e < a_.size(); ++e) best = std::min(best, segment_distance2(p, a_[e], b_[e]));
     return std::sqrt(best);
   }
   // Square rings of cells around p's (clamped) cell, until the ring is farther than the
@@ -194,7 +188,7 @@ double PolygonDistance::unsigned_distance(Vec2 p) const {
         if (x >= 0 && x < nx_) {
           const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
           for (int k = start_[c]; k < start_[c + 1]; ++k)
-            best = std::min(best, edge_distance2(p, a_[edges_[k]], b_[edges_[k]]));
+            best = std::min(best, segment_distance2(p, a_[edges_[k]], b_[edges_[k]]));
         }
         if (!edge_row && r == 0) break;
       }

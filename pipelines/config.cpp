@@ -89,6 +89,18 @@ void Config::check_keys(const std::vector<std::string>& known) const {
     }
 }
 
+std::vector<std::string> Config::names_in(const std::string& section) const {
+  const std::string prefix = section + ".";
+  std::vector<std::string> names;
+  for (const auto& [key, value] : entries_) {
+    const auto dot = key.rfind('.');
+    if (key.rfind(prefix, 0) != 0 || dot <= prefix.size()) continue;
+    std::string name = key.substr(prefix.size(), dot - prefix.size());
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+  }
+  return names;
+}
+
 bool Config::has(const std::string& key) const {
   return std::any_of(entries_.begin(), entries_.end(), [&](const auto& kv) { return kv.first == key; });
 }

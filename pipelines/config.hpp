@@ -37,6 +37,10 @@ class Config {
   std::uint64_t unsigned_integer(const std::string& key, std::uint64_t fallback) const;
   bool flag(const std::string& key, bool fallback) const;
 
+  // The NAMEs of keys "section.NAME.key" (a [section.NAME] in the file), in the order
+  // they first appear.
+  std::vector<std::string> names_in(const std::string& section) const;
+
   const std::string& source() const { return source_; }
   // "source: key: message", the form of every config error.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,16 @@ E naming_source(const E& e, const Config& c) {
   return E(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
 }
 
-// A command of the form `grainmesh NAME CONFIG -o OUT [--set KEY=VALUE ...]`.
-int config_command(const std::string& name, const std::vector<std::string>& args, Runner run) {
-  po::options_description desc("grainmesh " + name + " CONFIG -o OUT [--set KEY=VALUE ...]");
-  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(), "config file (INI)")(
+// Parses `grainmesh NAME INPUT -o OUT [--set KEY=VALUE ...]` and any options of the
+// command's own in `desc`. Empty when --help was asked for (and answered).
+std::optional<po::variables_map> parse_command(const std::string& name, po::options_description desc,
+                                               const std::string& input, const std::string& input_help,
+                                               const std::vector<std::string>& args) {
+  desc.add_options()("help,h", "show this help")(input.c_str(), po::value<std::string>(), input_help.c_str())(
       "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "set", po::value<std::vector<std::string>>()->composing(), "override a config key, e.g. --set section.key=value");
+      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set section.key=value");
   po::positional_options_description pos;
-  pos.add("config", 1);
+  pos.add(input.c_str(), 1);
   po::variables_map vm;
   try {
     po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
@@ -59,15 +62,26 @@ int config_command(const std::string& name, const std::vector<std::string>& args
     throw ConfigError(name + ": " + e.what());
   }
   if (vm.count("help")) {
-    std::cout << desc << "\nConfig keys: see README.md, section 'grainmesh " << name << "'.\n";
-    return kOk;
+    std::cout << desc << "\nKeys: see README.md, section 'grainmesh " << name << "'.\n";
+    return std::nullopt;
   }
-  if (!vm.count("config")) throw ConfigError(name + ": missing CONFIG file argument");
+  if (!vm.count(input)) throw ConfigError(name + ": missing the " + input + " file argument");
   if (!vm.count("output")) throw ConfigError(name + ": missing -o OUT (the output directory)");
-  const auto overrides = vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
-  const Config config = Config::from_file(vm["config"].as<std::string>(), overrides);
+  return vm;
+}
+
+std::vector<std::string> overrides(const po::variables_map& vm) {
+  return vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
+}
+
+// A command of the form `grainmesh NAME CONFIG -o OUT [--set KEY=VALUE ...]`.
+int config_command(const std::string& name, const std::vector<std::string>& args, Runner run) {
+  const auto vm = parse_command(name, po::options_description("grainmesh " + name + " CONFIG -o OUT [--set KEY=VALUE ...]"),
+                                "config", "config file (INI)", args);
+  if (!vm) return kOk;
+  const Config config = Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm));
   try {
-    run(config, vm["output"].as<std::string>());
+    run(config, (*vm)["output"].as<std::string>());
   } catch (const ConfigError& e) {
     throw naming_source(e, config);
   } catch (const GeometryError& e) {
@@ -79,29 +93,12 @@ int config_command(const std::string& name, const std::vector<std::string>& args
 // `grainmesh mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]`.
 int mesh_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]");
-  desc.add_options()("help,h", "show this help")("tessellation", po::value<std::string>(),
-                                                 "tessellation.json written by grainmesh tessellate")(
-      "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "config", po::value<std::string>(), "mesh config file (INI) with mesh.* and phase.NAME.size keys")(
-      "set", po::value<std::vector<std::string>>()->composing(), "set a key, e.g. --set mesh.size=0.01");
-  po::positional_options_description pos;
-  pos.add("tessellation", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
-  } catch (const po::error& e) {
-    throw ConfigError(std::string("mesh: ") + e.what());
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\nKeys: see README.md, section 'grainmesh mesh'.\n";
-    return kOk;
-  }
-  if (!vm.count("tessellation")) throw ConfigError("mesh: missing TESSELLATION.json argument");
-  if (!vm.count("output")) throw ConfigError("mesh: missing -o OUT (the output directory)");
-  const auto overrides = vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
-  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides)
-                                           : Config::from_text("", "--set", overrides);
-  run_mesh_command(vm["tessellation"].as<std::string>(), config, vm["output"].as<std::string>());
+  desc.add_options()("config", po::value<std::string>(), "mesh config file (INI) with mesh.* and phase.NAME.size keys");
+  const auto vm = parse_command("mesh", desc, "tessellation", "tessellation.json written by grainmesh tessellate", args);
+  if (!vm) return kOk;
+  const Config config = vm->count("config") ? Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm))
+                                            : Config::from_text("", "--set", overrides(*vm));
+  run_mesh_command((*vm)["tessellation"].as<std::string>(), config, (*vm)["output"].as<std::string>());
   return kOk;
 }
 

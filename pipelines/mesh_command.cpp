@@ -47,14 +47,13 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
     o.size = std::sqrt(4.0 * grain_area / (n * std::sqrt(3.0)));
   }
   o.phase_size.assign(t.phases.size(), 0.0);
-  for (const auto& [key, value] : c.entries()) {
-    if (key.rfind("phase.", 0) != 0) continue;
-    const std::string name = key.substr(6, key.rfind('.') - 6);
+  for (const std::string& name : c.names_in("phase")) {
+    const std::string key = "phase." + name + ".size";
     std::size_t p = 0;
     while (p < t.phases.size() && t.phases[p].name != name) ++p;
     if (p == t.phases.size()) c.fail(key, "the tessellation has no phase named '" + name + "'");
     o.phase_size[p] = c.number(key);
-    if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + value);
+    if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + c.text(key));
   }
   const long long threads = c.integer("mesh.threads", 0);
   if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");

@@ -36,12 +36,7 @@ double positive(const Config& c, const std::string& key) {
 }
 
 std::vector<Phase> read_phases(const Config& c) {
-  std::vector<std::string> names;
-  for (const auto& [key, value] : c.entries()) {
-    if (key.rfind("phase.", 0) != 0) continue;
-    const std::string name = key.substr(6, key.rfind('.') - 6);
-    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  }
+  const std::vector<std::string> names = c.names_in("phase");
   if (names.empty()) c.fail("phase.*.fraction", "no phase given: add a section [phase.NAME] with fraction, E and nu");
   std::vector<Phase> phases;
   double sum = 0.0;

@@ -3,10 +3,10 @@
 // periodic partner on the opposite side come out with the same bits.
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <unordered_map>
 
 #include "common/errors.hpp"
+#include "common/point_key.hpp"
 #include "tessellate/steps.hpp"
 
 namespace grainmesh {
@@ -82,28 +82,19 @@ struct Clipper {
   }
 };
 
-struct BitsHash {
-  std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
-    return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
-  }
-};
-
+// Vertices by their exact coordinates: a point reached from two pieces is one vertex.
 class VertexTable {
  public:
   explicit VertexTable(std::vector<Vec2>& v) : vertices_(v) {}
   int id(Vec2 p) {
-    std::pair<std::uint64_t, std::uint64_t> key;
-    const double x = p.x + 0.0, y = p.y + 0.0;  // -0.0 and 0.0 are one point
-    std::memcpy(&key.first, &x, sizeof x);
-    std::memcpy(&key.second, &y, sizeof y);
-    auto [it, fresh] = ids_.try_emplace(key, static_cast<int>(vertices_.size()));
-    if (fresh) vertices_.push_back({x, y});
+    auto [it, fresh] = ids_.try_emplace(point_key(p), static_cast<int>(vertices_.size()));
+    if (fresh) vertices_.push_back({p.x + 0.0, p.y + 0.0});
     return it->second;
   }
 
  private:
   std::vector<Vec2>& vertices_;
-  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, BitsHash> ids_;
+  PointMap<int> ids_;
 };
 
 double ring_area(const std::vector<Vec2>& vs, const std::vector<int>& ring) {
@@ -121,13 +112,11 @@ bool point_in_ring(const std::vector<Vec2>& vs, const std::vector<int>& ring, Ve
   return in;
 }
 
-// The side of the cell a vertex lies on: 0 bottom, 1 right, 2 top, 3 left, -1 none.
-int side_of(Vec2 p, double W, double H, int hint = -1) {
-  const bool s[4] = {p.y == 0.0, p.x == W, p.y == H, p.x == 0.0};
-  if (hint >= 0) return s[hint] ? hint : -1;
-  for (int k = 0; k < 4; ++k)
-    if (s[k]) return k;
-  return -1;
+// Whether a vertex lies on side s of the cell, sides counted counter-clockwise from the
+// bottom: 0 bottom, 1 right, 2 top, 3 left.
+bool on_side(Vec2 p, double W, double H, int s) {
+  const bool on[4] = {p.y == 0.0, p.x == W, p.y == H, p.x == 0.0};
+  return on[s];
 }
 
 // Matrix regions in binder mode: the cell minus the grain pieces, traced as rings.
@@ -145,10 +134,7 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
     const auto& ring = t.regions[r].rings[0];
     for (std::size_t n = 0; n < ring.size(); ++n) {
       const int a = ring[n], b = ring[(n + 1) % ring.size()];
-      bool along = false;
-      for (int s = 0; s < 4 && !along; ++s)
-        along = side_of(t.vertices[a], W, H, s) >= 0 && side_of(t.vertices[b], W, H, s) >= 0;
-      if (along) covered[key(a, b)] = 1;
+      if (cell_side(t, t.vertices[a], t.vertices[b]) >= 0) covered[key(a, b)] = 1;
       else link(b, a);
     }
   }
@@ -156,7 +142,7 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
   for (int s = 0; s < 4; ++s) {
     std::vector<int> on;
     for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v)
-      if (side_of(t.vertices[v], W, H, s) >= 0) on.push_back(v);
+      if (on_side(t.vertices[v], W, H, s)) on.push_back(v);
     std::sort(on.begin(), on.end(), [&](int a, int b) {
       const Vec2 p = t.vertices[a], q = t.vertices[b];
       switch (s) {

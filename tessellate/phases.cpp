@@ -155,15 +155,7 @@ std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t) {
     const double len = norm(dir);
     if (len == 0.0) continue;
     const Vec2 inward = perp(dir) / len;  // left of a counter-clockwise edge
-    const double c = dot(inward, a) + t;
-    std::vector<Vec2> out;
-    for (std::size_t m = 0; m < poly.size(); ++m) {
-      const Vec2 p = poly[m], q = poly[(m + 1) % poly.size()];
-      const double dp = dot(inward, p) - c, dq = dot(inward, q) - c;
-      if (dp >= 0.0) out.push_back(p);
-      if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
-    }
-    poly = std::move(out);
+    poly = clip_half_plane(poly, inward, dot(inward, a) + t);
   }
   if (poly.size() < 3 || !(polygon_area(poly) > 0.0)) return {};
   return poly;

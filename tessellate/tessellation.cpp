@@ -41,25 +41,10 @@ std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std:
 
 // The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
 std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
-  for (int side = 0; side < 4 && !poly.empty(); ++side) {
-    auto value = [&](Vec2 p) {
-      switch (side) {
-        case 0: return p.x;
-        case 1: return W - p.x;
-        case 2: return p.y;
-        default: return H - p.y;
-      }
-    };
-    std::vector<Vec2> out;
-    for (std::size_t n = 0; n < poly.size(); ++n) {
-      const Vec2 p = poly[n], q = poly[(n + 1) % poly.size()];
-      const double dp = value(p), dq = value(q);
-      if (dp >= 0.0) out.push_back(p);
-      if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
-    }
-    poly = std::move(out);
-  }
-  return poly;
+  poly = clip_half_plane(poly, {1.0, 0.0}, 0.0);
+  poly = clip_half_plane(poly, {-1.0, 0.0}, -W);
+  poly = clip_half_plane(poly, {0.0, 1.0}, 0.0);
+  return clip_half_plane(poly, {0.0, -1.0}, -H);
 }
 
 // The polygon of a cell as it counts for areas and centroids: clipped when not periodic.
@@ -97,21 +82,15 @@ std::vector<std::vector<int>> cell_neighbours(const TorusGraph& g, const std::ve
   return out;
 }
 
-// Smallest interior angle of a region at any corner: outer ring as given, holes (stored
-// counter-clockwise) seen from the region, i.e. 360 degrees minus the hole's angle.
+// Smallest interior angle of a region at any corner. A hole, stored counter-clockwise,
+// is walked the other way so the region is on its left as for the outer ring.
 double region_sharpest(const Tessellation& t, const Region& r) {
   double best = 2.0 * std::numbers::pi;
   for (std::size_t q = 0; q < r.rings.size(); ++q) {
     std::vector<Vec2> pts;
     for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
     if (q > 0) std::reverse(pts.begin(), pts.end());
-    const std::size_t n = pts.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec2 a = pts[(k + n - 1) % n] - pts[k], b = pts[(k + 1) % n] - pts[k];
-      double ang = q == 0 ? std::atan2(cross(b, a), dot(b, a)) : std::atan2(cross(a, b), dot(a, b));
-      if (ang < 0.0) ang += 2.0 * std::numbers::pi;
-      best = std::min(best, ang);
-    }
+    best = std::min(best, sharpest_corner(pts));
   }
   return best;
 }
@@ -200,6 +179,14 @@ std::vector<Segment> graph_segments(const TorusGraph& g) {
 }
 
 }  // namespace
+
+int cell_side(const Tessellation& t, Vec2 a, Vec2 b) {
+  if (a.x == 0.0 && b.x == 0.0) return 0;
+  if (a.x == t.width && b.x == t.width) return 1;
+  if (a.y == 0.0 && b.y == 0.0) return 2;
+  if (a.y == t.height && b.y == t.height) return 3;
+  return -1;
+}
 
 double region_area(const Tessellation& t, const Region& r) {
   double a = 0.0;
@@ -438,11 +425,8 @@ void validate(const Tessellation& t) {
     throw GeometryError("tessellation: region areas sum to " + std::to_string(total) + ", not W x H");
   for (const TessEdge& e : t.edges) {
     if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
-    if (e.left < 0 || e.right < 0) {
-      const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
-      const bool on_side = (a.x == 0 && b.x == 0) || (a.x == W && b.x == W) || (a.y == 0 && b.y == 0) || (a.y == H && b.y == H);
-      if (!on_side) throw GeometryError("tessellation: an edge with one side lies inside the cell");
-    }
+    if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) < 0)
+      throw GeometryError("tessellation: an edge with one side lies inside the cell");
   }
   const double tol = 1e-12 * std::max(W, H);
   for (const auto& [l, r] : t.partners_x)

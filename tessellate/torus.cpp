@@ -56,6 +56,17 @@ Vec2 polygon_centroid(const std::vector<Vec2>& ring) {
   return o + m / (3.0 * a2);
 }
 
+std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, Vec2 normal, double offset) {
+  std::vector<Vec2> out;
+  for (std::size_t n = 0; n < poly.size(); ++n) {
+    const Vec2 p = poly[n], q = poly[(n + 1) % poly.size()];
+    const double dp = dot(normal, p) - offset, dq = dot(normal, q) - offset;
+    if (dp >= 0.0) out.push_back(p);
+    if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
+  }
+  return out;
+}
+
 namespace {
 
 int orient(Vec2 a, Vec2 b, Vec2 c) {

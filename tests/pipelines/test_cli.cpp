@@ -9,15 +9,11 @@
 #include "helpers.hpp"
 
 using namespace grainmesh;
+using test::entries;
 using test::run_grainmesh;
 namespace fs = std::filesystem;
 
 namespace {
-
-// Nothing left in `dir` but what was there: no output, no staging directory.
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
-}
 
 void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
 

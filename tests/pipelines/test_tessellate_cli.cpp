@@ -10,16 +10,9 @@
 #include "tessellate/tessellation_json.hpp"
 
 using namespace grainmesh;
+using test::entries;
 using test::run_grainmesh;
 namespace fs = std::filesystem;
-
-namespace {
-
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
-}
-
-}  // namespace
 
 TEST_CASE("every grains example tessellates and meets its phase targets", "[cli][tessellate]") {
   std::size_t files = 0;
