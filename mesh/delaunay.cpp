@@ -3,6 +3,7 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <string>
@@ -17,7 +18,8 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 using CVb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using CFb = CGAL::Constrained_triangulation_face_base_2<K>;
+using CFbInfo = CGAL::Triangulation_face_base_with_info_2<int, K>;  // nesting depth, -1 = not yet
+using CFb = CGAL::Constrained_triangulation_face_base_2<K, CFbInfo>;
 using CTds = CGAL::Triangulation_data_structure_2<CVb, CFb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CTds, CGAL::Exact_predicates_tag>;
 
@@ -69,7 +71,28 @@ std::vector<std::array<int, 3>> constrained_delaunay_triangulation(std::span<con
         if (handle[i] == Cdt::Vertex_handle()) handle[i] = cdt.insert(input[i].first);
       if (handle[a] != handle[b]) cdt.insert_constraint(handle[a], handle[b]);
     }
-    return faces(cdt);
+    // Nesting depth by a breadth-first walk from the outside: crossing a constraint
+    // goes one deeper.
+    for (auto f : cdt.all_face_handles()) f->info() = -1;
+    std::vector<Cdt::Face_handle> level{cdt.infinite_face()}, deeper;
+    for (int d = 0; !level.empty(); ++d) {
+      for (std::size_t k = 0; k < level.size(); ++k) {  // level grows while walked
+        const Cdt::Face_handle f = level[k];
+        if (f->info() >= 0) continue;
+        f->info() = d;
+        for (int i = 0; i < 3; ++i) {
+          const Cdt::Face_handle n = f->neighbor(i);
+          if (n->info() < 0) (cdt.is_constrained(Cdt::Edge(f, i)) ? deeper : level).push_back(n);
+        }
+      }
+      level.swap(deeper);
+      deeper.clear();
+    }
+    std::vector<std::array<int, 3>> triangles;
+    triangles.reserve(cdt.number_of_faces());
+    for (auto f : cdt.finite_face_handles())
+      if (f->info() % 2 == 1) triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    return triangles;
   } catch (const CGAL::Failure_exception& e) {
     throw GeometryError(std::string("delaunay: CGAL failed: ") + e.what());
   }

@@ -18,8 +18,10 @@ std::vector<std::array<int, 3>> delaunay_triangulation(std::span<const Vec2> poi
 
 // The constrained Delaunay triangulation of `points` in which every segment of
 // `constraints` (pairs of indices into `points`) is a union of edges (a segment through
-// another point is split there). All finite triangles, counter-clockwise; the caller
-// keeps those inside its domain. Deterministic. Throws GeometryError as above.
+// another point is split there). When the constraints are closed rings bounding a
+// domain, the triangles inside it: those separated from the outside by an odd number of
+// constraints (so holes stay empty). Counter-clockwise, deterministic. Throws
+// GeometryError as above.
 std::vector<std::array<int, 3>> constrained_delaunay_triangulation(std::span<const Vec2> points,
                                                                    std::span<const std::array<int, 2>> constraints);
 

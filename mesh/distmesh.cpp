@@ -112,7 +112,11 @@ class Engine {
   void project_boundary();
   double max_move_since_triangulation() const;
   std::size_t repair_interface();
-  void optimize_stars();
+  void optimize_stars(std::size_t first = 0);
+  std::size_t insert_steiner_points();
+  std::size_t remove_crowding_points();
+  std::size_t try_steiner_points();
+  std::pair<double, double> shortfall(double target) const;
   TriMesh compact() const;
 
   const DistMeshProblem& pb_;
@@ -243,8 +247,13 @@ void Engine::seed_points(Rng& rng) {
   stats_.lattice_spacing = spacing;
   if (spacing < h0_) pts = lattice(spacing);
 
-  std::vector<double> s(pts.size());
-  size_->eval(pts, s);
+  std::vector<double> s;
+  if (pb_.absolute_size && spacing == h0_ && !pts.empty()) {
+    s = h;  // the same field, already evaluated
+  } else {
+    s.resize(pts.size());
+    size_->eval(pts, s);
+  }
   p_ = fixed;
   nfix_ = fixed.size();
   // Graded points ask "near" within half their own size, so the grid's cells must be as
@@ -295,10 +304,13 @@ void Engine::seed_points(Rng& rng) {
 // are the unique edges, and an edge of one triangle only lies on the mesh boundary.
 void Engine::triangulate() {
   tris_.clear();
-  const auto all = fixed_boundary() ? constrained_delaunay_triangulation(p_, pb_.constraints) : delaunay_triangulation(p_);
-  for (const auto& t : all) {
-    const Vec2 c = (p_[t[0]] + p_[t[1]] + p_[t[2]]) / 3.0;
-    if (pb_.domain(c) < -geps_) tris_.push_back(t);
+  if (fixed_boundary()) {
+    tris_ = constrained_delaunay_triangulation(p_, pb_.constraints);  // the seeded rings say what is inside
+  } else {
+    for (const auto& t : delaunay_triangulation(p_)) {
+      const Vec2 c = (p_[t[0]] + p_[t[1]] + p_[t[2]]) / 3.0;
+      if (pb_.domain(c) < -geps_) tris_.push_back(t);
+    }
   }
   std::vector<std::uint64_t> keys;
   keys.reserve(3 * tris_.size());
@@ -324,13 +336,19 @@ void Engine::triangulate() {
   // the next triangulation no point moves more than ttol h0, which changes a size by a
   // fraction ttol x (size gradient) of itself, about 1 %, and the size field (many
   // curved fibres, user expressions) is the costliest part of an iteration.
-  mid_.resize(bars_.size());
-  for (std::size_t e = 0; e < bars_.size(); ++e) mid_[e] = 0.5 * (p_[bars_[e][0]] + p_[bars_[e][1]]);
+  // With absolute sizes (the mesh stage's graded fields, many bars per point), a bar
+  // takes the mean of its ends' sizes, and the fixed points' sizes are kept.
   bar_size_.resize(bars_.size());
-  size_->eval(mid_, bar_size_);
   if (pb_.absolute_size) {
+    const std::size_t known = point_size_.size() >= nfix_ ? nfix_ : 0;
     point_size_.resize(p_.size());
-    size_->eval(p_, point_size_);
+    size_->eval(std::span<const Vec2>(p_).subspan(known), std::span<double>(point_size_).subspan(known));
+    for (std::size_t e = 0; e < bars_.size(); ++e)
+      bar_size_[e] = 0.5 * (point_size_[bars_[e][0]] + point_size_[bars_[e][1]]);
+  } else {
+    mid_.resize(bars_.size());
+    for (std::size_t e = 0; e < bars_.size(); ++e) mid_[e] = 0.5 * (p_[bars_[e][0]] + p_[bars_[e][1]]);
+    size_->eval(mid_, bar_size_);
   }
   pold_ = p_;
   ++stats_.retriangulations;
@@ -446,6 +464,10 @@ void Engine::project_boundary() {
     dpos_ = p_;
   }
   for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (i < nfix_ && std::isfinite(dval_[i])) {  // fixed points never move
+      d_[i] = dval_[i];
+      continue;
+    }
     // d is 1-Lipschitz: a point that was deep inside and moved little since is still
     // inside, and its bound is enough for everything below.
     const double deep = geps_ + (fixed_boundary() ? (i < point_size_.size() ? point_size_[i] : h0_) / 3.0 : 0.0);
@@ -467,7 +489,7 @@ void Engine::project_boundary() {
     }
     // Never onto the boundary between two fixed seeds: back inside, a third of the local
     // size from it, along the distance gradient.
-    const double margin = 0.5 * (*size_)(p_[i]);
+    const double margin = 0.5 * (i < point_size_.size() ? point_size_[i] : (*size_)(p_[i]));
     const bool pulled = d_[i] > -margin;
     for (int step = 0; step < 4 && d_[i] > -margin; ++step) {
       const Vec2 g = numerical_gradient(pb_.domain, p_[i], d_[i], deps_);
@@ -532,12 +554,13 @@ std::size_t Engine::repair_interface() {
 // radius_ratio(), or -1 for an inverted or flat triangle.
 double signed_quality(Vec2 a, Vec2 b, Vec2 c) { return signed_area2(a, b, c) <= 0.0 ? -1.0 : radius_ratio(a, b, c); }
 
-// Local optimisation of the worst regions: a free point with a triangle of quality
-// below optimize_below moves along the gradient of the summed quality of its triangles,
-// by a backtracking line search that never lowers their least quality nor inverts one.
+// Local optimisation of the worst regions (of points `first` on): a free point with a
+// triangle of quality below optimize_below moves along the gradient of the sum of -1/q
+// over its triangles (which weighs the worst most), by a backtracking line search that
+// never lowers their least quality nor inverts one.
 // Points on the boundary or the interface move along it. The connectivity is kept, so
 // the mesh stays valid.
-void Engine::optimize_stars() {
+void Engine::optimize_stars(std::size_t first) {
   // Vertex -> triangles, compressed.
   std::vector<int> start(p_.size() + 1, 0), star;
   for (const auto& t : tris_)
@@ -558,7 +581,7 @@ void Engine::optimize_stars() {
       const auto& t = tris_[star[k]];
       auto at = [&](int v) { return v == static_cast<int>(i) ? x : p_[v]; };
       const double q = signed_quality(at(t[0]), at(t[1]), at(t[2]));
-      sum += q;
+      sum += q > 0.0 ? -1.0 / q : -1e30;
       qmin = std::min(qmin, q);
     }
     return sum;
@@ -566,7 +589,7 @@ void Engine::optimize_stars() {
 
   for (int sweep = 0; sweep < opt_.optimize_sweeps; ++sweep) {
     int moved = 0;
-    for (std::size_t i = nfix_; i < p_.size(); ++i) {
+    for (std::size_t i = std::max(first, nfix_); i < p_.size(); ++i) {
       if (start[i] == start[i + 1]) continue;
       if (on_boundary_[i] && on_interface[i]) continue;  // where the two curves meet
       double qmin0;
@@ -590,21 +613,142 @@ void Engine::optimize_stars() {
       for (double alpha = 0.2 * len; alpha > 1e-3 * len; alpha *= 0.5) {
         Vec2 x = p_[i] + (alpha / gn) * g;
         if (curve) x = project_to_zero(*curve, x, deps_, proj_tol_);
-        // A free point stays inside, and on its side of the interface.
-        if (!on_boundary_[i] && pb_.domain(x) >= -geps_) continue;
-        if (pb_.interface && !on_interface[i] && ((*pb_.interface)(x) < 0.0) != ((*pb_.interface)(p_[i]) < 0.0))
-          continue;
         double qmin1;
         const double f1 = star_quality(i, x, qmin1);
-        if (f1 > f0 + min_gain && qmin1 > 0.0 && qmin1 >= std::min(qmin0, opt_.optimize_below)) {
-          p_[i] = x;
-          ++moved;
-          break;
-        }
+        if (!(f1 > f0 + min_gain && qmin1 > 0.0 && qmin1 >= std::min(qmin0, opt_.optimize_below))) continue;
+        // A free point stays inside (with a fixed seeded boundary, a star that is not
+        // inverted says so), and on its side of the interface.
+        if (!fixed_boundary() && !on_boundary_[i] && pb_.domain(x) >= -geps_) continue;
+        if (pb_.interface && !on_interface[i] && ((*pb_.interface)(x) < 0.0) != ((*pb_.interface)(p_[i]) < 0.0))
+          continue;
+        p_[i] = x;
+        ++moved;
+        break;
       }
     }
     if (moved == 0) break;
   }
+}
+
+// The finish after the force iterations (fixed seeded boundary only): triangles below
+// kMendBelow get Steiner points or lose crowding points; those still below kTryBelow get
+// one trial point each. Each trial retriangulates the region, so they are bounded.
+constexpr double kMendBelow = 0.7;
+constexpr double kTryBelow = 0.6;
+constexpr std::size_t kMaxTrials = 200;
+
+// The forces only push: where they left a gap (at a wide corner between seeds, across a
+// thin place) a triangle stays poor that no move of its points can mend, often with all
+// three corners fixed seeds. A poor triangle gets a free point at its circumcentre (which
+// the Delaunay property keeps clear of every other point) when that lies inside the
+// domain, half its radius clear of the boundary; the next triangulation and optimisation
+// make the new star good. Returns how many points were added.
+std::size_t Engine::insert_steiner_points() {
+  std::vector<Vec2> added;
+  for (const auto& t : tris_) {
+    const Vec2 a = p_[t[0]], b = p_[t[1]], c = p_[t[2]];
+    if (radius_ratio(a, b, c) >= kMendBelow) continue;
+    const Vec2 ab = b - a, ac = c - a;
+    const double den = 2.0 * cross(ab, ac);
+    if (!(std::abs(den) > 0.0)) continue;
+    const Vec2 centre = a + Vec2{ac.y * norm2(ab) - ab.y * norm2(ac), ab.x * norm2(ac) - ac.x * norm2(ab)} / den;
+    const double r = norm(centre - a);
+    if (!(pb_.domain(centre) < -0.5 * r)) continue;
+    added.push_back(centre);
+  }
+  for (const Vec2 q : added) p_.push_back(q), on_interface_.push_back(0);
+  return added.size();
+}
+
+// The least quality, and how far the poor triangles fall short of `target` (summed squares).
+std::pair<double, double> Engine::shortfall(double target) const {
+  double least = 1.0, sum = 0.0;
+  for (const auto& t : tris_) {
+    const double q = signed_quality(p_[t[0]], p_[t[1]], p_[t[2]]);
+    least = std::min(least, q);
+    if (q < target) sum += (target - q) * (target - q);
+  }
+  return {least, sum};
+}
+
+// A free corner of a poor triangle that crowds a small place (a grain piece a few sizes
+// wide) is removed when the mesh without it is better. Returns how many were removed.
+std::size_t Engine::remove_crowding_points() {
+  std::vector<int> candidates;
+  for (const auto& t : tris_) {
+    if (radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]) >= kMendBelow) continue;
+    for (int v : t)
+      if (static_cast<std::size_t>(v) >= nfix_) candidates.push_back(v);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  if (candidates.size() > kMaxTrials) candidates.resize(kMaxTrials);
+  std::size_t removed = 0;
+  auto best = shortfall(kMendBelow);
+  // From the highest index down, so the indices still to try stay valid.
+  for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
+    const auto v = static_cast<std::size_t>(*it);
+    const Vec2 kept = p_[v];
+    p_.erase(p_.begin() + static_cast<std::ptrdiff_t>(v));
+    on_interface_.erase(on_interface_.begin() + static_cast<std::ptrdiff_t>(v));
+    triangulate();
+    const auto now = shortfall(kMendBelow);
+    if (now.first >= best.first && now.second < best.second) {
+      best = now;
+      ++removed;
+      continue;
+    }
+    p_.insert(p_.begin() + static_cast<std::ptrdiff_t>(v), kept);
+    on_interface_.insert(on_interface_.begin() + static_cast<std::ptrdiff_t>(v), 0);
+  }
+  dval_.clear();
+  triangulate();
+  return removed;
+}
+
+// Poor triangles left after insertion and removal (in a grain piece a few sizes wide,
+// where a circumcentre falls too near the boundary) are tried one by one: a free point
+// at the middle of the triangle and its neighbours, optimised in its star, is kept when
+// the mesh is better with it. Returns how many were kept.
+std::size_t Engine::try_steiner_points() {
+  std::vector<Vec2> candidates;
+  {
+    std::unordered_map<std::uint64_t, int> opposite;  // directed edge -> third vertex
+    auto key = [](int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); };
+    for (const auto& t : tris_)
+      for (int k = 0; k < 3; ++k) opposite[key(t[k], t[(k + 1) % 3])] = t[(k + 2) % 3];
+    for (const auto& t : tris_) {
+      if (candidates.size() == kMaxTrials) break;
+      if (radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]) >= kTryBelow) continue;
+      Vec2 sum = p_[t[0]] + p_[t[1]] + p_[t[2]];
+      int n = 3;
+      for (int k = 0; k < 3; ++k) {
+        const auto it = opposite.find(key(t[(k + 1) % 3], t[k]));
+        if (it != opposite.end()) sum += p_[it->second], ++n;
+      }
+      const Vec2 x = sum / n;
+      if (pb_.domain(x) < -geps_) candidates.push_back(x);
+    }
+  }
+  std::size_t kept = 0;
+  auto best = shortfall(kMendBelow);
+  for (const Vec2 x : candidates) {
+    p_.push_back(x);
+    on_interface_.push_back(0);
+    triangulate();
+    optimize_stars(p_.size() - 1);
+    const auto now = shortfall(kMendBelow);
+    if (now.first >= best.first && now.second < best.second) {
+      best = now;
+      ++kept;
+      continue;
+    }
+    p_.pop_back();
+    on_interface_.pop_back();
+  }
+  dval_.clear();
+  triangulate();
+  return kept;
 }
 
 // The final mesh: only points that some triangle uses, in their original order.
@@ -673,6 +817,12 @@ DistMeshResult Engine::run(Rng& rng) {
   triangulate();
   if (pb_.interface) stats_.interface_straddling = repair_interface();
   optimize_stars();
+  for (int round = 0; fixed_boundary() && round < 6 && insert_steiner_points() > 0; ++round) {
+    triangulate();
+    optimize_stars();
+  }
+  if (fixed_boundary() && remove_crowding_points() > 0) optimize_stars();
+  if (fixed_boundary() && try_steiner_points() > 0) optimize_stars();
 
   DistMeshResult result{compact(), stats_};
   validate(result.mesh);

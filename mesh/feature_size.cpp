@@ -11,23 +11,27 @@ FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gr
     : sources_(std::move(sources)), base_(base), gradient_(gradient) {
   if (sources_.size() < 32) return;  // a plain loop is faster
   Box box;
-  double finest = base_;
+  finest_ = base_;
   for (const SizeSource& s : sources_) {
     box.extend(s.p);
-    finest = std::min(finest, s.h);
+    finest_ = std::min(finest_, s.h);
   }
-  cell_ = std::max((base_ - finest) / gradient_, 1e-300);
+  // A source binds only within (base - finest) / gradient of itself; bins a quarter of
+  // that let a query stop after the nearest few.
+  cell_ = std::max(0.25 * (base_ - finest_) / gradient_, 1e-300);
   lo_ = box.lo;
-  nx_ = static_cast<int>(std::min(4096.0, std::floor(box.width() / cell_) + 1));
-  ny_ = static_cast<int>(std::min(4096.0, std::floor(box.height() / cell_) + 1));
+  nx_ = static_cast<int>(std::min(1024.0, std::floor(box.width() / cell_) + 1));
+  ny_ = static_cast<int>(std::min(1024.0, std::floor(box.height() / cell_) + 1));
   cell_ = std::max({cell_, box.width() / nx_, box.height() / ny_});
   std::vector<int> bin(sources_.size());
   start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+  least_.assign(static_cast<std::size_t>(nx_) * ny_, base_);
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const int x = std::min(nx_ - 1, static_cast<int>((sources_[k].p.x - lo_.x) / cell_));
     const int y = std::min(ny_ - 1, static_cast<int>((sources_[k].p.y - lo_.y) / cell_));
     bin[k] = y * nx_ + x;
     ++start_[bin[k] + 1];
+    least_[bin[k]] = std::min(least_[bin[k]], sources_[k].h);
   }
   for (std::size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
   order_.resize(sources_.size());
@@ -41,15 +45,33 @@ double FeatureSize::at(Vec2 x, double cap) const {
     for (const SizeSource& s : sources_) h = std::min(h, s.h + gradient_ * norm(x - s.p));
     return h;
   }
-  // Only the bins within one cell (the binding reach) can lower h.
-  const int cx = static_cast<int>(std::floor((x.x - lo_.x) / cell_));
-  const int cy = static_cast<int>(std::floor((x.y - lo_.y) / cell_));
-  for (int y = std::max(0, cy - 1); y <= std::min(ny_ - 1, cy + 1); ++y)
-    for (int b = y * nx_ + std::max(0, cx - 1); b <= y * nx_ + std::min(nx_ - 1, cx + 1); ++b)
-      for (int k = start_[b]; k < start_[b + 1]; ++k) {
-        const SizeSource& s = sources_[order_[k]];
-        h = std::min(h, s.h + gradient_ * norm(x - s.p));
+  // Rings of bins around x, nearest first: ring k lies at least (k - 1) cells away, so
+  // once finest + gradient (k - 1) cell reaches h nothing further can lower it.
+  const double fx = (x.x - lo_.x) / cell_, fy = (x.y - lo_.y) / cell_;
+  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
+  auto visit = [&](int bx, int by) {
+    const int b = by * nx_ + bx;
+    // The distance from x to the bin bounds what its sources can give.
+    const double dx = std::max({0.0, bx - fx, fx - (bx + 1)}), dy = std::max({0.0, by - fy, fy - (by + 1)});
+    if (least_[b] + gradient_ * cell_ * std::sqrt(dx * dx + dy * dy) >= h) return;
+    for (int i = start_[b]; i < start_[b + 1]; ++i) {
+      const SizeSource& s = sources_[order_[i]];
+      h = std::min(h, s.h + gradient_ * norm(x - s.p));
+    }
+  };
+  for (int k = 0;; ++k) {
+    if (k > 0 && finest_ + gradient_ * (k - 1) * cell_ >= h) break;
+    const int x0 = cx - k, x1 = cx + k, y0 = cy - k, y1 = cy + k;
+    for (int by = std::max(0, y0); by <= std::min(ny_ - 1, y1); ++by) {
+      if (by == y0 || by == y1) {
+        for (int bx = std::max(0, x0); bx <= std::min(nx_ - 1, x1); ++bx) visit(bx, by);
+      } else {
+        if (x0 >= 0 && x0 < nx_) visit(x0, by);
+        if (x1 >= 0 && x1 < nx_) visit(x1, by);
       }
+    }
+    if (x0 <= 0 && y0 <= 0 && x1 >= nx_ - 1 && y1 >= ny_ - 1) break;  // the whole grid seen
+  }
   return h;
 }
 

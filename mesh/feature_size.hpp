@@ -33,12 +33,13 @@ class FeatureSize {
   std::vector<SizeSource> sources_;
   double base_;
   double gradient_;
-  // Sources binned in a uniform grid of cells `cell_` wide from `lo_`; a source can bind
-  // only within (base - finest) / gradient of itself.
+  // Sources binned in a uniform grid of cells `cell_` wide from `lo_`, with the least
+  // size in each bin.
   Vec2 lo_{};
-  double cell_ = 1.0;
+  double cell_ = 1.0, finest_ = 0.0;
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, order_;  // bin b holds order_[start_[b] .. start_[b + 1])
+  std::vector<double> least_;
 };
 
 // min(cap, size), as the size function the DistMesh engine takes; shares `size`.

@@ -23,9 +23,11 @@ struct GrainMeshOptions {
   bool feature_size = true;          // refine at short edges and thin layers
   double feature_fraction = 0.5;     // element size there, x the local feature size
   double gradient = 0.3;             // how fast the size grows away from them
-  // The engine's constants; a region stops after 1000 iterations (still a valid mesh):
-  // the quality is reached long before the last points settle in thin layers.
-  DistMeshOptions distmesh{.max_iterations = 1000};
+  // The engine's constants. Bars a little less compressed than the thesis' 1.2: with
+  // every boundary seeded at the wanted size, 1.15 gives the best interior fit (mean q
+  // 0.973 against 0.971 on 200-grain cells). A region stops after 1000 iterations (still
+  // a valid mesh): the quality is reached long before the last points settle in thin layers.
+  DistMeshOptions distmesh{.fscale = 1.15, .ttol = 0.2, .max_iterations = 1000};
 };
 
 struct GrainMesh {
