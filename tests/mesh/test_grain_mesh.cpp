@@ -1,8 +1,12 @@
 // The mesh stage on tessellations: shared seeding, conformity, periodic pairs, threads.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <set>
+#include <vector>
 
 #include "mesh/grain_mesh.hpp"
 #include "mesh/quality.hpp"
@@ -86,5 +90,173 @@ TEST_CASE("binder-mode meshes conform to their tessellation", "[mesh][grain]") {
     o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.3, false, 211e9, 0.31}};
     Rng rng(3);
     check_mesh(tessellate(o, rng), 30);
+  }
+}
+
+namespace {
+
+// The thesis' cell shape (3 x 1.7), 200 grains, 15 % Co spread out, grain mode.
+Tessellation thesis_cell(int lloyd, std::uint64_t seed) {
+  TessellationOptions o;
+  o.width = 3.0;
+  o.height = 1.7;
+  o.grains = 200;
+  o.lloyd_iterations = lloyd;
+  o.arrangement = Arrangement::dispersed;
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.15, false, 211e9, 0.31}};
+  Rng rng(seed);
+  return tessellate(o, rng);
+}
+
+// The best radius ratio a triangle in a corner of angle alpha can have (its other two
+// angles equal): 8 sin(alpha/2) sin^2(45 deg - alpha/4).
+double best_in_corner(double alpha) {
+  const double s = std::sin(std::numbers::pi / 4 - alpha / 4);
+  return 8.0 * std::sin(alpha / 2) * s * s;
+}
+
+// Interior angle of each region at each of its vertices, by (grain, vertex); a grain's
+// pieces never share a vertex, so the grain names the piece.
+std::map<std::pair<int, int>, double> corner_angles(const Tessellation& t) {
+  std::map<std::pair<int, int>, double> angle;
+  for (const Region& r : t.regions)
+    for (const auto& ring : r.rings)
+      for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+        const Vec2 prev = t.vertices[ring[(k + n - 1) % n]], v = t.vertices[ring[k]], next = t.vertices[ring[(k + 1) % n]];
+        double a = std::atan2(cross(next - v, prev - v), dot(next - v, prev - v));
+        if (a < 0.0) a += 2.0 * std::numbers::pi;
+        const auto key = std::make_pair(r.grain, ring[k]);
+        const auto it = angle.find(key);
+        if (it == angle.end() || a < it->second) angle[key] = a;
+      }
+  return angle;
+}
+
+}  // namespace
+
+TEST_CASE("200-grain Lloyd cells at 100 triangles per grain meet the quality bounds", "[mesh][grain][quality]") {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    INFO("seed " << seed);
+    const Tessellation t = thesis_cell(3, seed);
+    const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 100), .phase_size = {}});
+    check_conformity(t, m);
+    const MeshQuality q = measure_quality(m.mesh);
+    const double per_grain = static_cast<double>(m.mesh.triangles.size()) / t.stats.grains;
+    CHECK(per_grain > 90);
+    CHECK(per_grain < 125);
+    CHECK(q.q_min >= 0.6);
+    CHECK(q.q_mean >= 0.97);
+    CHECK(q.max_non_orthogonality_deg < 50.0);
+  }
+}
+
+TEST_CASE("Poisson-Voronoi cells: every triangle is within 0.9 of the best its sharpest corner allows",
+          "[mesh][grain][quality]") {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    INFO("seed " << seed);
+    const Tessellation t = thesis_cell(0, seed);
+    const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 100), .phase_size = {}});
+    check_conformity(t, m);
+    const auto angle = corner_angles(t);
+    const std::vector<double> q = triangle_quality(m.mesh);
+    const int nv = static_cast<int>(t.vertices.size());
+    double sharpest_seen = std::numbers::pi;
+    int failures = 0;
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      double alpha = std::numbers::pi;  // no corner: the plain bound
+      for (int v : m.mesh.triangles[k])
+        if (v < nv) {
+          const auto it = angle.find({m.mesh.region[k], v});
+          if (it != angle.end()) alpha = std::min(alpha, it->second);
+        }
+      sharpest_seen = std::min(sharpest_seen, alpha);
+      const double bound = std::min(0.6, 0.9 * best_in_corner(alpha));
+      if (q[k] < bound) {
+        ++failures;
+        UNSCOPED_INFO("triangle " << k << " q " << q[k] << " corner " << alpha * 180 / std::numbers::pi << " deg");
+      }
+    }
+    CHECK(failures == 0);
+    CHECK(sharpest_seen < std::numbers::pi / 6);  // the cell does have sharp corners
+  }
+}
+
+namespace {
+
+// Triangles of `tris` that the open segment ab passes through, found by sampling it.
+std::size_t triangles_crossed(const TriMesh& mesh, const std::vector<int>& tris, Vec2 a, Vec2 b) {
+  std::set<int> hit;
+  constexpr int kSamples = 400;
+  for (int s = 1; s < kSamples; ++s) {
+    const Vec2 x = a + (static_cast<double>(s) / kSamples) * (b - a);
+    for (int t : tris) {
+      const auto& v = mesh.triangles[t];
+      const Vec2 p = mesh.points[v[0]], q = mesh.points[v[1]], r = mesh.points[v[2]];
+      if (signed_area2(p, q, x) >= 0 && signed_area2(q, r, x) >= 0 && signed_area2(r, p, x) >= 0) {
+        hit.insert(t);
+        break;
+      }
+    }
+  }
+  return hit.size();
+}
+
+}  // namespace
+
+TEST_CASE("binder at 5 %: two elements across the thinnest layers and q_min >= 0.5", "[mesh][grain][quality]") {
+  for (std::uint64_t seed : {1u, 2u}) {
+    INFO("seed " << seed);
+    TessellationOptions o;
+    o.grains = 16;
+    o.lloyd_iterations = 3;
+    o.phase_mode = PhaseMode::binder;
+    o.matrix_phase = 1;
+    o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.05, false, 211e9, 0.31}};
+    Rng rng(seed);
+    const Tessellation t = tessellate(o, rng);
+    const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 100), .phase_size = {}});
+    check_conformity(t, m);
+    CHECK(measure_quality(m.mesh).q_min >= 0.5);
+
+    // The gap between two grain pieces: the shortest segment from a vertex of one to an
+    // edge of the other.
+    struct Gap {
+      double width;
+      Vec2 a, b;
+    };
+    std::vector<Gap> gaps;
+    std::vector<const Region*> pieces;
+    for (const Region& r : t.regions)
+      if (r.phase != o.matrix_phase) pieces.push_back(&r);
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      for (std::size_t j = 0; j < pieces.size(); ++j) {
+        if (i == j) continue;
+        Gap best{1e300, {}, {}};
+        for (int v : pieces[i]->rings[0]) {
+          const Vec2 p = t.vertices[v];
+          const auto& ring = pieces[j]->rings[0];
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 a = t.vertices[ring[k]], b = t.vertices[ring[(k + 1) % ring.size()]];
+            const double s = std::clamp(dot(p - a, b - a) / norm2(b - a), 0.0, 1.0);
+            const Vec2 foot = a + s * (b - a);
+            if (norm(p - foot) < best.width) best = {norm(p - foot), p, foot};
+          }
+        }
+        gaps.push_back(best);
+      }
+    double thinnest = 1e300;
+    for (const Gap& g : gaps) thinnest = std::min(thinnest, g.width);
+    CHECK(thinnest < 0.3 * size_for(t, 100));  // a layer far thinner than the elements asked for
+    std::vector<int> matrix;
+    for (std::size_t k = 0; k < m.phase.size(); ++k)
+      if (m.phase[k] == o.matrix_phase) matrix.push_back(static_cast<int>(k));
+    int checked = 0;
+    for (const Gap& g : gaps) {
+      if (g.width > 1.2 * thinnest) continue;
+      INFO("layer " << g.width << " wide at " << g.a.x << " " << g.a.y);
+      CHECK(triangles_crossed(m.mesh, matrix, g.a, g.b) >= 2);
+      ++checked;
+    }
+    CHECK(checked > 0);
   }
 }
