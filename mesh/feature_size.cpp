@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <tuple>
 
 namespace grainmesh {
 
@@ -150,6 +151,23 @@ class EdgeGrid {
   std::vector<std::vector<int>> bins_;
 };
 
+// On a periodic cell, the images of the sources that reach across a side, so that the
+// field is periodic.
+void add_periodic_images(const Tessellation& t, double max_size, double gradient, std::vector<SizeSource>& sources) {
+  if (!t.periodic) return;
+  const std::size_t n = sources.size();
+  for (std::size_t s = 0; s < n; ++s) {
+    const double r = (max_size - sources[s].h) / gradient;
+    for (int j = -1; j <= 1; ++j)
+      for (int i = -1; i <= 1; ++i) {
+        if (i == 0 && j == 0) continue;
+        const Vec2 q = sources[s].p + Vec2{i * t.width, j * t.height};
+        const double dx = std::max({-q.x, 0.0, q.x - t.width}), dy = std::max({-q.y, 0.0, q.y - t.height});
+        if (dx * dx + dy * dy < r * r) sources.push_back({q, sources[s].h});
+      }
+  }
+}
+
 }  // namespace
 
 SizeFunction capped_size(std::shared_ptr<const FeatureSize> size, double cap) {
@@ -219,20 +237,34 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
       add(p, lfs);
     }
   }
-  if (t.periodic) {
-    // Images of the sources that reach across a side, so the field is periodic.
-    const std::size_t n = out.size();
-    for (std::size_t s = 0; s < n; ++s) {
-      const double r = (max_size - out[s].h) / gradient;
-      for (int j = -1; j <= 1; ++j)
-        for (int i = -1; i <= 1; ++i) {
-          if (i == 0 && j == 0) continue;
-          const Vec2 q = out[s].p + Vec2{i * t.width, j * t.height};
-          const double dx = std::max({-q.x, 0.0, q.x - t.width}), dy = std::max({-q.y, 0.0, q.y - t.height});
-          if (dx * dx + dy * dy < r * r) out.push_back({q, out[s].h});
-        }
+  add_periodic_images(t, max_size, gradient, out);
+  return out;
+}
+
+std::vector<SizeSource> grading_sources(const Tessellation& t, double boundary_size, double junction_size,
+                                        double max_size, double gradient) {
+  std::vector<SizeSource> out;
+  const bool boundary = boundary_size > 0.0 && boundary_size < max_size;
+  const bool junction = junction_size > 0.0 && junction_size < max_size;
+  for (const TessEdge& e : t.edges) {
+    if (e.left < 0 || e.right < 0) continue;  // a cell side is no grain boundary
+    const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
+    // Sources half a size apart: between two, the field rises by at most a quarter size
+    // times the gradient.
+    if (boundary) {
+      const int n = std::max(1, static_cast<int>(std::ceil(2.0 * norm(b - a) / boundary_size)));
+      for (int k = 0; k <= n; ++k) out.push_back({a + (static_cast<double>(k) / n) * (b - a), boundary_size});
     }
+    if (junction)
+      for (const Vec2 v : {a, b}) out.push_back({v, junction_size});
   }
+  // A vertex is a source once per edge it ends; one is enough.
+  std::sort(out.begin(), out.end(), [](const SizeSource& x, const SizeSource& y) {
+    return std::tie(x.p.x, x.p.y, x.h) < std::tie(y.p.x, y.p.y, y.h);
+  });
+  out.erase(std::unique(out.begin(), out.end(), [](const SizeSource& x, const SizeSource& y) { return x.p == y.p; }),
+            out.end());
+  add_periodic_images(t, max_size, gradient, out);
   return out;
 }
 

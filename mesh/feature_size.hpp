@@ -53,4 +53,11 @@ SizeFunction capped_size(std::shared_ptr<const FeatureSize> size, double cap);
 std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
                                         double gradient);
 
+// Grading on purpose: sources along every grain boundary (cell sides excluded) wanting
+// `boundary_size`, and at every vertex of one wanting `junction_size` (0, or not below
+// max_size, = none), with periodic images as above. The field grows away from them by
+// the gradient.
+std::vector<SizeSource> grading_sources(const Tessellation& t, double boundary_size, double junction_size,
+                                        double max_size, double gradient);
+
 }  // namespace grainmesh

@@ -87,6 +87,8 @@ FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& o) 
   }
   std::vector<SizeSource> sources;
   if (o.feature_size) sources = feature_sources(t, 0.5 * finest, largest, o.feature_fraction, o.gradient);
+  const auto graded = grading_sources(t, o.boundary_size, o.junction_size, largest, o.gradient);
+  sources.insert(sources.end(), graded.begin(), graded.end());
   return FeatureSize(std::move(sources), largest, o.gradient);
 }
 
@@ -139,6 +141,9 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
 
 GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   if (!(o.size > 0.0) || !std::isfinite(o.size)) throw ConfigError("mesh: the element size must be positive");
+  for (const auto& [value, name] : {std::pair{o.boundary_size, "boundary size"}, {o.junction_size, "junction size"}})
+    if (!(value >= 0.0) || !std::isfinite(value)) throw ConfigError(std::string("mesh: the ") + name + " must be >= 0");
+  if (!(o.gradient > 0.0) || !std::isfinite(o.gradient)) throw ConfigError("mesh: the size gradient must be positive");
   const auto start = std::chrono::steady_clock::now();
   const auto size = std::make_shared<const FeatureSize>(tessellation_size(t, o));
   const auto seeds = seed_edges(t, o, *size);

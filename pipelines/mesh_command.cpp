@@ -16,9 +16,9 @@
 namespace grainmesh {
 
 const std::vector<std::string>& mesh_config_keys() {
-  static const std::vector<std::string> keys{"mesh.size",          "mesh.triangles_per_grain", "mesh.threads",
-                                             "mesh.seed",          "mesh.max_iterations",      "phase.*.size",
-                                             "output.picture_width"};
+  static const std::vector<std::string> keys{
+      "mesh.size",     "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
+      "mesh.threads",  "mesh.seed",                "mesh.max_iterations", "phase.*.size",     "output.picture_width"};
   return keys;
 }
 
@@ -55,6 +55,12 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
     o.phase_size[p] = c.number(key);
     if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + c.text(key));
   }
+  for (const auto& [key, value] : {std::pair{"mesh.boundary_size", &o.boundary_size}, {"mesh.junction_size", &o.junction_size}}) {
+    *value = c.number(key, 0.0);
+    if (!(*value >= 0.0) || !std::isfinite(*value)) c.fail(key, "must be positive (or 0 for none), got " + c.text(key));
+  }
+  o.gradient = c.number("mesh.gradient", o.gradient);
+  if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail("mesh.gradient", "must lie between 0.05 and 10");
   const long long threads = c.integer("mesh.threads", 0);
   if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
   o.threads = static_cast<int>(threads);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "tessellate/steps.hpp"
 
 namespace grainmesh {
@@ -423,6 +424,17 @@ void validate(const Tessellation& t) {
   }
   if (std::abs(total - W * H) > 1e-9 * W * H)
     throw GeometryError("tessellation: region areas sum to " + std::to_string(total) + ", not W x H");
+  // Each grain's recorded area is the area of its regions (what the mesh is checked against).
+  std::vector<double> grain_area(t.grains.size(), 0.0);
+  for (const Region& r : t.regions) {
+    if (r.grain < 0 || static_cast<std::size_t>(r.grain) >= t.grains.size())
+      throw GeometryError("tessellation: a region names grain " + std::to_string(r.grain) + ", which does not exist");
+    grain_area[r.grain] += region_area(t, r);
+  }
+  for (std::size_t g = 0; g < t.grains.size(); ++g)
+    if (!(std::abs(grain_area[g] - t.grains[g].area) <= 1e-9 * grain_area[g]))
+      throw GeometryError("tessellation: grain " + std::to_string(g) + " records area " + to_text(t.grains[g].area, 12) +
+                          " but its regions cover " + to_text(grain_area[g], 12));
   for (const TessEdge& e : t.edges) {
     if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
     if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) < 0)

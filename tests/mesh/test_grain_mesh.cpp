@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "mesh/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 
@@ -259,4 +260,67 @@ TEST_CASE("binder at 5 %: two elements across the thinnest layers and q_min >= 0
     }
     CHECK(checked > 0);
   }
+}
+
+TEST_CASE("grading: grain boundaries and junctions get their own sizes, the grains' insides the phase size",
+          "[mesh][grain]") {
+  const Tessellation t = cell(30, 1.5, true, PhaseMode::grain, 3, 4);
+  const double h = size_for(t, 300);
+  GrainMeshOptions o{.size = h, .phase_size = {}, .boundary_size = 0.4 * h, .junction_size = 0.2 * h};
+  const GrainMesh m = mesh_tessellation(t, o);
+  check_conformity(t, m);
+  CHECK(measure_quality(m.mesh).q_min >= 0.6);
+  const GrainMesh plain = mesh_tessellation(t, {.size = h, .phase_size = {}});
+  CHECK(m.mesh.triangles.size() > 1.5 * plain.mesh.triangles.size());
+
+  // Junctions: every tessellation vertex off the cell's sides.
+  std::vector<Vec2> junctions;
+  for (const Vec2 v : t.vertices)
+    if (v.x > 0.0 && v.x < t.width && v.y > 0.0 && v.y < t.height) junctions.push_back(v);
+  auto junction_distance = [&](Vec2 p) {
+    double d = 1e300;
+    for (const Vec2 j : junctions) d = std::min(d, norm(p - j));
+    return d;
+  };
+  double at_junctions = 0.0, on_boundaries = 0.0;
+  int n_junction = 0, n_boundary = 0;
+  for (const MeshEdge& e : mesh_edges(m.mesh)) {
+    const Vec2 a = m.mesh.points[e.a], b = m.mesh.points[e.b];
+    const double len = norm(b - a);
+    if (junction_distance(a) == 0.0 || junction_distance(b) == 0.0) {
+      at_junctions += len;
+      ++n_junction;
+    } else if (e.right >= 0 && m.mesh.region[e.left] != m.mesh.region[e.right] &&
+               junction_distance(0.5 * (a + b)) > 3.0 * h) {
+      on_boundaries += len;
+      ++n_boundary;
+    }
+  }
+  REQUIRE(n_junction > 0);
+  REQUIRE(n_boundary > 0);
+  CHECK(at_junctions / n_junction < 0.3 * h);
+  CHECK(on_boundaries / n_boundary == Approx(0.4 * h).epsilon(0.1));
+
+  // Deep inside the grains the elements grow back towards h.
+  double deep = 0.0;
+  int n_deep = 0;
+  for (std::size_t k = 0; k < m.mesh.triangles.size(); ++k) {
+    const Vec2 c = triangle_centroid(m.mesh, static_cast<int>(k));
+    bool far = true;
+    for (const TessEdge& e : t.edges)
+      far = far && std::sqrt(segment_distance2(c, t.vertices[e.v0], t.vertices[e.v1])) > 1.5 * h;
+    if (!far) continue;
+    const auto& v = m.mesh.triangles[k];
+    deep += norm(m.mesh.points[v[0]] - m.mesh.points[v[1]]);
+    ++n_deep;
+  }
+  REQUIRE(n_deep > 0);
+  CHECK(deep / n_deep > 0.7 * h);
+}
+
+TEST_CASE("bad mesh options are refused", "[mesh][grain]") {
+  const Tessellation t = cell(10, 1.0, true, PhaseMode::grain, 1, 1);
+  CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.0, .phase_size = {}}), ConfigError);
+  CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.1, .phase_size = {}, .boundary_size = -1.0}), ConfigError);
+  CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.1, .phase_size = {}, .gradient = 0.0}), ConfigError);
 }

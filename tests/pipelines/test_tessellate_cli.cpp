@@ -115,6 +115,11 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
 
   // Bad input: one line, non-zero exit, no output directory.
   std::ofstream(dir / "broken.json") << "{\"format\": \"grainmesh-tessellation\", \"version\": 1";
+  {  // well-formed, but a grain's recorded area no longer matches its polygon
+    auto doc = nlohmann::json::parse(test::read_file(tess));
+    doc["grains"][0]["area"] = 2.0 * doc["grains"][0]["area"].get<double>();
+    std::ofstream(dir / "invalid.json") << doc.dump();
+  }
   struct Case {
     std::vector<std::string> args;
     int exit_code;
@@ -125,7 +130,11 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
       {{"mesh", (dir / "broken.json").string()}, 3, "broken.json: "},
       {{"mesh", tess, "--set", "mesh.size=0"}, 2, "mesh.size: must be positive"},
       {{"mesh", tess, "--set", "mesh.size=-1"}, 2, "mesh.size: must be positive"},
+      {{"mesh", (dir / "invalid.json").string()}, 3, "invalid.json: "},
       {{"mesh", tess, "--set", "phase.Ni.size=1e-8"}, 2, "phase.Ni.size: the tessellation has no phase named 'Ni'"},
+      {{"mesh", tess, "--set", "mesh.boundary_size=-1e-9"}, 2, "mesh.boundary_size: must be positive (or 0 for none)"},
+      {{"mesh", tess, "--set", "mesh.gradient=0"}, 2, "mesh.gradient: must lie between 0.05 and 10"},
+      {{"mesh", tess, "--set", "mesh.triangles_per_grain=1"}, 2, "mesh.triangles_per_grain: must lie between"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = c.args;
