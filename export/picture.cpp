@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <memory>
 
 #include "common/errors.hpp"
@@ -67,10 +68,29 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
   Box box;
   for (const Vec2 p : mesh.points) box.extend(p);
   if (box.empty() || mesh.triangles.empty()) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
+  if (options.view) {
+    if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
+    box = *options.view;
+  }
   Canvas canvas(box, options);
   cairo_t* c = canvas.get();
   const double scale = canvas.scale();
   auto px = [&](Vec2 p) { return canvas.px(p); };
+  // A detail: clip to the window, and skip what lies wholly outside it.
+  const Vec2 lo = px(box.lo), hi = px(box.hi);
+  cairo_rectangle(c, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
+  cairo_clip(c);
+  auto outside = [&](std::initializer_list<int> vertices) {
+    bool left = true, right = true, below = true, above = true;
+    for (int v : vertices) {
+      const Vec2 p = mesh.points[v];
+      left = left && p.x < box.lo.x;
+      right = right && p.x > box.hi.x;
+      below = below && p.y < box.lo.y;
+      above = above && p.y > box.hi.y;
+    }
+    return left || right || below || above;
+  };
 
   // Fills without antialiasing, so that neighbouring triangles leave no seams.
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
@@ -81,6 +101,7 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       if (mesh.region[t] != r) continue;
       const auto& v = mesh.triangles[t];
+      if (outside({v[0], v[1], v[2]})) continue;
       const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
       cairo_move_to(c, a.x, a.y);
       cairo_line_to(c, b.x, b.y);
@@ -103,7 +124,7 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
 
   auto stroke = [&](auto&& wanted, double width, Rgb col) {
     for (const auto& e : edges) {
-      if (!wanted(e)) continue;
+      if (!wanted(e) || outside({e.a, e.b})) continue;
       const Vec2 a = px(mesh.points[e.a]), b = px(mesh.points[e.b]);
       cairo_move_to(c, a.x, a.y);
       cairo_line_to(c, b.x, b.y);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "mesh/trimesh.hpp"
@@ -13,6 +14,7 @@ struct PictureOptions {
   int width_px = 1200;  // image width; the height follows the mesh's aspect ratio
   int margin_px = 20;
   std::vector<int> outline_by{};  // #T labels: thick lines where they differ; empty = the region
+  std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
 };
 
 // Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a

@@ -11,5 +11,8 @@ done
 for name in grains_wc_co grains_binder; do
   ./build/grainmesh tessellate "data/examples/$name.ini" -o "$tmp/$name" --set output.picture_width=480 > /dev/null
   cp "$tmp/$name/tessellation.png" "docs/images/$name.png"
+  ./build/grainmesh mesh "$tmp/$name/tessellation.json" -o "$tmp/${name}_mesh" --set output.picture_width=480 > /dev/null
+  cp "$tmp/${name}_mesh/mesh.png" "docs/images/${name}_mesh.png"
+  cp "$tmp/${name}_mesh/mesh_detail.png" "docs/images/${name}_mesh_detail.png"
 done
 echo "pictures written to docs/images/"

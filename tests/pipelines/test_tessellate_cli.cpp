@@ -106,7 +106,7 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
   const auto r = run_grainmesh({"mesh", tess, "-o", (dir / "m").string(), "--set", "mesh.triangles_per_grain=40"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  for (const char* f : {"mesh.vtu", "mesh.png"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
+  for (const char* f : {"mesh.vtu", "mesh.png", "mesh_detail.png"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
   const auto report = nlohmann::json::parse(test::read_file(dir / "m" / "report.json"));
   CHECK(report["max_grain_area_error"].get<double>() <= 1e-9);
   CHECK(report["max_pair_mismatch"].get<double>() == 0.0);
