@@ -235,30 +235,48 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     out.unconverged_regions += results[r].converged ? 0 : 1;
   }
   out.regions = nr;
-  if (t.periodic) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const double far = axis == 0 ? t.width : t.height;
-      std::map<double, int> high;
-      for (int v = 0; v < static_cast<int>(pts.size()); ++v)
-        if ((axis == 0 ? pts[v].x : pts[v].y) == far) high[axis == 0 ? pts[v].y : pts[v].x] = v;
-      auto& pairs = axis == 0 ? out.pairs_x : out.pairs_y;
-      for (int v = 0; v < static_cast<int>(pts.size()); ++v) {
-        if ((axis == 0 ? pts[v].x : pts[v].y) != 0.0) continue;
-        const auto it = high.find(axis == 0 ? pts[v].y : pts[v].x);
-        if (it == high.end()) throw GeometryError("mesh: a node on a cell side has no periodic partner");
-        pairs.emplace_back(v, it->second);
-      }
-    }
-  }
+  pair_periodic_nodes(t, out);
   validate(out.mesh);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+void pair_periodic_nodes(const Tessellation& t, GrainMesh& m) {
+  m.pairs_x.clear();
+  m.pairs_y.clear();
+  if (!t.periodic) return;
+  const std::vector<Vec2>& pts = m.mesh.points;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double far = axis == 0 ? t.width : t.height;
+    auto along = [axis](Vec2 p) { return axis == 0 ? p.y : p.x; };
+    auto across = [axis](Vec2 p) { return axis == 0 ? p.x : p.y; };
+    std::map<double, int> high;
+    for (int v = 0; v < static_cast<int>(pts.size()); ++v)
+      if (across(pts[v]) == far) high[along(pts[v])] = v;
+    auto& pairs = axis == 0 ? m.pairs_x : m.pairs_y;
+    for (int v = 0; v < static_cast<int>(pts.size()); ++v) {
+      if (across(pts[v]) != 0.0) continue;
+      const auto it = high.find(along(pts[v]));
+      if (it == high.end())
+        throw GeometryError("mesh: the node at " + to_text(pts[v]) + " on a cell side has no periodic partner");
+      pairs.emplace_back(v, it->second);
+    }
+  }
 }
 
 Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
   const TriMesh& mesh = m.mesh;
   const double W = t.width, H = t.height;
   Conformity c;
+  if (m.phase.size() != mesh.triangles.size() || mesh.region.size() != mesh.triangles.size())
+    throw GeometryError("conformity: the mesh needs a grain and a phase for each of its triangles");
+  // Nodes: no two at one place, and every tessellation vertex among them.
+  PointMap<int> node;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (!node.emplace(point_key(mesh.points[v]), static_cast<int>(v)).second)
+      throw GeometryError("conformity: two nodes at " + to_text(mesh.points[v]));
+  for (const Vec2 v : t.vertices)
+    if (!node.count(point_key(v))) throw GeometryError("conformity: the tessellation vertex " + to_text(v) + " is no mesh node");
   const auto edges = mesh_edges(mesh);  // throws for an edge of three triangles
   for (const MeshEdge& e : edges) {
     if (e.right >= 0) continue;
@@ -297,6 +315,9 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
           throw GeometryError("conformity: triangle " + std::to_string(k) + " reaches out of its grain " + std::to_string(g));
     }
     if (!inside) throw GeometryError("conformity: triangle " + std::to_string(k) + " lies outside its grain " + std::to_string(g));
+    if (m.phase[k] != t.grains[g].phase)
+      throw GeometryError("conformity: triangle " + std::to_string(k) + " has phase " + std::to_string(m.phase[k]) +
+                          ", its grain " + std::to_string(g) + " phase " + std::to_string(t.grains[g].phase));
     area[g] += triangle_area(mesh, static_cast<int>(k));
   }
   for (const Grain& g : t.grains) {

@@ -64,6 +64,11 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
 // merges them. Throws GeometryError when a region cannot be meshed.
 GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& options);
 
+// Fills m.pairs_x and m.pairs_y from the node positions (exact coordinates on the cell's
+// sides); empty when the tessellation is not periodic. Throws GeometryError for a side
+// node without a partner.
+void pair_periodic_nodes(const Tessellation& t, GrainMesh& m);
+
 // What check_conformity measured.
 struct Conformity {
   double max_area_error = 0.0;       // max over grains |mesh area - polygon area| / polygon area
@@ -71,11 +76,12 @@ struct Conformity {
   std::size_t boundary_edges = 0;    // edges with one triangle (all on the cell's sides)
 };
 
-// Checks the mesh against its tessellation: each edge in one or two triangles; edges
-// with one triangle on the cell's sides only; every triangle inside the region of its
-// grain; each grain's area equal to its polygons' within `area_tolerance` (relative);
-// periodic pairs complete and matching within 1e-12 max(W, H). Throws GeometryError
-// naming the first violation.
+// Checks the mesh against its tessellation: no two nodes at one place and every
+// tessellation vertex a node; each edge in one or two triangles; edges with one triangle
+// on the cell's sides only; every triangle inside the region of its grain and of its
+// grain's phase; each grain's area equal to its polygons' within `area_tolerance`
+// (relative); periodic pairs complete and matching within 1e-12 max(W, H). Throws
+// GeometryError naming the first violation.
 Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance = 1e-9);
 
 }  // namespace grainmesh

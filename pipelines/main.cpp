@@ -29,6 +29,8 @@ constexpr const char* kUsage =
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
     "      mesh every grain of a tessellation, conforming and periodic\n"
+    "  check TESSELLATION.json MESH.vtu\n"
+    "      check that a mesh conforms to its tessellation (exit 0) or name the violation (exit 3)\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      mesh a domain given by distance and size functions (see data/examples/)\n"
     "\n"
@@ -102,6 +104,29 @@ int mesh_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// `grainmesh check TESSELLATION.json MESH.vtu`.
+int check_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh check TESSELLATION.json MESH.vtu");
+  desc.add_options()("help,h", "show this help")("tessellation", po::value<std::string>(), "tessellation.json")(
+      "mesh", po::value<std::string>(), "mesh.vtu written by grainmesh mesh");
+  po::positional_options_description pos;
+  pos.add("tessellation", 1).add("mesh", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+  } catch (const po::error& e) {
+    throw ConfigError(std::string("check: ") + e.what());
+  }
+  if (vm.count("help")) {
+    std::cout << desc;
+    return kOk;
+  }
+  if (!vm.count("tessellation") || !vm.count("mesh"))
+    throw ConfigError("check: give the tessellation.json and the mesh.vtu to check");
+  run_check_command(vm["tessellation"].as<std::string>(), vm["mesh"].as<std::string>());
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -118,6 +143,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
     if (args[0] == "mesh") return mesh_main(rest);
+    if (args[0] == "check") return check_main(rest);
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const ConfigError& e) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <variant>
 
 #include "common/errors.hpp"
 #include "export/picture.hpp"
@@ -121,6 +122,32 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
               "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.png, mesh_detail.png, report.json}\n",
               m.mesh.points.size(), m.mesh.triangles.size(), report["cells_per_grain_mean"].get<double>(), q.q_min,
               q.q_mean, m.seconds, out.string().c_str());
+}
+
+void run_check_command(const std::filesystem::path& tessellation, const std::filesystem::path& mesh_file) {
+  const Tessellation t = read_tessellation_file(tessellation);
+  VtuContents vtu = read_vtu(mesh_file);
+  GrainMesh m;
+  m.mesh = std::move(vtu.mesh);
+  auto cell_ints = [&](const std::string& name) {
+    for (const CellField& f : vtu.fields)
+      if (f.name == name && std::holds_alternative<std::vector<int>>(f.values)) return std::get<std::vector<int>>(f.values);
+    throw IoError(mesh_file.string() + ": no integer cell array '" + name + "' (is it a grainmesh mesh.vtu?)");
+  };
+  m.mesh.region = cell_ints("grain");
+  m.phase = cell_ints("phase");
+  Conformity c;
+  try {
+    validate(m.mesh);
+    pair_periodic_nodes(t, m);
+    c = check_conformity(t, m);
+  } catch (const GeometryError& e) {
+    throw GeometryError(mesh_file.string() + ": " + e.what());
+  }
+  std::printf("grainmesh check: %s conforms to %s: %zu triangles, grain areas within %.1e, %zu + %zu periodic node "
+              "pairs within %.1e, %zu edges on the cell's sides\n",
+              mesh_file.string().c_str(), tessellation.string().c_str(), m.mesh.triangles.size(), c.max_area_error,
+              m.pairs_x.size(), m.pairs_y.size(), c.max_pair_mismatch, c.boundary_edges);
 }
 
 }  // namespace grainmesh

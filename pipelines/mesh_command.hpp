@@ -28,4 +28,9 @@ Tessellation read_tessellation_file(const std::filesystem::path& file);
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
                       const std::filesystem::path& out);
 
+// `grainmesh check TESSELLATION.json MESH.vtu`: the conformity checker on a written mesh
+// (cell arrays grain and phase); prints its figures, or throws GeometryError naming the
+// mesh file and the first violation (IoError for unreadable files).
+void run_check_command(const std::filesystem::path& tessellation, const std::filesystem::path& mesh_file);
+
 }  // namespace grainmesh

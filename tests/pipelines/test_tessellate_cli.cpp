@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "export/vtu.hpp"
 #include "helpers.hpp"
 #include "tessellate/tessellation_json.hpp"
 
@@ -112,6 +113,24 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
   CHECK(report["max_pair_mismatch"].get<double>() == 0.0);
   CHECK(report["cells_per_grain_mean"].get<double>() > 20.0);
   CHECK(report["pairs_x"].get<int>() > 0);
+
+  // The checker on the written mesh: it conforms; moved off its place, one node does not.
+  const std::string vtu = (dir / "m" / "mesh.vtu").string();
+  const auto ok = run_grainmesh({"check", tess, vtu});
+  INFO(ok.err);
+  CHECK(ok.exit_code == 0);
+  CHECK(ok.out.find("conforms") != std::string::npos);
+  {
+    VtuContents moved = read_vtu(vtu);
+    const auto& tri = moved.mesh.triangles[moved.mesh.triangles.size() / 2];
+    Vec2& p = moved.mesh.points[tri[0]];
+    p = p + 0.2 * (moved.mesh.points[tri[1]] - p);  // a node of a shared edge leaves its place
+    write_vtu(dir / "moved.vtu", moved.mesh, moved.fields);
+  }
+  const auto bad = run_grainmesh({"check", tess, (dir / "moved.vtu").string()});
+  CHECK(bad.exit_code == 3);
+  CHECK(bad.err.find("moved.vtu: conformity: ") != std::string::npos);
+  CHECK(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
 
   // Bad input: one line, non-zero exit, no output directory.
   std::ofstream(dir / "broken.json") << "{\"format\": \"grainmesh-tessellation\", \"version\": 1";
