@@ -38,6 +38,23 @@ FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gr
   order_.resize(sources_.size());
   std::vector<int> fill(start_.begin(), start_.end() - 1);
   for (std::size_t k = 0; k < sources_.size(); ++k) order_[fill[bin[k]]++] = static_cast<int>(k);
+  // The least size anywhere in each bin: most queries lie where no source binds, and
+  // this answers them at once.
+  floor_.assign(static_cast<std::size_t>(nx_) * ny_, base_);
+  for (const SizeSource& s : sources_) {
+    const double reach = (base_ - s.h) / gradient_;
+    const int x0 = std::max(0, static_cast<int>(std::floor((s.p.x - reach - lo_.x) / cell_)));
+    const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((s.p.x + reach - lo_.x) / cell_)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((s.p.y - reach - lo_.y) / cell_)));
+    const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((s.p.y + reach - lo_.y) / cell_)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const double dx = std::max({0.0, lo_.x + x * cell_ - s.p.x, s.p.x - (lo_.x + (x + 1) * cell_)});
+        const double dy = std::max({0.0, lo_.y + y * cell_ - s.p.y, s.p.y - (lo_.y + (y + 1) * cell_)});
+        double& f = floor_[static_cast<std::size_t>(y) * nx_ + x];
+        f = std::min(f, s.h + gradient_ * std::sqrt(dx * dx + dy * dy));
+      }
+  }
 }
 
 double FeatureSize::at(Vec2 x, double cap) const {
@@ -50,6 +67,7 @@ double FeatureSize::at(Vec2 x, double cap) const {
   // once finest + gradient (k - 1) cell reaches h nothing further can lower it.
   const double fx = (x.x - lo_.x) / cell_, fy = (x.y - lo_.y) / cell_;
   const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
+  if (cx >= 0 && cx < nx_ && cy >= 0 && cy < ny_ && floor_[static_cast<std::size_t>(cy) * nx_ + cx] >= h) return h;
   auto visit = [&](int bx, int by) {
     const int b = by * nx_ + bx;
     // The distance from x to the bin bounds what its sources can give.

@@ -39,7 +39,8 @@ class FeatureSize {
   double cell_ = 1.0, finest_ = 0.0;
   int nx_ = 0, ny_ = 0;
   std::vector<int> start_, order_;  // bin b holds order_[start_[b] .. start_[b + 1])
-  std::vector<double> least_;
+  std::vector<double> least_;  // per bin: the least size a source in it wants
+  std::vector<double> floor_;  // per bin: the least size anywhere in it
 };
 
 // min(cap, size), as the size function the DistMesh engine takes; shares `size`.
