@@ -42,10 +42,12 @@ struct DistMeshProblem {
   std::vector<Vec2> fixed{};                  // mesh nodes that never move (corners)
   std::optional<DistanceFunction> interface{};  // internal boundary dI = 0 the mesh follows
   // Segments between fixed points (pairs of indices into `fixed`) that must be mesh
-  // edges. When given, the fixed points are the whole boundary (the mesh stage's shared
-  // seeds): the mesh is a constrained Delaunay triangulation, no point is seeded on or
-  // projected onto the boundary, and points that leave the domain are pulled back inside
-  // to a third of their size from the boundary. Every fixed point is kept, in order.
+  // edges. When given, they are closed rings and the fixed points are the whole boundary
+  // (the mesh stage's shared seeds): the mesh is a constrained Delaunay triangulation
+  // whose inside is told by the rings, no point is seeded on or projected onto the
+  // boundary, points that leave the domain are pulled back inside to half their size
+  // from the boundary, and after the iterations poor triangles get Steiner points or lose
+  // crowding points. Every fixed point is kept, in order.
   std::vector<std::array<int, 2>> constraints{};
   // The size function gives absolute lengths (not scaled so that its least value is h0);
   // h0 is then the finest lattice spacing and must not exceed the size anywhere.

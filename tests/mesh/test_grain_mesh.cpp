@@ -80,18 +80,19 @@ TEST_CASE("grain-mode meshes conform to their tessellation", "[mesh][grain]") {
 }
 
 TEST_CASE("binder-mode meshes conform to their tessellation", "[mesh][grain]") {
-  for (bool periodic : {true, false}) {
-    INFO("periodic " << periodic);
-    TessellationOptions o;
-    o.grains = 12;
-    o.periodic = periodic;
-    o.lloyd_iterations = 2;
-    o.phase_mode = PhaseMode::binder;
-    o.matrix_phase = 1;
-    o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.3, false, 211e9, 0.31}};
-    Rng rng(3);
-    check_mesh(tessellate(o, rng), 30);
-  }
+  for (bool periodic : {true, false})
+    for (std::uint64_t seed : {3u, 4u}) {
+      INFO("periodic " << periodic << " seed " << seed);
+      TessellationOptions o;
+      o.grains = 12;
+      o.periodic = periodic;
+      o.lloyd_iterations = 2;
+      o.phase_mode = PhaseMode::binder;
+      o.matrix_phase = 1;
+      o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.3, false, 211e9, 0.31}};
+      Rng rng(seed);
+      check_mesh(tessellate(o, rng), 30);
+    }
 }
 
 namespace {
