@@ -9,6 +9,7 @@
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape_parser.hpp"
+#include "pipelines/export_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 
@@ -163,6 +164,12 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   StagedOutput staged(out);
   write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
   write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width});
+  // For the export: the bounding box is the cell; inside the interface is the second phase.
+  MeshDescription description;
+  for (const Vec2 p : mesh.points) description.cell.extend(p);
+  description.phases.push_back({job.problem.interface ? "matrix" : "solid", {}, {}});
+  if (job.problem.interface) description.phases.push_back({"inclusion", {}, {}});
+  write_mesh_description(staged.dir() / "mesh.json", description);
 
   const DistMeshStats& s = result.stats;
   Json report;

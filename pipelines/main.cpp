@@ -13,6 +13,7 @@
 #include "common/errors.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
+#include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
@@ -29,6 +30,8 @@ constexpr const char* kUsage =
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
     "      mesh every grain of a tessellation, conforming and periodic\n"
+    "  export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]\n"
+    "      an OpenFOAM case for solidDisplacementFoam from a mesh of grainmesh mesh or domain\n"
     "  check TESSELLATION.json MESH.vtu\n"
     "      check that a mesh conforms to its tessellation (exit 0) or name the violation (exit 3)\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
@@ -104,6 +107,20 @@ int mesh_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// `grainmesh export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]`.
+int export_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]");
+  desc.add_options()("config", po::value<std::string>(), "export config file (INI) with export.*, load.* and phase.NAME.E/nu keys")(
+      "force", "replace CASE even when it is a non-empty directory");
+  const auto vm = parse_command("export", desc, "mesh", "mesh.vtu written by grainmesh mesh or domain", args);
+  if (!vm) return kOk;
+  const Config config = vm->count("config") ? Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm))
+                                            : Config::from_text("", "--set", overrides(*vm));
+  run_export_command((*vm)["mesh"].as<std::string>(), config, (*vm)["output"].as<std::string>(),
+                     vm->count("force") ? Replace::anything : Replace::empty_only);
+  return kOk;
+}
+
 // `grainmesh check TESSELLATION.json MESH.vtu`.
 int check_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh check TESSELLATION.json MESH.vtu");
@@ -144,6 +161,7 @@ int main(int argc, char** argv) {
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
     if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "check") return check_main(rest);
+    if (args[0] == "export") return export_main(rest);
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const ConfigError& e) {

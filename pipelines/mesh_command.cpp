@@ -11,6 +11,7 @@
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/export_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"
@@ -95,6 +96,9 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   const Vec2 centre{0.5 * t.width, 0.5 * t.height}, half{0.5 * side, 0.5 * side};
   write_mesh_png(staged.dir() / "mesh_detail.png", by_phase,
                  {.width_px = job.picture_width, .outline_by = m.mesh.region, .view = Box{centre - half, centre + half}});
+  MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
+  for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  write_mesh_description(staged.dir() / "mesh.json", description);
   Json report;
   report["command"] = "mesh";
   report["tessellation"] = tessellation.string();
@@ -119,7 +123,7 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   write_json(staged.dir() / "report.json", report);
   staged.commit();
   std::printf("grainmesh mesh: %zu points, %zu triangles (%.0f per grain), q_min %.3f, q_mean %.3f, conforming "
-              "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.png, mesh_detail.png, report.json}\n",
+              "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.json, mesh.png, mesh_detail.png, report.json}\n",
               m.mesh.points.size(), m.mesh.triangles.size(), report["cells_per_grain_mean"].get<double>(), q.q_min,
               q.q_mean, m.seconds, out.string().c_str());
 }

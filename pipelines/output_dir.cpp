@@ -22,18 +22,22 @@ fs::path hidden_sibling(const fs::path& dir, const char* tag) {
 }
 }  // namespace
 
-void check_output_replaceable(const fs::path& final_dir) {
+void check_output_replaceable(const fs::path& final_dir, Replace policy) {
   std::error_code ec;
   if (!fs::exists(final_dir, ec)) return;
   if (!fs::is_directory(final_dir, ec))
     throw IoError(final_dir.string() + ": exists and is not a directory");
-  if (!fs::is_empty(final_dir, ec) && !fs::exists(final_dir / "report.json", ec))
+  if (policy == Replace::anything || fs::is_empty(final_dir, ec)) return;
+  if (policy == Replace::empty_only)
+    throw IoError(final_dir.string() + ": exists and is not empty; use --force to replace it");
+  if (!fs::exists(final_dir / "report.json", ec))
     throw IoError(final_dir.string() + ": exists and is not a grainmesh output (no report.json); refusing to replace it");
 }
 
-StagedOutput::StagedOutput(fs::path final_dir) : final_(fs::absolute(std::move(final_dir)).lexically_normal()) {
+StagedOutput::StagedOutput(fs::path final_dir, Replace policy)
+    : final_(fs::absolute(std::move(final_dir)).lexically_normal()), policy_(policy) {
   if (final_.filename().empty()) final_ = final_.parent_path();
-  check_output_replaceable(final_);
+  check_output_replaceable(final_, policy_);
   const fs::path parent = final_.parent_path();
   std::error_code ec;
   fs::create_directories(parent, ec);
@@ -54,7 +58,7 @@ void StagedOutput::commit() {
   std::error_code ec;
   fs::path old;
   if (fs::exists(final_, ec)) {
-    check_output_replaceable(final_);
+    check_output_replaceable(final_, policy_);
     old = hidden_sibling(final_, "old");
     fs::remove_all(old, ec);
     fs::rename(final_, old, ec);

@@ -7,12 +7,19 @@
 
 namespace grainmesh {
 
+// Which existing output directory may be replaced.
+enum class Replace {
+  earlier_output,  // an empty one, or one holding a report.json (an earlier grainmesh output)
+  empty_only,      // an empty one only
+  anything,        // any directory (--force)
+};
+
 class StagedOutput {
  public:
   // Creates the staging directory (and the parents of `final_dir`). Refuses, with
   // IoError, to later replace an existing `final_dir` that is not a directory, or that
-  // is a non-empty directory without a report.json (not an earlier grainmesh output).
-  explicit StagedOutput(std::filesystem::path final_dir);
+  // the policy does not allow to replace.
+  explicit StagedOutput(std::filesystem::path final_dir, Replace policy = Replace::earlier_output);
   ~StagedOutput();  // removes the staging directory unless committed
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
@@ -24,11 +31,12 @@ class StagedOutput {
 
  private:
   std::filesystem::path final_, staging_;
+  Replace policy_;
   bool committed_ = false;
 };
 
 // Checks, before any work is done, that `final_dir` could be replaced (see above).
-void check_output_replaceable(const std::filesystem::path& final_dir);
+void check_output_replaceable(const std::filesystem::path& final_dir, Replace policy = Replace::earlier_output);
 
 // Writes `text` to `file` through a temporary file and a rename. Throws IoError.
 void write_text_file(const std::filesystem::path& file, const std::string& text);

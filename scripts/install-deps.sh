@@ -13,6 +13,7 @@ packages=(
   libtbb-dev                            # parallel loops
   libcairo2-dev                         # pictures
   nlohmann-json3-dev                    # reports
+  openfoam                              # checkMesh and solidDisplacementFoam in the tests
 )
 
 missing=()

@@ -1,0 +1,480 @@
+#include "export/foam.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <string_view>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace grainmesh {
+namespace {
+
+enum Side { kLeft, kRight, kBottom, kTop, kOther };
+
+// The side of the cell a boundary edge lies on; within 1e-9 of the cell's size, so that
+// meshes whose sides were projected (domain meshes) count too.
+Side side_of(const Box& cell, Vec2 a, Vec2 b) {
+  const double tol = 1e-9 * std::max(cell.width(), cell.height());
+  auto near = [tol](double u, double v) { return std::abs(u - v) <= tol; };
+  if (near(a.x, cell.lo.x) && near(b.x, cell.lo.x)) return kLeft;
+  if (near(a.x, cell.hi.x) && near(b.x, cell.hi.x)) return kRight;
+  if (near(a.y, cell.lo.y) && near(b.y, cell.lo.y)) return kBottom;
+  if (near(a.y, cell.hi.y) && near(b.y, cell.hi.y)) return kTop;
+  return kOther;
+}
+
+constexpr std::array<const char*, 4> kSideName{"left", "right", "bottom", "top"};
+
+// A side face: the edge a -> b runs counter-clockwise round its owner.
+struct SideFace {
+  int a, b, owner;
+};
+
+}  // namespace
+
+PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
+  const TriMesh& mesh = m.mesh;
+  const int n = static_cast<int>(mesh.points.size());
+  PolyMesh pm;
+  pm.points2d = mesh.points;
+  pm.cells = static_cast<int>(mesh.triangles.size());
+  const std::vector<MeshEdge> edges = mesh_edges(mesh);
+  if (o.thickness > 0.0) {
+    pm.thickness = o.thickness;
+  } else {
+    double sum = 0.0;
+    for (const MeshEdge& e : edges) sum += norm(mesh.points[e.a] - mesh.points[e.b]);
+    pm.thickness = edges.empty() ? 1.0 : sum / static_cast<double>(edges.size());
+  }
+  auto add_face = [&](std::initializer_list<int> pts, int owner) {
+    pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+    pm.face_points.insert(pm.face_points.end(), pts);
+    pm.owner.push_back(owner);
+  };
+
+  // Internal faces in upper-triangular order: by owner, then neighbour.
+  struct Internal {
+    int owner, neighbour, a, b;  // a -> b counter-clockwise round the owner
+  };
+  std::vector<Internal> internal;
+  std::array<std::vector<SideFace>, 5> sides;
+  for (const MeshEdge& e : edges) {
+    if (e.right < 0) {
+      sides[side_of(m.cell, mesh.points[e.a], mesh.points[e.b])].push_back({e.a, e.b, e.left});
+    } else if (e.left < e.right) {
+      internal.push_back({e.left, e.right, e.a, e.b});
+    } else {
+      internal.push_back({e.right, e.left, e.b, e.a});
+    }
+  }
+  std::sort(internal.begin(), internal.end(), [](const Internal& x, const Internal& y) {
+    return x.owner != y.owner ? x.owner < y.owner : x.neighbour < y.neighbour;
+  });
+  pm.face_start.reserve(internal.size() + 2 * mesh.triangles.size() + 8);
+  for (const Internal& f : internal) {
+    add_face({f.a, f.b, f.b + n, f.a + n}, f.owner);
+    pm.neighbour.push_back(f.neighbour);
+  }
+
+  // Side patches. Cyclic pairs list their faces along the side, so face i of one
+  // matches face i of the other; the others by owner.
+  const bool cyclic = o.cyclic && m.periodic;
+  auto along = [&](const SideFace& f, int side) {
+    const Vec2 mid = 0.5 * (mesh.points[f.a] + mesh.points[f.b]);
+    return side < 2 ? mid.y : mid.x;
+  };
+  for (int s = 0; s < 4; ++s)
+    std::sort(sides[s].begin(), sides[s].end(), [&](const SideFace& x, const SideFace& y) {
+      return cyclic ? along(x, s) < along(y, s) : x.owner < y.owner;
+    });
+  if (cyclic) {
+    if (!sides[kOther].empty())
+      throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");
+    for (int s : {kLeft, kBottom}) {
+      const auto& low = sides[s];
+      const auto& high = sides[s + 1];
+      const double tol = 1e-9 * std::max(m.cell.width(), m.cell.height());
+      bool match = low.size() == high.size();
+      for (std::size_t k = 0; match && k < low.size(); ++k) match = std::abs(along(low[k], s) - along(high[k], s)) <= tol;
+      if (!match)
+        throw GeometryError(std::string("export: the faces of ") + kSideName[s] + " and " + kSideName[s + 1] +
+                            " do not pair (is the mesh periodic?)");
+    }
+  }
+  const bool top_free = o.uniaxial;
+  for (int s = 0; s < 5; ++s) {
+    if (s == kOther && sides[s].empty()) continue;
+    PolyMesh::Patch p;
+    p.name = s == kOther ? "boundary" : kSideName[s];
+    p.start = pm.faces();
+    p.size = static_cast<int>(sides[s].size());
+    if (cyclic && s < 4) {
+      p.type = "cyclic";
+      p.neighbour_patch = kSideName[s ^ 1];
+      const Vec2 shift = s < 2 ? Vec2{m.cell.width(), 0.0} : Vec2{0.0, m.cell.height()};
+      p.separation = (s % 2 == 0) ? shift : -shift;
+    } else if (s == kLeft || s == kBottom || (s == kTop && !top_free)) {
+      p.type = "symmetryPlane";
+    } else {
+      p.type = "patch";
+    }
+    // A coupled face starts at the point opposite its partner's first point: the high
+    // side's faces start at their other end.
+    const bool high = cyclic && (s == kRight || s == kTop);
+    for (const SideFace& f : sides[s])
+      high ? add_face({f.b, f.b + n, f.a + n, f.a}, f.owner) : add_face({f.a, f.b, f.b + n, f.a + n}, f.owner);
+    pm.patches.push_back(p);
+  }
+  PolyMesh::Patch empty{.name = "frontAndBack", .type = "empty", .start = pm.faces(),
+                        .size = 2 * pm.cells, .neighbour_patch = {}, .separation = {}};
+  for (int t = 0; t < pm.cells; ++t) {
+    const auto& v = mesh.triangles[t];
+    add_face({v[0], v[2], v[1]}, t);              // z = 0, facing down
+  }
+  for (int t = 0; t < pm.cells; ++t) {
+    const auto& v = mesh.triangles[t];
+    add_face({v[0] + n, v[1] + n, v[2] + n}, t);  // z = thickness, facing up
+  }
+  pm.patches.push_back(empty);
+  pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+
+  // Zones: a cellZone per phase (every cell in exactly one), optionally per grain.
+  for (std::size_t p = 0; p < m.phases.size(); ++p) {
+    std::vector<int> cells;
+    for (int t = 0; t < pm.cells; ++t)
+      if (m.phase[t] == static_cast<int>(p)) cells.push_back(t);
+    pm.cell_zones.emplace_back(m.phases[p].name, std::move(cells));
+  }
+  if (o.grain_zones) {
+    std::map<int, std::vector<int>> by_grain;
+    for (int t = 0; t < pm.cells; ++t) by_grain[mesh.region[t]].push_back(t);
+    for (auto& [g, cells] : by_grain) pm.cell_zones.emplace_back("grain" + std::to_string(g), std::move(cells));
+  }
+  // faceZones: grain boundaries and phase interfaces; a face's flip says that it points
+  // from the higher label to the lower.
+  PolyMesh::FaceZone grains{.name = "grainBoundaries", .faces = {}, .flip = {}};
+  PolyMesh::FaceZone interfaces{.name = "phaseInterfaces", .faces = {}, .flip = {}};
+  for (int f = 0; f < pm.internal_faces(); ++f) {
+    const int o_ = pm.owner[f], nb = pm.neighbour[f];
+    if (mesh.region[o_] != mesh.region[nb]) {
+      grains.faces.push_back(f);
+      grains.flip.push_back(mesh.region[o_] > mesh.region[nb]);
+    }
+    if (m.phase[o_] != m.phase[nb]) {
+      interfaces.faces.push_back(f);
+      interfaces.flip.push_back(m.phase[o_] > m.phase[nb]);
+    }
+  }
+  pm.face_zones.push_back(std::move(grains));
+  pm.face_zones.push_back(std::move(interfaces));
+  return pm;
+}
+
+namespace {
+
+// One OpenFOAM file, ASCII or binary (labels int32, scalars double, little-endian).
+class FoamFile {
+ public:
+  FoamFile(const std::filesystem::path& file, std::string_view cls, std::string_view location, std::string_view object,
+           bool binary)
+      : file_(file), binary_(binary) {
+    out_ += "/*--------------------------------*- C++ -*----------------------------------*\\\n";
+    out_ += "  Written by grainmesh\n";
+    out_ += "\\*---------------------------------------------------------------------------*/\n";
+    out_ += "FoamFile\n{\n    version     2.0;\n    format      ";
+    out_ += binary ? "binary;\n    arch        \"LSB;label=32;scalar=64\";\n" : "ascii;\n";
+    out_ += "    class       " + std::string(cls) + ";\n";
+    if (!location.empty()) out_ += "    location    \"" + std::string(location) + "\";\n";
+    out_ += "    object      " + std::string(object) + ";\n}\n\n";
+  }
+
+  FoamFile& text(std::string_view s) {
+    out_ += s;
+    return *this;
+  }
+  FoamFile& number(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out_.append(buf, r.ptr);
+    return *this;
+  }
+  FoamFile& number(int v) {
+    char buf[16];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out_.append(buf, r.ptr);
+    return *this;
+  }
+  // N ( ... ) of int32 labels.
+  FoamFile& labels(const std::vector<int>& v) {
+    number(static_cast<int>(v.size())).text("\n(");
+    if (binary_) {
+      raw(v.data(), v.size() * sizeof(int));
+    } else {
+      for (std::size_t i = 0; i < v.size(); ++i) number(v[i]).text(i + 1 < v.size() ? "\n" : "");
+      if (!v.empty()) text("\n");
+    }
+    return text(")\n");
+  }
+  FoamFile& scalars(const std::vector<double>& v) {
+    number(static_cast<int>(v.size())).text("\n(");
+    if (binary_) {
+      raw(v.data(), v.size() * sizeof(double));
+    } else {
+      for (double x : v) number(x).text("\n");
+    }
+    return text(")\n");
+  }
+  // Vectors given as consecutive triples.
+  FoamFile& vectors(const std::vector<double>& xyz) {
+    number(static_cast<int>(xyz.size() / 3)).text("\n(");
+    if (binary_) {
+      raw(xyz.data(), xyz.size() * sizeof(double));
+    } else {
+      for (std::size_t i = 0; i < xyz.size(); i += 3)
+        text("(").number(xyz[i]).text(" ").number(xyz[i + 1]).text(" ").number(xyz[i + 2]).text(")\n");
+    }
+    return text(")\n");
+  }
+  bool binary() const { return binary_; }
+
+  void write() {
+    out_ += "\n// ************************************************************************* //\n";
+    std::ofstream f(file_, std::ios::binary);
+    f.write(out_.data(), static_cast<std::streamsize>(out_.size()));
+    if (!f) throw IoError(file_.string() + ": cannot write");
+  }
+
+ private:
+  void raw(const void* p, std::size_t bytes) { out_.append(static_cast<const char*>(p), bytes); }
+  std::filesystem::path file_;
+  bool binary_;
+  std::string out_;
+};
+
+void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const FoamOptions& o) {
+  const bool bin = o.binary;
+  const std::string loc = "constant/polyMesh";
+  const double s = o.convert_to_meters;
+  std::vector<double> xyz;
+  xyz.reserve(6 * pm.points2d.size());
+  for (double z : {0.0, pm.thickness})
+    for (const Vec2 p : pm.points2d) xyz.insert(xyz.end(), {s * p.x, s * p.y, s * z});
+  FoamFile(dir / "points", "vectorField", loc, "points", bin).vectors(xyz).write();
+
+  FoamFile faces(dir / "faces", bin ? "faceCompactList" : "faceList", loc, "faces", bin);
+  if (bin) {
+    faces.labels(pm.face_start).labels(pm.face_points);
+  } else {
+    faces.number(pm.faces()).text("\n(\n");
+    for (int f = 0; f < pm.faces(); ++f) {
+      faces.number(pm.face_start[f + 1] - pm.face_start[f]).text("(");
+      for (int k = pm.face_start[f]; k < pm.face_start[f + 1]; ++k)
+        faces.number(pm.face_points[k]).text(k + 1 < pm.face_start[f + 1] ? " " : ")\n");
+    }
+    faces.text(")\n");
+  }
+  faces.write();
+
+  FoamFile(dir / "owner", "labelList", loc, "owner", bin).labels(pm.owner).write();
+  FoamFile(dir / "neighbour", "labelList", loc, "neighbour", bin).labels(pm.neighbour).write();
+
+  FoamFile boundary(dir / "boundary", "polyBoundaryMesh", loc, "boundary", false);
+  boundary.number(static_cast<int>(pm.patches.size())).text("\n(\n");
+  for (const PolyMesh::Patch& p : pm.patches) {
+    boundary.text("    " + p.name + "\n    {\n        type            " + p.type + ";\n");
+    if (p.type != "patch") boundary.text("        inGroups        List<word> 1(" + p.type + ");\n");
+    boundary.text("        nFaces          ").number(p.size).text(";\n        startFace       ").number(p.start).text(";\n");
+    if (p.type == "cyclic") {
+      boundary.text("        matchTolerance  0.0001;\n        transform       translational;\n");
+      boundary.text("        neighbourPatch  " + p.neighbour_patch + ";\n        separationVector (")
+          .number(s * p.separation.x)
+          .text(" ")
+          .number(s * p.separation.y)
+          .text(" 0);\n");
+    }
+    boundary.text("    }\n");
+  }
+  boundary.text(")\n").write();
+
+  FoamFile cz(dir / "cellZones", "regIOobject", loc, "cellZones", bin);
+  cz.number(static_cast<int>(pm.cell_zones.size())).text("\n(\n");
+  for (const auto& [name, cells] : pm.cell_zones) {
+    cz.text(name + "\n{\n    type cellZone;\ncellLabels      List<label> ").labels(cells).text(";\n}\n");
+  }
+  cz.text(")\n").write();
+
+  FoamFile fz(dir / "faceZones", "regIOobject", loc, "faceZones", bin);
+  fz.number(static_cast<int>(pm.face_zones.size())).text("\n(\n");
+  for (const PolyMesh::FaceZone& z : pm.face_zones) {
+    fz.text(z.name + "\n{\n    type faceZone;\nfaceLabels      List<label> ").labels(z.faces).text(";\nflipMap         List<bool> ");
+    // bools are written as labels in ASCII; binary List<bool> is one byte each
+    if (bin) {
+      fz.number(static_cast<int>(z.flip.size())).text("\n(");
+      fz.text(std::string_view(z.flip.data(), z.flip.size())).text(")\n");
+    } else {
+      std::vector<int> flip(z.flip.begin(), z.flip.end());
+      fz.labels(flip);
+    }
+    fz.text(";\n}\n");
+  }
+  fz.text(")\n").write();
+}
+
+// The boundary entry of a field for each patch: constraint types follow the patch.
+std::string constraint_entry(const PolyMesh::Patch& p) {
+  if (p.type == "symmetryPlane" || p.type == "empty" || p.type == "cyclic") return "type " + p.type + ";";
+  return "";
+}
+
+void write_scalar_field(const std::filesystem::path& file, const std::string& object, const std::string& dimensions,
+                        const std::vector<double>& values, const PolyMesh& pm, bool binary) {
+  FoamFile f(file, "volScalarField", "0", object, binary);
+  f.text("dimensions      " + dimensions + ";\n\ninternalField   nonuniform List<scalar> ").scalars(values);
+  f.text(";\n\nboundaryField\n{\n");
+  for (const PolyMesh::Patch& p : pm.patches) {
+    const std::string c = constraint_entry(p);
+    f.text("    " + p.name + "\n    {\n        " + (c.empty() ? "type zeroGradient;" : c) + "\n    }\n");
+  }
+  f.text("}\n").write();
+}
+
+std::string dictionary_header(const std::string& location, const std::string& object) {
+  return "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+         "  Written by grainmesh\n"
+         "\\*---------------------------------------------------------------------------*/\n"
+         "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
+         "    location    \"" + location + "\";\n    object      " + object + ";\n}\n\n";
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream f(file, std::ios::binary);
+  f << text;
+  if (!f) throw IoError(file.string() + ": cannot write");
+}
+
+std::string number_text(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+  for (const FoamPhase& p : m.phases) {
+    if (!(p.youngs_modulus > 0.0) || !std::isfinite(p.youngs_modulus))
+      throw ConfigError("phase." + p.name + ".E: must be positive, got " + to_text(p.youngs_modulus));
+    if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5))
+      throw ConfigError("phase." + p.name + ".nu: must lie in (-1, 0.5), got " + to_text(p.poisson_ratio));
+  }
+  if (m.phase.size() != m.mesh.triangles.size()) throw GeometryError("export: the mesh needs a phase per triangle");
+  for (int ph : m.phase)
+    if (ph < 0 || static_cast<std::size_t>(ph) >= m.phases.size())
+      throw GeometryError("export: a triangle names phase " + std::to_string(ph) + ", which does not exist");
+  if (!(o.convert_to_meters > 0.0) || !std::isfinite(o.convert_to_meters))
+    throw ConfigError("export.convert_to_meters: must be positive, got " + to_text(o.convert_to_meters));
+  if (!(o.thickness >= 0.0) || !std::isfinite(o.thickness))
+    throw ConfigError("export.thickness: must be positive (or 0 for the mean edge length), got " + to_text(o.thickness));
+
+  const PolyMesh pm = build_polymesh(m, o);
+  for (const char* sub : {"constant/polyMesh", "0", "system"}) std::filesystem::create_directories(dir / sub);
+  write_polymesh(dir / "constant/polyMesh", pm, o);
+
+  // The interpolation of the stiffness: see FoamOptions.
+  double stiff_min = 1e300, stiff_max = 0.0;
+  for (const FoamPhase& p : m.phases) {
+    const double nu = p.poisson_ratio, E = p.youngs_modulus;
+    const double lambda = o.plane_stress ? E * nu / (1 - nu * nu) : E * nu / ((1 + nu) * (1 - 2 * nu));
+    const double stiffness = E / (1 + nu) + lambda;  // 2 mu + lambda
+    stiff_min = std::min(stiff_min, stiffness);
+    stiff_max = std::max(stiff_max, stiffness);
+  }
+  const bool harmonic = o.interpolation == FoamOptions::Interpolation::harmonic ||
+                        (o.interpolation == FoamOptions::Interpolation::automatic && stiff_max <= 3.0 * stiff_min);
+
+  // Fields from each cell's phase.
+  std::vector<double> E(pm.cells), nu(pm.cells);
+  for (int t = 0; t < pm.cells; ++t) {
+    E[t] = m.phases[m.phase[t]].youngs_modulus;
+    nu[t] = m.phases[m.phase[t]].poisson_ratio;
+  }
+  write_scalar_field(dir / "0/E", "E", "[1 -1 -2 0 0 0 0]", E, pm, o.binary);
+  write_scalar_field(dir / "0/nu", "nu", "[0 0 0 0 0 0 0]", nu, pm, o.binary);
+
+  // Displacement: the load on `right`, symmetry or traction-free elsewhere.
+  const std::string d = number_text(o.displacement * o.convert_to_meters);
+  std::string D = dictionary_header("0", "D");
+  D.replace(D.find("class       dictionary"), std::string("class       dictionary").size(), "class       volVectorField");
+  D += "dimensions      [0 1 0 0 0 0 0];\n\ninternalField   uniform (0 0 0);\n\nboundaryField\n{\n";
+  for (const PolyMesh::Patch& p : pm.patches) {
+    std::string entry = constraint_entry(p);
+    if (entry.empty() && p.name == "right") {
+      // The normal component fixed, the tangential free (zero gradient).
+      entry = "type            directionMixed;\n        refValue        uniform (" + d +
+              " 0 0);\n        refGradient     uniform (0 0 0);\n        valueFraction   uniform (1 0 0 0 0 0);\n"
+              "        value           uniform (" + d + " 0 0);";
+    } else if (entry.empty()) {
+      entry = "type            tractionDisplacement;\n        traction        uniform (0 0 0);\n"
+              "        pressure        uniform 0;\n        value           uniform (0 0 0);";
+    }
+    D += "    " + p.name + "\n    {\n        " + entry + "\n    }\n";
+  }
+  D += "}\n";
+  write_text(dir / "0/D", D);
+
+  write_text(dir / "constant/mechanicalProperties",
+             dictionary_header("constant", "mechanicalProperties") +
+                 "// E and nu vary by phase: read from 0/E and 0/nu.\nrho\n{\n    type        uniform;\n"
+                 "    value       1;\n}\n\nnu\n{\n    type        field;\n}\n\nE\n{\n    type        field;\n}\n\n"
+                 "planeStress     " + std::string(o.plane_stress ? "yes" : "no") + ";\n");
+  write_text(dir / "constant/thermalProperties",
+             dictionary_header("constant", "thermalProperties") + "thermalStress   no;\n");
+  write_text(dir / "system/controlDict",
+             dictionary_header("system", "controlDict") +
+                 "application     solidDisplacementFoam;\n\nstartFrom       startTime;\nstartTime       0;\n"
+                 "stopAt          endTime;\nendTime         1;\ndeltaT          1;\n\n"
+                 "// One steady step: the corrector loop of fvSolution runs to its tolerance.\n"
+                 "writeControl    timeStep;\nwriteInterval   1;\npurgeWrite      0;\nwriteFormat     " +
+                 std::string(o.binary ? "binary" : "ascii") +
+                 ";\nwritePrecision  12;\nwriteCompression off;\ntimeFormat      general;\ntimePrecision   6;\n"
+                 "runTimeModifiable false;\n");
+  const std::string stiffness = harmonic
+      ? "    // The stiffness interpolated harmonically across faces: exact at phase interfaces.\n"
+        "    laplacian(DD,D) Gauss harmonic corrected;\n"
+      : "    // The stiffness interpolated linearly: harmonic diverges at this stiffness contrast.\n"
+        "    laplacian(DD,D) Gauss linear corrected;\n";
+  write_text(dir / "system/fvSchemes",
+             dictionary_header("system", "fvSchemes") +
+                 "d2dt2Schemes\n{\n    default         steadyState;\n}\n\nddtSchemes\n{\n    default         Euler;\n}\n\n"
+                 "gradSchemes\n{\n    default         leastSquares;\n}\n\n"
+                 "divSchemes\n{\n    default         none;\n    div(sigmaD)     Gauss linear;\n}\n\n"
+                 "laplacianSchemes\n{\n    default         none;\n" + stiffness +
+                 "    laplacian(kappa,T) Gauss linear corrected;\n}\n\n"
+                 "interpolationSchemes\n{\n    default         linear;\n}\n\nsnGradSchemes\n{\n    default         none;\n}\n");
+  write_text(dir / "system/fvSolution",
+             dictionary_header("system", "fvSolution") +
+                 "solvers\n{\n    \"(D|T)\"\n    {\n        solver          GAMG;\n        tolerance       1e-12;\n"
+                 "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n}\n\n"
+                 "// Segregated corrections until the displacement equation's initial residual\n"
+                 "// falls below D (nCorrectors only bounds them).\n"
+                 "stressAnalysis\n{\n    compactNormalStress yes;\n    nCorrectors     100000;\n    D               1e-08;\n}\n");
+  write_text(dir / "Allrun",
+             "#!/bin/sh\n# Checks the mesh and solves; logs in log.*.\ncd \"${0%/*}\" || exit 1\n"
+             "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\"\n"
+             "checkMesh > log.checkMesh 2>&1 || { echo \"checkMesh failed: see log.checkMesh\"; exit 1; }\n"
+             "solidDisplacementFoam > log.solidDisplacementFoam 2>&1 || { echo \"solidDisplacementFoam failed: see "
+             "log.solidDisplacementFoam\"; exit 1; }\n");
+  std::filesystem::permissions(dir / "Allrun", std::filesystem::perms::owner_exec | std::filesystem::perms::group_exec |
+                                                   std::filesystem::perms::others_exec,
+                               std::filesystem::perm_options::add);
+  write_text(dir / "case.foam", "");
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,89 @@
+// OpenFOAM output: the triangle mesh extruded one cell thick into prisms, written as a
+// polyMesh with phase cellZones and grain-boundary faceZones, and a case that
+// solidDisplacementFoam (OpenFOAM v1912) runs as it is: two-phase linear elasticity.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "mesh/trimesh.hpp"
+
+namespace grainmesh {
+
+struct FoamPhase {
+  std::string name;
+  double youngs_modulus = 0.0;  // E, Pa
+  double poisson_ratio = 0.0;   // nu, in (-1, 0.5)
+};
+
+// What the export needs of a mesh: triangles with a grain (mesh.region) and a phase each,
+// the phases, and the cell whose sides become the patches left, right, bottom, top
+// (boundary edges elsewhere, e.g. around a hole, form the patch `boundary`).
+struct ExportMesh {
+  TriMesh mesh;
+  std::vector<int> phase;         // #T, index into phases
+  std::vector<FoamPhase> phases;
+  Box cell;
+  bool periodic = false;          // opposite sides carry matching nodes
+};
+
+struct FoamOptions {
+  double thickness = 0.0;          // extrusion, mesh units; 0 = the mean edge length
+  double convert_to_meters = 1e-6; // mesh units to metres (config lengths in micrometres)
+  bool cyclic = false;             // periodic meshes: left/right and bottom/top as cyclic pairs
+  bool binary = false;             // binary polyMesh and fields instead of ASCII
+  bool grain_zones = false;        // a cellZone per grain besides one per phase
+  // The load: a normal displacement of `right` (mesh units; the thesis' 0.001 um),
+  // symmetry planes on left and bottom, and on top unless uniaxial (then traction-free).
+  double displacement = 0.001;
+  bool uniaxial = false;
+  bool plane_stress = false;       // default plane strain
+  // How the stiffness 2 mu + lambda is interpolated to faces in laplacian(DD,D).
+  // Harmonic is exact across an interface, but solidDisplacementFoam's explicit
+  // correction is interpolated linearly, and the two together diverge once the phases'
+  // stiffnesses differ by more than about 4 (measured); auto takes harmonic up to a
+  // ratio of 3, linear above.
+  enum class Interpolation { automatic, harmonic, linear } interpolation = Interpolation::automatic;
+};
+
+// The polyMesh as OpenFOAM orders it: internal faces first, sorted by owner then
+// neighbour (owner < neighbour, normals from owner to neighbour), then the boundary
+// faces patch by patch, outward. Cells are the triangles, in their order.
+struct PolyMesh {
+  struct Patch {
+    std::string name, type;        // type: patch, symmetryPlane, empty, cyclic
+    int start = 0, size = 0;
+    std::string neighbour_patch;   // cyclic only
+    Vec2 separation{};             // cyclic only: neighbour = this + separation (mesh units)
+  };
+  struct FaceZone {
+    std::string name;
+    std::vector<int> faces;
+    std::vector<char> flip;        // 1 where the face points from the higher label to the lower
+  };
+  std::vector<Vec2> points2d;      // the mesh's points; the polyMesh has them at z = 0 and z = thickness
+  double thickness = 0.0;
+  std::vector<int> face_start, face_points;  // face f: face_points[face_start[f] .. face_start[f + 1])
+  std::vector<int> owner, neighbour;         // neighbour for internal faces only
+  std::vector<Patch> patches;
+  std::vector<std::pair<std::string, std::vector<int>>> cell_zones;
+  std::vector<FaceZone> face_zones;
+  int cells = 0;
+  int internal_faces() const { return static_cast<int>(neighbour.size()); }
+  int faces() const { return static_cast<int>(owner.size()); }
+};
+
+// Builds the polyMesh. Throws GeometryError when a cyclic side's faces do not pair, or a
+// boundary edge lies on no side while the mesh is to be cyclic.
+PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
+
+// Writes a complete case into `dir` (which must exist and be empty): constant/polyMesh
+// (points, faces, owner, neighbour, boundary, cellZones, faceZones), 0/D, 0/E, 0/nu,
+// constant/mechanicalProperties and thermalProperties, system/controlDict, fvSchemes,
+// fvSolution, Allrun and an empty case.foam. Throws ConfigError for a phase without a
+// usable E or nu, IoError when a file cannot be written.
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options);
+
+}  // namespace grainmesh
