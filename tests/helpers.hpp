@@ -83,4 +83,17 @@ inline CommandResult run_grainmesh(const std::vector<std::string>& args) {
   return r;
 }
 
+// Runs an OpenFOAM program in a case directory (the Debian package needs WM_PROJECT_DIR);
+// its output goes to CASE/log.PROGRAM. Returns the exit code and that log.
+inline CommandResult run_openfoam(const std::filesystem::path& case_dir, const std::string& program) {
+  const std::filesystem::path log = case_dir / ("log." + program);
+  const std::string cmd = "cd " + shell_quote(case_dir.string()) + " && WM_PROJECT_DIR=/usr/share/openfoam " + program +
+                          " > " + shell_quote(log.string()) + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(log);
+  return r;
+}
+
 }  // namespace grainmesh::test

@@ -1,0 +1,200 @@
+// The OpenFOAM export, judged by OpenFOAM's own programs: checkMesh on our cases, and
+// solidDisplacementFoam against analytical answers.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "export/foam.hpp"
+#include "helpers.hpp"
+#include "mesh/grain_mesh.hpp"
+
+using namespace grainmesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Cell counts per zone, as checkMesh reports them under "Checking basic cellZone addressing".
+std::map<std::string, int> zone_cells(const std::string& log) {
+  std::map<std::string, int> zones;
+  const auto start = log.find("Checking basic cellZone addressing");
+  if (start == std::string::npos) return zones;
+  std::istringstream in(log.substr(start));
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);  // the column titles
+  const std::regex row(R"(^\s+(\S+)\s+(\d+)\s+\d+\s+\S+)");
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, row)) break;
+    zones[m[1]] = std::stoi(m[2]);
+  }
+  return zones;
+}
+
+// The xx components of the internal field of an ASCII volSymmTensorField file as
+// written by OpenFOAM: (xx xy xz yy yz zz) per cell.
+std::vector<double> read_sigma_xx(const fs::path& file) {
+  const std::string text = test::read_file(file);
+  auto at = text.find("internalField");
+  REQUIRE(at != std::string::npos);
+  at = text.find("List<symmTensor>", at);
+  REQUIRE(at != std::string::npos);
+  std::istringstream in(text.substr(at + 16));
+  std::size_t n = 0;
+  char paren = 0;
+  in >> n >> paren;
+  std::vector<double> xx(n);
+  for (double& x : xx) {
+    double rest[5];
+    in >> paren >> x >> rest[0] >> rest[1] >> rest[2] >> rest[3] >> rest[4] >> paren;
+  }
+  REQUIRE(in);
+  return xx;
+}
+
+ExportMesh grain_export(const Tessellation& t, const GrainMesh& m) {
+  ExportMesh e;
+  e.mesh = m.mesh;
+  e.phase = m.phase;
+  e.cell = Box{{0.0, 0.0}, {t.width, t.height}};
+  e.periodic = t.periodic;
+  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  return e;
+}
+
+Tessellation microstructure(bool periodic) {
+  TessellationOptions o;
+  o.width = 3.0;
+  o.height = 1.7;
+  o.grains = 40;
+  o.periodic = periodic;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 800e9, 0.1}, Phase{"Co", 0.2, false, 300e9, 0.1}};
+  Rng rng(5);
+  return tessellate(o, rng);
+}
+
+void check_mesh_ok(const fs::path& case_dir, const ExportMesh& e) {
+  const auto r = test::run_openfoam(case_dir, "checkMesh");
+  INFO(r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("Mesh OK.") != std::string::npos);
+  const auto zones = zone_cells(r.out);
+  for (std::size_t p = 0; p < e.phases.size(); ++p) {
+    const int written = static_cast<int>(std::count(e.phase.begin(), e.phase.end(), static_cast<int>(p)));
+    REQUIRE(zones.count(e.phases[p].name) == 1);
+    CHECK(zones.at(e.phases[p].name) == written);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("checkMesh accepts a periodic two-phase microstructure with patches and with cyclic pairs",
+          "[export][openfoam]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export(t, m);
+  for (bool cyclic : {false, true})
+    for (bool binary : {false, true}) {
+      INFO("cyclic " << cyclic << " binary " << binary);
+      test::ScratchDir dir("foam");
+      write_foam_case(dir.path(), e, {.cyclic = cyclic, .binary = binary, .grain_zones = true});
+      check_mesh_ok(dir.path(), e);
+      const std::string boundary = test::read_file(dir / "constant/polyMesh/boundary");
+      CHECK((boundary.find("cyclic") != std::string::npos) == cyclic);
+    }
+}
+
+TEST_CASE("solidDisplacementFoam converges on a two-phase microstructure case", "[export][openfoam]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  test::ScratchDir dir("solve");
+  write_foam_case(dir.path(), grain_export(t, m), {});
+  const auto r = test::run_openfoam(dir.path(), "solidDisplacementFoam");
+  INFO(r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("\nEnd") != std::string::npos);
+  // The corrector loop stopped on its tolerance (1e-8), long before its bound.
+  const std::regex residual(R"(Solving for D[xy], Initial residual = ([0-9.eE+-]+))");
+  std::vector<double> last;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), residual); it != std::sregex_iterator(); ++it)
+    last.push_back(std::stod((*it)[1]));
+  REQUIRE(last.size() >= 2);
+  CHECK(std::max(last[last.size() - 1], last[last.size() - 2]) < 1e-8);
+  CHECK(last.size() < 2 * 100000);
+  CHECK(fs::exists(dir / "1/sigma"));
+}
+
+namespace {
+
+// Two layers of phases 0 and 1 filling [0, 2] x [0, 1]: split at x = 1 (interfaces across
+// the load) or at y = 0.5 (along it).
+Tessellation two_layers(bool across, const std::vector<Phase>& phases) {
+  Tessellation t;
+  t.width = 2.0;
+  t.height = 1.0;
+  t.periodic = false;
+  t.phases = phases;
+  if (across) {
+    t.vertices = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 1}, {0, 1}};
+    t.regions = {{.grain = 0, .phase = 0, .rings = {{0, 1, 4, 5}}}, {.grain = 1, .phase = 1, .rings = {{1, 2, 3, 4}}}};
+    t.edges = {{0, 1, 0, -1}, {1, 2, 1, -1}, {2, 3, 1, -1}, {3, 4, 1, -1}, {4, 5, 0, -1}, {5, 0, 0, -1}, {1, 4, 0, 1}};
+  } else {
+    t.vertices = {{0, 0}, {2, 0}, {2, 0.5}, {2, 1}, {0, 1}, {0, 0.5}};
+    t.regions = {{.grain = 0, .phase = 0, .rings = {{0, 1, 2, 5}}}, {.grain = 1, .phase = 1, .rings = {{5, 2, 3, 4}}}};
+    t.edges = {{0, 1, 0, -1}, {1, 2, 0, -1}, {2, 3, 1, -1}, {3, 4, 1, -1}, {4, 5, 1, -1}, {5, 0, 0, -1}, {5, 2, 1, 0}};
+  }
+  for (int g = 0; g < 2; ++g)
+    t.grains.push_back({.id = g, .phase = g, .seed = {}, .area = region_area(t, t.regions[g]), .neighbours = {1 - g},
+                        .matrix = false});
+  validate(t);
+  return t;
+}
+
+// sigma_xx averaged over the cells of a solved case whose cells are the mesh's triangles.
+double mean_sigma_xx(const fs::path& case_dir, const TriMesh& mesh) {
+  const std::vector<double> s = read_sigma_xx(case_dir / "1/sigma");
+  REQUIRE(s.size() == mesh.triangles.size());
+  double sum = 0.0, area = 0.0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double a = triangle_area(mesh, static_cast<int>(k));
+    sum += s[k] * a;
+    area += a;
+  }
+  return sum / area;
+}
+
+}  // namespace
+
+TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across and along its layers",
+          "[export][openfoam][physics]") {
+  const std::vector<Phase> phases{Phase{"stiff", 0.5, false, 200e9, 0.3}, Phase{"soft", 0.5, false, 90e9, 0.2}};
+  // Plane-strain modulus M and Lame lambda of each phase; the layers are equally thick.
+  double M[2], L[2];
+  for (int p = 0; p < 2; ++p) {
+    const double E = phases[p].youngs_modulus, nu = phases[p].poisson_ratio;
+    M[p] = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    L[p] = E * nu / ((1 + nu) * (1 - 2 * nu));
+  }
+  auto mean = [](double a, double b) { return 0.5 * (a + b); };
+  const double across = 1.0 / mean(1 / M[0], 1 / M[1]);
+  const double along = mean(M[0], M[1]) - mean(L[0] * L[0] / M[0], L[1] * L[1] / M[1]) +
+                       std::pow(mean(L[0] / M[0], L[1] / M[1]), 2) / mean(1 / M[0], 1 / M[1]);
+  for (bool is_across : {true, false}) {
+    INFO((is_across ? "interfaces across the load" : "interfaces along the load"));
+    const Tessellation t = two_layers(is_across, phases);
+    const GrainMesh m = mesh_tessellation(t, {.size = 0.05, .phase_size = {}});
+    test::ScratchDir dir("laminate");
+    const FoamOptions o{};  // right moved by 0.001, symmetry elsewhere, plane strain
+    write_foam_case(dir.path(), grain_export(t, m), o);
+    const auto r = test::run_openfoam(dir.path(), "solidDisplacementFoam");
+    REQUIRE(r.exit_code == 0);
+    const double strain = o.displacement / t.width;  // the mean of d(ux)/dx, exactly
+    const double modulus = mean_sigma_xx(dir.path(), m.mesh) / strain;
+    CHECK(modulus == Approx(is_across ? across : along).epsilon(0.01));
+  }
+}
