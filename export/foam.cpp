@@ -415,7 +415,10 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
   D += "dimensions      [0 1 0 0 0 0 0];\n\ninternalField   uniform (0 0 0);\n\nboundaryField\n{\n";
   for (const PolyMesh::Patch& p : pm.patches) {
     std::string entry = constraint_entry(p);
-    if (entry.empty() && p.name == "right") {
+    if (entry.empty() && p.name == "right" && o.traction != 0.0) {
+      entry = "type            tractionDisplacement;\n        traction        uniform (" + number_text(o.traction) +
+              " 0 0);\n        pressure        uniform 0;\n        value           uniform (0 0 0);";
+    } else if (entry.empty() && p.name == "right") {
       // The normal component fixed, the tangential free (zero gradient).
       entry = "type            directionMixed;\n        refValue        uniform (" + d +
               " 0 0);\n        refGradient     uniform (0 0 0);\n        valueFraction   uniform (1 0 0 0 0 0);\n"

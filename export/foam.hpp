@@ -35,9 +35,11 @@ struct FoamOptions {
   bool cyclic = false;             // periodic meshes: left/right and bottom/top as cyclic pairs
   bool binary = false;             // binary polyMesh and fields instead of ASCII
   bool grain_zones = false;        // a cellZone per grain besides one per phase
-  // The load: a normal displacement of `right` (mesh units; the thesis' 0.001 um),
-  // symmetry planes on left and bottom, and on top unless uniaxial (then traction-free).
+  // The load: a normal displacement of `right` (mesh units; the thesis' 0.001 um) or a
+  // normal traction on it, symmetry planes on left and bottom, and on top unless uniaxial
+  // (then traction-free).
   double displacement = 0.001;
+  double traction = 0.0;           // Pa; when not 0, `right` carries this normal traction instead
   bool uniaxial = false;
   bool plane_stress = false;       // default plane strain
   // How the stiffness 2 mu + lambda is interpolated to faces in laplacian(DD,D).

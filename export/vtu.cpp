@@ -9,6 +9,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
@@ -145,6 +146,8 @@ void write_tessellation_vtp(const std::filesystem::path& file, const Tessellatio
 
 VtuContents read_vtu(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw IoError(file.string() + ": no such file");
+  // VTK's XML parser logs its own complaints to stderr; ours is the one-line error below.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   vtkNew<ErrorCatcher> errors;
   errors->watch(reader);
@@ -152,7 +155,7 @@ VtuContents read_vtu(const std::filesystem::path& file) {
   reader->Update();
   vtkUnstructuredGrid* grid = reader->GetOutput();
   if (reader->GetErrorCode() != 0 || grid == nullptr || !errors->message.empty())
-    throw IoError(file.string() + ": cannot read VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+    throw IoError(file.string() + ": cannot read VTU file (not a VTK XML unstructured grid, or damaged)");
 
   VtuContents out;
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {

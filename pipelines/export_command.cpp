@@ -68,7 +68,7 @@ const std::vector<std::string>& export_config_keys() {
   static const std::vector<std::string> keys{
       "export.thickness", "export.convert_to_meters", "export.cyclic", "export.format", "export.grain_zones",
       "export.stiffness_interpolation",
-      "load.displacement", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu"};
+      "load.displacement", "load.traction", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu"};
   return keys;
 }
 
@@ -93,6 +93,8 @@ FoamOptions read_foam_options(const Config& c) {
   else c.fail("export.stiffness_interpolation", "must be auto, harmonic or linear, got '" + interp + "'");
   o.displacement = c.number("load.displacement", o.displacement);
   if (!std::isfinite(o.displacement)) c.fail("load.displacement", "must be a finite number");
+  o.traction = c.number("load.traction", 0.0);
+  if (!std::isfinite(o.traction)) c.fail("load.traction", "must be a finite number");
   o.uniaxial = c.flag("load.uniaxial", false);
   o.plane_stress = c.flag("load.plane_stress", false);
   return o;
@@ -170,7 +172,11 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
               {"cyclic", o.cyclic && m.periodic},
               {"format", o.binary ? "binary" : "ascii"},
               {"convert_to_meters", o.convert_to_meters},
-              {"load", {{"displacement", o.displacement}, {"uniaxial", o.uniaxial}, {"plane_stress", o.plane_stress}}},
+              {"load",
+               {{"displacement", o.displacement},
+                {"traction", o.traction},
+                {"uniaxial", o.uniaxial},
+                {"plane_stress", o.plane_stress}}},
               {"seconds", seconds},
               {"peak_memory_mib", peak_memory_mib()}};
   write_json(staged.dir() / "report.json", report);

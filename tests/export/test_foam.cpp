@@ -2,6 +2,7 @@
 // solidDisplacementFoam against analytical answers.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <regex>
@@ -11,6 +12,7 @@
 #include "export/foam.hpp"
 #include "helpers.hpp"
 #include "mesh/grain_mesh.hpp"
+#include "pipelines/domain_command.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -196,5 +198,44 @@ TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across a
     const double strain = o.displacement / t.width;  // the mean of d(ux)/dx, exactly
     const double modulus = mean_sigma_xx(dir.path(), m.mesh) / strain;
     CHECK(modulus == Approx(is_across ? across : along).epsilon(0.01));
+  }
+}
+
+TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of the hole", "[export][openfoam][physics]") {
+  // OpenFOAM's plateHole tutorial: a quarter of a 20 x 20 plate with a hole of radius
+  // 0.5, 10 kPa pulling on the right, symmetry on the left and bottom, the top free.
+  const double R = 0.5, T = 1e4;
+  const Config c = Config::from_text(
+      "[domain]\nshape = difference(polygon(0 0, 10 0, 10 10, 0 10), circle(0, 0, 0.5))\n"
+      "[size]\nh0 = 0.025\nfunction = min(1 + 0.15*(sqrt(x^2+y^2) - 0.5)/0.025, 16)\n",
+      "plate_hole.ini");
+  const DistMeshResult r = mesh_domain(read_domain_job(c));
+  ExportMesh e;
+  e.mesh = r.mesh;
+  e.phase.assign(r.mesh.triangles.size(), 0);
+  e.phases = {{"steel", 2e11, 0.3}};
+  for (const Vec2 p : r.mesh.points) e.cell.extend(p);
+  test::ScratchDir dir("plate");
+  write_foam_case(dir.path(), e, {.convert_to_meters = 1.0, .traction = T, .uniaxial = true});
+  REQUIRE(test::run_openfoam(dir.path(), "checkMesh").out.find("Mesh OK.") != std::string::npos);
+  REQUIRE(test::run_openfoam(dir.path(), "solidDisplacementFoam").exit_code == 0);
+  const std::vector<double> sxx = read_sigma_xx(dir / "1/sigma");
+
+  // Kirsch: sigma_xx of an infinite plate at polar (r, theta) from the hole's centre.
+  auto kirsch = [&](Vec2 p) {
+    const double rr = norm(p), th = std::atan2(p.y, p.x), a = R * R / (rr * rr);
+    return T * (1 - a * (1.5 * std::cos(2 * th) + std::cos(4 * th)) + 1.5 * a * a * std::cos(4 * th));
+  };
+  // The cells nearest the top of the hole, where sigma_xx peaks at 3 T.
+  std::vector<std::pair<double, int>> near;
+  for (std::size_t k = 0; k < sxx.size(); ++k)
+    near.emplace_back(norm(triangle_centroid(r.mesh, static_cast<int>(k)) - Vec2{0.0, R}), static_cast<int>(k));
+  std::sort(near.begin(), near.end());
+  for (int i = 0; i < 3; ++i) {
+    const int k = near[i].second;
+    const Vec2 c0 = triangle_centroid(r.mesh, k);
+    INFO("cell at " << c0.x << " " << c0.y << ": sigma_xx " << sxx[k] << " Kirsch " << kirsch(c0));
+    CHECK(kirsch(c0) > 2.5 * T);
+    CHECK(sxx[k] == Approx(kirsch(c0)).epsilon(0.05));
   }
 }
