@@ -2,9 +2,12 @@
 // running the real grainmesh command.
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iterator>
 #include <filesystem>
@@ -81,6 +84,27 @@ inline CommandResult run_grainmesh(const std::vector<std::string>& args) {
   r.out = read_file(io / "out");
   r.err = read_file(io / "err");
   return r;
+}
+
+// A command that must be refused: its exit code, and a fragment of its one-line error.
+struct Refusal {
+  std::vector<std::string> args;
+  int exit_code;
+  std::string says;
+};
+
+// Runs the command with `-o out` appended and checks the refusal: the exit code, one line
+// on stderr holding `says`, and no `out` left behind.
+inline void check_refused(const Refusal& c, const std::filesystem::path& out) {
+  std::vector<std::string> args = c.args;
+  args.push_back("-o");
+  args.push_back(out.string());
+  const auto res = run_grainmesh(args);
+  INFO("args " << c.args.back() << "\nstderr: " << res.err);
+  CHECK(res.exit_code == c.exit_code);
+  CHECK(res.err.find(c.says) != std::string::npos);
+  CHECK(std::count(res.err.begin(), res.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(out));
 }
 
 // Runs an OpenFOAM program in a case directory (the Debian package needs WM_PROJECT_DIR);

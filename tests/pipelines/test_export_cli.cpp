@@ -72,12 +72,7 @@ TEST_CASE("bad export input gives one line naming what is wrong and no case", "[
   std::ofstream(dir / "broken.json") << "{}";
   fs::create_directories(dir / "full");
   std::ofstream(dir / "full/keep.txt") << "mine";
-  struct Case {
-    std::vector<std::string> args;
-    int exit_code;
-    std::string says;
-  };
-  const std::vector<Case> cases{
+  const std::vector<test::Refusal> cases{
       {{"export", (dir / "none.vtu").string()}, 4, "none.vtu"},
       {{"export", (dir / "broken.vtu").string()}, 4, "broken.vtu"},
       {{"export", (dir / "f/mesh.vtu").string()}, 2, "phase.matrix.E: missing"},
@@ -88,17 +83,7 @@ TEST_CASE("bad export input gives one line naming what is wrong and no case", "[
       {{"export", vtu, "--set", "export.convert_to_meters=0"}, 2, "export.convert_to_meters: must be positive"},
       {{"export", vtu, "--set", "export.cyclic=maybe"}, 2, "export.cyclic"},
   };
-  for (const Case& c : cases) {
-    std::vector<std::string> args = c.args;
-    args.push_back("-o");
-    args.push_back((dir / "out").string());
-    const auto res = run_grainmesh(args);
-    INFO("args " << c.args.back() << "\nstderr: " << res.err);
-    CHECK(res.exit_code == c.exit_code);
-    CHECK(res.err.find(c.says) != std::string::npos);
-    CHECK(std::count(res.err.begin(), res.err.end(), '\n') == 1);
-    CHECK_FALSE(fs::exists(dir / "out"));
-  }
+  for (const auto& c : cases) test::check_refused(c, dir / "out");
   const auto full = run_grainmesh({"export", vtu, "-o", (dir / "full").string()});
   CHECK(full.exit_code == 4);
   CHECK(test::entries(dir / "full") == 1);

@@ -139,12 +139,7 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
     doc["grains"][0]["area"] = 2.0 * doc["grains"][0]["area"].get<double>();
     std::ofstream(dir / "invalid.json") << doc.dump();
   }
-  struct Case {
-    std::vector<std::string> args;
-    int exit_code;
-    std::string says;
-  };
-  const std::vector<Case> cases{
+  const std::vector<test::Refusal> cases{
       {{"mesh", (dir / "none.json").string()}, 4, "none.json: cannot open tessellation file"},
       {{"mesh", (dir / "broken.json").string()}, 3, "broken.json: "},
       {{"mesh", tess, "--set", "mesh.size=0"}, 2, "mesh.size: must be positive"},
@@ -155,15 +150,5 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
       {{"mesh", tess, "--set", "mesh.gradient=0"}, 2, "mesh.gradient: must lie between 0.05 and 10"},
       {{"mesh", tess, "--set", "mesh.triangles_per_grain=1"}, 2, "mesh.triangles_per_grain: must lie between"},
   };
-  for (const Case& c : cases) {
-    std::vector<std::string> args = c.args;
-    args.push_back("-o");
-    args.push_back((dir / "out").string());
-    const auto res = run_grainmesh(args);
-    INFO("args " << c.args.back() << "\nstderr: " << res.err);
-    CHECK(res.exit_code == c.exit_code);
-    CHECK(res.err.find(c.says) != std::string::npos);
-    CHECK(std::count(res.err.begin(), res.err.end(), '\n') == 1);
-    CHECK_FALSE(fs::exists(dir / "out"));
-  }
+  for (const auto& c : cases) test::check_refused(c, dir / "out");
 }
