@@ -20,12 +20,15 @@ build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 # Until `grainmesh run` exists, `make run` runs the stages that do: a WC-Co microstructure
-# (tessellate, then mesh) and the thesis' 6-fibre cell (domain).
+# (tessellate, mesh, export, and the case's Allrun: checkMesh and solidDisplacementFoam)
+# and the thesis' 6-fibre cell (domain).
 run: build
 	./$(BUILD_DIR)/grainmesh tessellate data/examples/grains_wc_co.ini -o $(RUN_OUT)/grains_wc_co
 	./$(BUILD_DIR)/grainmesh mesh $(RUN_OUT)/grains_wc_co/tessellation.json -o $(RUN_OUT)/grains_wc_co_mesh
+	./$(BUILD_DIR)/grainmesh export $(RUN_OUT)/grains_wc_co_mesh/mesh.vtu -o $(RUN_OUT)/grains_wc_co_case --force
+	$(RUN_OUT)/grains_wc_co_case/Allrun
 	./$(BUILD_DIR)/grainmesh domain data/examples/fibres_6.ini -o $(RUN_OUT)/fibres_6
-	@echo "make run: grains in $(RUN_OUT)/grains_wc_co/tessellation.{json,vtp,png}, their mesh in $(RUN_OUT)/grains_wc_co_mesh/mesh.{vtu,png}, the fibre mesh in $(RUN_OUT)/fibres_6/mesh.{vtu,png}; figures in each report.json"
+	@echo "make run: grains in $(RUN_OUT)/grains_wc_co/tessellation.{json,vtp,png}, their mesh in $(RUN_OUT)/grains_wc_co_mesh/mesh.{vtu,png}, the solved OpenFOAM case in $(RUN_OUT)/grains_wc_co_case (open case.foam in ParaView; logs log.*), the fibre mesh in $(RUN_OUT)/fibres_6/mesh.{vtu,png}; figures in each report.json"
 
 test: build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure

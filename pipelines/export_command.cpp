@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/vtu.hpp"
+#include "mesh/quality.hpp"
 #include "pipelines/report.hpp"
 
 namespace grainmesh {
@@ -155,6 +156,8 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
   const auto start = std::chrono::steady_clock::now();
   StagedOutput staged(out, policy);
   write_foam_case(staged.dir(), m, o);
+  // The same cells for VTK readers: cell k of the case is triangle k.
+  write_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<int> cells_per_phase(m.phases.size(), 0);
   for (int p : m.phase) ++cells_per_phase[p];

@@ -27,7 +27,7 @@ TEST_CASE("grainmesh export writes a case that OpenFOAM runs, from grain and dom
   REQUIRE(r.exit_code == 0);
   for (const char* f : {"constant/polyMesh/faces", "constant/polyMesh/cellZones", "constant/polyMesh/faceZones", "0/D",
                         "0/E", "0/nu", "constant/mechanicalProperties", "system/fvSolution", "Allrun", "case.foam",
-                        "report.json"})
+                        "mesh.vtu", "report.json"})
     CHECK(fs::exists(dir / "case" / f));
   const auto report = nlohmann::json::parse(test::read_file(dir / "case/report.json"));
   CHECK(report["phases"][0]["name"] == "WC");
