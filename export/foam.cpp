@@ -383,6 +383,10 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
   if (!(o.thickness >= 0.0) || !std::isfinite(o.thickness))
     throw ConfigError("export.thickness: must be positive (or 0 for the mean edge length), got " + to_text(o.thickness));
 
+  if (o.cyclic && m.periodic && (o.traction != 0.0 || o.uniaxial))
+    throw ConfigError(std::string(o.traction != 0.0 ? "load.traction" : "load.uniaxial") +
+                      ": not with export.cyclic, whose load is a displacement jump across left/right and whose "
+                      "bottom/top pair keeps the mean transverse strain zero");
   const PolyMesh pm = build_polymesh(m, o);
   for (const char* sub : {"constant/polyMesh", "0", "system"}) std::filesystem::create_directories(dir / sub);
   write_polymesh(dir / "constant/polyMesh", pm, o);
@@ -415,7 +419,13 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
   D += "dimensions      [0 1 0 0 0 0 0];\n\ninternalField   uniform (0 0 0);\n\nboundaryField\n{\n";
   for (const PolyMesh::Patch& p : pm.patches) {
     std::string entry = constraint_entry(p);
-    if (entry.empty() && p.name == "right" && o.traction != 0.0) {
+    if (p.type == "cyclic" && (p.name == "left" || p.name == "right")) {
+      // Periodic: the displacement jumps by the load across the left/right pair (given on
+      // the first patch of the pair), so the mean strain is displacement / width.
+      entry = "type            fixedJump;\n        patchType       cyclic;\n" +
+              (p.name == "left" ? "        jump            uniform (" + d + " 0 0);\n" : std::string()) +
+              "        value           uniform (0 0 0);";
+    } else if (entry.empty() && p.name == "right" && o.traction != 0.0) {
       entry = "type            tractionDisplacement;\n        traction        uniform (" + number_text(o.traction) +
               " 0 0);\n        pressure        uniform 0;\n        value           uniform (0 0 0);";
     } else if (entry.empty() && p.name == "right") {

@@ -32,7 +32,8 @@ struct ExportMesh {
 struct FoamOptions {
   double thickness = 0.0;          // extrusion, mesh units; 0 = the mean edge length
   double convert_to_meters = 1e-6; // mesh units to metres (config lengths in micrometres)
-  bool cyclic = false;             // periodic meshes: left/right and bottom/top as cyclic pairs
+  bool cyclic = false;             // periodic meshes: left/right and bottom/top as cyclic pairs,
+                                   // the load a displacement jump across left/right
   bool binary = false;             // binary polyMesh and fields instead of ASCII
   bool grain_zones = false;        // a cellZone per grain besides one per phase
   // The load: a normal displacement of `right` (mesh units; the thesis' 0.001 um) or a

@@ -108,10 +108,11 @@ inline void check_refused(const Refusal& c, const std::filesystem::path& out) {
 }
 
 // Runs an OpenFOAM program in a case directory (the Debian package needs WM_PROJECT_DIR);
-// its output goes to CASE/log.PROGRAM. Returns the exit code and that log.
+// its output goes to CASE/log.PROGRAM. Returns the exit code (124 after 300 s) and that log.
 inline CommandResult run_openfoam(const std::filesystem::path& case_dir, const std::string& program) {
   const std::filesystem::path log = case_dir / ("log." + program);
-  const std::string cmd = "cd " + shell_quote(case_dir.string()) + " && WM_PROJECT_DIR=/usr/share/openfoam " + program +
+  // Bounded: a solver that does not converge must fail the test, not hang it.
+  const std::string cmd = "cd " + shell_quote(case_dir.string()) + " && WM_PROJECT_DIR=/usr/share/openfoam timeout 300 " + program +
                           " > " + shell_quote(log.string()) + " 2>&1";
   const int status = std::system(cmd.c_str());
   CommandResult r;

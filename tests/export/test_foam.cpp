@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/errors.hpp"
 #include "export/foam.hpp"
 #include "helpers.hpp"
 #include "mesh/grain_mesh.hpp"
@@ -257,4 +258,20 @@ TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of t
     CHECK(kirsch(c0) > 2.5 * T);
     CHECK(sxx[k] == Approx(kirsch(c0)).epsilon(0.05));
   }
+}
+
+TEST_CASE("cyclic cases: the displacement jump across left/right loads the periodic cell", "[export][openfoam][physics]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export(t, m);
+  const FoamOptions cyclic{.cyclic = true};
+
+  // Two phases: periodic and symmetric boundaries give nearly the same mean stress.
+  test::ScratchDir periodic("cyclic"), patches("patches");
+  write_foam_case(periodic.path(), e, cyclic);
+  write_foam_case(patches.path(), e, {});
+  REQUIRE(test::run_openfoam(periodic.path(), "solidDisplacementFoam").exit_code == 0);
+  REQUIRE(test::run_openfoam(patches.path(), "solidDisplacementFoam").exit_code == 0);
+  CHECK(mean_sigma_xx(periodic.path(), m.mesh) == Approx(mean_sigma_xx(patches.path(), m.mesh)).epsilon(0.02));
+  CHECK_THROWS_AS(write_foam_case(periodic.path() / "x", e, {.cyclic = true, .uniaxial = true}), ConfigError);
 }
