@@ -4,10 +4,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <map>
-#include <numeric>
 #include <string_view>
 
 #include "common/errors.hpp"
@@ -179,6 +177,13 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
 
 namespace {
 
+// The shortest text that reads back as the same double.
+std::string number_text(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 // One OpenFOAM file, ASCII or binary (labels int32, scalars double, little-endian).
 class FoamFile {
  public:
@@ -199,12 +204,7 @@ class FoamFile {
     out_ += s;
     return *this;
   }
-  FoamFile& number(double v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    out_.append(buf, r.ptr);
-    return *this;
-  }
+  FoamFile& number(double v) { return text(number_text(v)); }
   FoamFile& number(int v) {
     char buf[16];
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
@@ -357,12 +357,6 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
   std::ofstream f(file, std::ios::binary);
   f << text;
   if (!f) throw IoError(file.string() + ": cannot write");
-}
-
-std::string number_text(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
 }
 
 }  // namespace
