@@ -19,16 +19,12 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# Until `grainmesh run` exists, `make run` runs the stages that do: a WC-Co microstructure
-# (tessellate, mesh, export, and the case's Allrun: checkMesh and solidDisplacementFoam)
-# and the thesis' 6-fibre cell (domain).
+# The default pipeline: the thesis' two-phase cell (data/default.ini, embedded in the
+# binary) tessellated, meshed and exported, then the case checked and solved by OpenFOAM.
 run: build
-	./$(BUILD_DIR)/grainmesh tessellate data/examples/grains_wc_co.ini -o $(RUN_OUT)/grains_wc_co
-	./$(BUILD_DIR)/grainmesh mesh $(RUN_OUT)/grains_wc_co/tessellation.json -o $(RUN_OUT)/grains_wc_co_mesh
-	./$(BUILD_DIR)/grainmesh export $(RUN_OUT)/grains_wc_co_mesh/mesh.vtu -o $(RUN_OUT)/grains_wc_co_case --force
-	$(RUN_OUT)/grains_wc_co_case/Allrun
-	./$(BUILD_DIR)/grainmesh domain data/examples/fibres_6.ini -o $(RUN_OUT)/fibres_6
-	@echo "make run: grains in $(RUN_OUT)/grains_wc_co/tessellation.{json,vtp,png}, their mesh in $(RUN_OUT)/grains_wc_co_mesh/mesh.{vtu,png}, the solved OpenFOAM case in $(RUN_OUT)/grains_wc_co_case (open case.foam in ParaView; logs log.*), the fibre mesh in $(RUN_OUT)/fibres_6/mesh.{vtu,png}; figures in each report.json"
+	./$(BUILD_DIR)/grainmesh run -o $(RUN_OUT)/run
+	$(RUN_OUT)/run/case/Allrun
+	@echo "make run: everything in $(RUN_OUT)/run: tessellation.{json,png}, mesh.{vtu,png}, case/ (checked and solved: case/log.*; open case/case.foam in ParaView), config.ini, report.json"
 
 test: build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure

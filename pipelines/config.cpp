@@ -89,6 +89,16 @@ void Config::check_keys(const std::vector<std::string>& known) const {
     }
 }
 
+Config Config::subset(const std::vector<std::string>& known) const {
+  Config c;
+  c.source_ = source_;
+  for (const auto& [key, value] : entries_) {
+    if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); }))
+      c.entries_.emplace_back(key, value);
+  }
+  return c;
+}
+
 std::vector<std::string> Config::names_in(const std::string& section) const {
   const std::string prefix = section + ".";
   std::vector<std::string> names;

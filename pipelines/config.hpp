@@ -45,6 +45,10 @@ class Config {
   // "source: key: message", the form of every config error.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
+  // The entries whose keys match `known` (patterns as in check_keys): the part of a
+  // run's config one stage reads.
+  Config subset(const std::vector<std::string>& known) const;
+
   // The resolved entries (after overrides), in order; for writing config.ini of a run.
   const std::vector<std::pair<std::string, std::string>>& entries() const { return entries_; }
 

@@ -15,6 +15,7 @@
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
+#include "pipelines/run_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
 namespace po = boost::program_options;
@@ -26,6 +27,8 @@ constexpr const char* kUsage =
     "usage: grainmesh <command> [options]\n"
     "\n"
     "commands:\n"
+    "  run [CONFIG] -o OUT [--set KEY=VALUE ...]\n"
+    "      tessellate, mesh and export in one go (without CONFIG: the thesis' cell, data/default.ini)\n"
     "  tessellate CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
@@ -121,6 +124,38 @@ int export_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// `grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]`: without CONFIG, the embedded default.
+int run_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]");
+  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(),
+                                                 "config file (INI); none = the embedded default (data/default.ini)")(
+      "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
+      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set mesh.h=0.02");
+  po::positional_options_description pos;
+  pos.add("config", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+  } catch (const po::error& e) {
+    throw ConfigError(std::string("run: ") + e.what());
+  }
+  if (vm.count("help")) {
+    std::cout << desc << "\nKeys: see README.md, section 'grainmesh run'.\n";
+    return kOk;
+  }
+  if (!vm.count("output")) throw ConfigError("run: missing -o OUT (the output directory)");
+  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
+                                           : Config::from_text(default_run_config(), "default config", overrides(vm));
+  try {
+    run_run_command(config, vm["output"].as<std::string>());
+  } catch (const ConfigError& e) {
+    throw naming_source(e, config);
+  } catch (const GeometryError& e) {
+    throw naming_source(e, config);
+  }
+  return kOk;
+}
+
 // `grainmesh check TESSELLATION.json MESH.vtu`.
 int check_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh check TESSELLATION.json MESH.vtu");
@@ -158,6 +193,7 @@ int main(int argc, char** argv) {
       return kOk;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (args[0] == "run") return run_main(rest);
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
     if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "check") return check_main(rest);

@@ -20,8 +20,9 @@ namespace grainmesh {
 
 const std::vector<std::string>& mesh_config_keys() {
   static const std::vector<std::string> keys{
-      "mesh.size",     "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
-      "mesh.threads",  "mesh.seed",                "mesh.max_iterations", "phase.*.size",     "output.picture_width"};
+      "mesh.size",    "mesh.h",    "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size",
+      "mesh.gradient", "mesh.grading", "mesh.threads", "mesh.seed", "mesh.max_iterations", "phase.*.size",
+      "output.picture_width"};
   return keys;
 }
 
@@ -37,11 +38,18 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   c.check_keys(mesh_config_keys());
   MeshJob job;
   GrainMeshOptions& o = job.options;
-  if (c.has("mesh.size") && c.has("mesh.triangles_per_grain"))
-    c.fail("mesh.triangles_per_grain", "give either mesh.size or mesh.triangles_per_grain, not both");
-  if (c.has("mesh.size")) {
-    o.size = c.number("mesh.size");
-    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail("mesh.size", "must be positive, got " + c.text("mesh.size"));
+  // mesh.h and mesh.grading are the run config's names of mesh.size and mesh.gradient.
+  auto one_of = [&](const std::string& a, const std::string& b) {
+    if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
+    return c.has(b) ? b : a;
+  };
+  const std::string size_key = one_of("mesh.size", "mesh.h");
+  const std::string gradient_key = one_of("mesh.gradient", "mesh.grading");
+  if (c.has(size_key) && c.has("mesh.triangles_per_grain"))
+    c.fail("mesh.triangles_per_grain", "give either " + size_key + " or mesh.triangles_per_grain, not both");
+  if (c.has(size_key)) {
+    o.size = c.number(size_key);
+    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
   } else {
     const double n = c.number("mesh.triangles_per_grain", 100.0);
     if (!(n >= 2.0 && n <= 1e6)) c.fail("mesh.triangles_per_grain", "must lie between 2 and 1e6");
@@ -62,8 +70,8 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
     *value = c.number(key, 0.0);
     if (!(*value >= 0.0) || !std::isfinite(*value)) c.fail(key, "must be positive (or 0 for none), got " + c.text(key));
   }
-  o.gradient = c.number("mesh.gradient", o.gradient);
-  if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail("mesh.gradient", "must lie between 0.05 and 10");
+  o.gradient = c.number(gradient_key, o.gradient);
+  if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail(gradient_key, "must lie between 0.05 and 10");
   const long long threads = c.integer("mesh.threads", 0);
   if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
   o.threads = static_cast<int>(threads);

@@ -1,0 +1,128 @@
+#include "pipelines/run_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include "export/foam.hpp"
+#include "export/picture.hpp"
+#include "export/vtu.hpp"
+#include "mesh/quality.hpp"
+#include "pipelines/default_config.hpp"
+#include "pipelines/export_command.hpp"
+#include "pipelines/mesh_command.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+#include "pipelines/tessellate_command.hpp"
+#include "tessellate/tessellation_json.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+std::vector<std::string> run_config_keys() {
+  std::vector<std::string> keys = tessellate_config_keys();
+  for (const auto& k : mesh_config_keys()) keys.push_back(k);
+  for (const auto& k : export_config_keys()) keys.push_back(k);
+  return keys;
+}
+
+const char* default_run_config() { return kDefaultRunConfig; }
+
+std::string config_ini(const Config& config) {
+  // "a.b.c" is key c of section [a.b]; sections in order of first appearance.
+  std::vector<std::string> order;
+  std::map<std::string, std::string> body;
+  for (const auto& [key, value] : config.entries()) {
+    const auto dot = key.rfind('.');
+    const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
+    if (!body.count(section)) order.push_back(section);
+    body[section] += key.substr(dot + 1) + " = " + value + "\n";
+  }
+  std::string text = "# The resolved config of a grainmesh run: `grainmesh run config.ini -o OUT` repeats it.\n";
+  for (const std::string& s : order) text += "\n[" + s + "]\n" + body[s];
+  return text;
+}
+
+void run_run_command(const Config& c, const std::filesystem::path& out) {
+  c.check_keys(run_config_keys());
+  check_output_replaceable(out);
+  // Each stage reads its part; every value is checked before any work is done.
+  const Config tess_config = c.subset(tessellate_config_keys());
+  const Config mesh_config = c.subset(mesh_config_keys());
+  const TessellateJob tess_job = read_tessellate_job(tess_config);
+  const FoamOptions foam = read_foam_options(c.subset(export_config_keys()));
+  const auto start = std::chrono::steady_clock::now();
+
+  auto clock = std::chrono::steady_clock::now();
+  const Tessellation t = run_tessellate_job(tess_job, tess_config);
+  const double tessellate_seconds = since(clock);
+
+  clock = std::chrono::steady_clock::now();
+  const MeshJob mesh_job = read_mesh_job(mesh_config, t);
+  const GrainMesh m = mesh_tessellation(t, mesh_job.options);
+  check_conformity(t, m);
+  const double mesh_seconds = since(clock);
+  const MeshQuality q = measure_quality(m.mesh);
+
+  StagedOutput staged(out);
+  const std::filesystem::path dir = staged.dir();
+  write_text_file(dir / "tessellation.json", tessellation_to_json(t));
+  write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
+  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
+  for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  write_mesh_description(dir / "mesh.json", description);
+  TriMesh by_phase = m.mesh;
+  by_phase.region = m.phase;
+  write_mesh_png(dir / "mesh.png", by_phase, {.width_px = mesh_job.picture_width, .outline_by = m.mesh.region});
+
+  clock = std::chrono::steady_clock::now();
+  ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = description.cell, .periodic = t.periodic};
+  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  std::filesystem::create_directories(dir / "case");
+  write_foam_case(dir / "case", e, foam);
+  const double export_seconds = since(clock);
+  write_text_file(dir / "config.ini", config_ini(c));
+
+  Json phases = Json::array();
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    phases.push_back({{"name", t.phases[p].name},
+                      {"target_fraction", t.stats.phases[p].target_fraction},
+                      {"achieved_fraction", t.stats.phases[p].achieved_fraction}});
+  Json report{{"command", "run"},
+              {"config", c.source()},
+              {"seed", tess_job.seed},
+              {"grains", t.stats.grains},
+              {"phases", phases},
+              {"mesh",
+               {{"points", m.mesh.points.size()},
+                {"cells", m.mesh.triangles.size()},
+                {"q_min", q.q_min},
+                {"q_mean", q.q_mean},
+                {"min_angle_deg", q.min_angle_deg},
+                {"max_non_orthogonality_deg", q.max_non_orthogonality_deg},
+                {"cells_per_grain_mean", static_cast<double>(m.mesh.triangles.size()) / t.stats.grains}}},
+              {"seconds",
+               {{"tessellate", tessellate_seconds},
+                {"mesh", mesh_seconds},
+                {"export", export_seconds},
+                {"total", since(start)}}},
+              {"case", "case"},
+              {"peak_memory_mib", peak_memory_mib()}};
+  write_json(dir / "report.json", report);
+  staged.commit();
+  std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "
+              "tessellation.png, mesh.vtu, mesh.png, case/, config.ini, report.json}\n  the case: %s/case/Allrun runs "
+              "checkMesh and solidDisplacementFoam\n",
+              t.stats.grains, m.mesh.triangles.size(), q.q_min, q.q_mean, since(start), out.string().c_str(),
+              out.string().c_str());
+}
+
+}  // namespace grainmesh

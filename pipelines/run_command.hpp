@@ -1,0 +1,26 @@
+// `grainmesh run [CONFIG] -o OUT`: tessellate, mesh and export in one process, from one
+// config (or the embedded default, data/default.ini). Writes OUT/tessellation.json,
+// tessellation.png, mesh.vtu, mesh.json, mesh.png, case/ (the OpenFOAM case), config.ini
+// (the resolved config, which repeats the run exactly) and report.json, last.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pipelines/config.hpp"
+
+namespace grainmesh {
+
+// Every key a run config may use: the stages' keys.
+std::vector<std::string> run_config_keys();
+
+// The embedded default config's text.
+const char* default_run_config();
+
+// The config as INI text, section by section in order of first appearance.
+std::string config_ini(const Config& config);
+
+void run_run_command(const Config& config, const std::filesystem::path& out);
+
+}  // namespace grainmesh

@@ -1,0 +1,67 @@
+// `grainmesh run`: the one-shot pipeline, its OUT layout, its reproducibility from
+// config.ini, and bad input.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+using test::run_grainmesh;
+namespace fs = std::filesystem;
+
+TEST_CASE("grainmesh run without a config writes the whole OUT layout, and its case passes checkMesh", "[cli][run]") {
+  test::ScratchDir dir("run");
+  const auto r = run_grainmesh({"run", "-o", (dir / "out").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* f : {"tessellation.json", "tessellation.png", "mesh.vtu", "mesh.png", "config.ini", "report.json",
+                        "case/constant/polyMesh/faces", "case/0/D", "case/system/fvSolution", "case/Allrun"})
+    CHECK(fs::exists(dir / "out" / f));
+  const auto report = nlohmann::json::parse(test::read_file(dir / "out/report.json"));
+  CHECK(report["grains"].get<int>() == 100);
+  CHECK(report["phases"][1]["name"] == "matrix");
+  CHECK(report["phases"][1]["achieved_fraction"].get<double>() == Approx(0.2).epsilon(0.01));
+  CHECK(report["mesh"]["q_min"].get<double>() >= 0.6);
+  CHECK(report["mesh"]["cells"].get<int>() > 8000);
+  for (const char* stage : {"tessellate", "mesh", "export", "total"}) CHECK(report["seconds"][stage].get<double>() > 0.0);
+  CHECK(report["case"] == "case");
+  const auto check = test::run_openfoam(dir / "out/case", "checkMesh");
+  CHECK(check.out.find("Mesh OK.") != std::string::npos);
+
+  // config.ini repeats the run: every file the same, byte for byte, but the report's timings.
+  const auto again = run_grainmesh({"run", (dir / "out/config.ini").string(), "-o", (dir / "again").string()});
+  INFO(again.err);
+  REQUIRE(again.exit_code == 0);
+  int compared = 0;
+  for (const auto& f : fs::recursive_directory_iterator(dir / "again")) {
+    if (!f.is_regular_file() || f.path().filename() == "report.json") continue;
+    const fs::path rel = fs::relative(f.path(), dir / "again");
+    INFO(rel.string());
+    CHECK(test::read_file(f.path()) == test::read_file(dir / "out" / rel));
+    ++compared;
+  }
+  CHECK(compared >= 15);
+}
+
+TEST_CASE("bad run input gives one line naming it and never a report", "[cli][run]") {
+  test::ScratchDir dir("run-bad");
+  std::ofstream(dir / "plain-file") << "x";
+  const std::vector<test::Refusal> cases{
+      {{"run", "--set", "tessellation.bogus=1"}, 2, "unknown key 'tessellation.bogus'"},
+      {{"run", "--set", "mesh.h=abc"}, 2, "mesh.h: 'abc' is not a number"},
+      {{"run", "--set", "mesh.grading=0"}, 2, "mesh.grading: must lie between 0.05 and 10"},
+      {{"run", "--set", "phase.matrix.nu=0.7"}, 2, "phase.matrix.nu: must lie in (-1, 0.5)"},
+      {{"run", "--set", "export.cyclic=perhaps"}, 2, "export.cyclic"},
+      {{"run", (dir / "missing.ini").string()}, 4, "missing.ini: cannot open config file"},
+  };
+  for (const auto& c : cases) test::check_refused(c, dir / "out");
+  // An output directory that cannot be made: below a plain file.
+  const auto r = run_grainmesh({"run", "-o", (dir / "plain-file/out").string()});
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("plain-file") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(dir / "plain-file/out/report.json"));
+}
