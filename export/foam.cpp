@@ -448,8 +448,9 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
                  "application     solidDisplacementFoam;\n\nstartFrom       startTime;\nstartTime       0;\n"
                  "stopAt          endTime;\nendTime         1;\ndeltaT          1;\n\n"
                  "// One steady step: the corrector loop of fvSolution runs to its tolerance.\n"
-                 "writeControl    timeStep;\nwriteInterval   1;\npurgeWrite      0;\nwriteFormat     " +
-                 std::string(o.binary ? "binary" : "ascii") +
+                 "// Results in ASCII whatever the mesh's format: they are what users (and\n"
+                 "// grainmesh run --solve) read.\n"
+                 "writeControl    timeStep;\nwriteInterval   1;\npurgeWrite      0;\nwriteFormat     ascii"
                  ";\nwritePrecision  12;\nwriteCompression off;\ntimeFormat      general;\ntimePrecision   6;\n"
                  "runTimeModifiable false;\n");
   const std::string stiffness = harmonic

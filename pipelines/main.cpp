@@ -27,7 +27,7 @@ constexpr const char* kUsage =
     "usage: grainmesh <command> [options]\n"
     "\n"
     "commands:\n"
-    "  run [CONFIG] -o OUT [--set KEY=VALUE ...]\n"
+    "  run [CONFIG] -o OUT [--solve] [--set KEY=VALUE ...]\n"
     "      tessellate, mesh and export in one go (without CONFIG: the thesis' cell, data/default.ini)\n"
     "  tessellate CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
@@ -130,7 +130,8 @@ int run_main(const std::vector<std::string>& args) {
   desc.add_options()("help,h", "show this help")("config", po::value<std::string>(),
                                                  "config file (INI); none = the embedded default (data/default.ini)")(
       "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set mesh.h=0.02");
+      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set mesh.h=0.02")(
+      "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)");
   po::positional_options_description pos;
   pos.add("config", 1);
   po::variables_map vm;
@@ -147,7 +148,7 @@ int run_main(const std::vector<std::string>& args) {
   const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
                                            : Config::from_text(default_run_config(), "default config", overrides(vm));
   try {
-    run_run_command(config, vm["output"].as<std::string>());
+    run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0);
   } catch (const ConfigError& e) {
     throw naming_source(e, config);
   } catch (const GeometryError& e) {

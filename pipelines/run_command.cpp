@@ -10,6 +10,7 @@
 #include "mesh/quality.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
+#include "pipelines/homogenise.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
@@ -50,7 +51,7 @@ std::string config_ini(const Config& config) {
   return text;
 }
 
-void run_run_command(const Config& c, const std::filesystem::path& out) {
+void run_run_command(const Config& c, const std::filesystem::path& out, bool solve) {
   c.check_keys(run_config_keys());
   check_output_replaceable(out);
   // Each stage reads its part; every value is checked before any work is done.
@@ -58,6 +59,8 @@ void run_run_command(const Config& c, const std::filesystem::path& out) {
   const Config mesh_config = c.subset(mesh_config_keys());
   const TessellateJob tess_job = read_tessellate_job(tess_config);
   const FoamOptions foam = read_foam_options(c.subset(export_config_keys()));
+  if (solve && foam.traction != 0.0)
+    c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   const auto start = std::chrono::steady_clock::now();
 
   auto clock = std::chrono::steady_clock::now();
@@ -91,6 +94,29 @@ void run_run_command(const Config& c, const std::filesystem::path& out) {
   const double export_seconds = since(clock);
   write_text_file(dir / "config.ini", config_ini(c));
 
+  Json effective;
+  double solve_seconds = 0.0;
+  if (solve) {
+    clock = std::chrono::steady_clock::now();
+    const Homogenised h = solve_and_homogenise(dir / "case", e, foam);
+    solve_seconds = since(clock);
+    std::vector<double> fractions;
+    for (const PhaseStats& p : t.stats.phases) fractions.push_back(p.achieved_fraction);
+    effective = {{"modulus", h.modulus},
+                 {"sigma_xx", h.sigma_xx},
+                 {"sigma_yy", h.sigma_yy},
+                 {"sigma_xy", h.sigma_xy},
+                 {"strain_xx", h.strain_xx},
+                 {"corrections", h.corrections},
+                 {"final_residual", h.final_residual}};
+    if (!foam.uniaxial) {  // the bounds are for the default load (mean eps_yy zero)
+      const ElasticBounds b = elastic_bounds(e.phases, fractions, foam.plane_stress);
+      effective["voigt"] = b.voigt;
+      effective["reuss"] = b.reuss;
+      if (b.hs_lower) effective["hashin_shtrikman"] = {{"lower", *b.hs_lower}, {"upper", *b.hs_upper}};
+    }
+  }
+
   Json phases = Json::array();
   for (std::size_t p = 0; p < t.phases.size(); ++p)
     phases.push_back({{"name", t.phases[p].name},
@@ -113,16 +139,23 @@ void run_run_command(const Config& c, const std::filesystem::path& out) {
                {{"tessellate", tessellate_seconds},
                 {"mesh", mesh_seconds},
                 {"export", export_seconds},
+                {"solve", solve_seconds},
                 {"total", since(start)}}},
               {"case", "case"},
               {"peak_memory_mib", peak_memory_mib()}};
+  if (solve) report["effective"] = effective;
   write_json(dir / "report.json", report);
   staged.commit();
+
   std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "
               "tessellation.png, mesh.vtu, mesh.png, case/, config.ini, report.json}\n  the case: %s/case/Allrun runs "
               "checkMesh and solidDisplacementFoam\n",
               t.stats.grains, m.mesh.triangles.size(), q.q_min, q.q_mean, since(start), out.string().c_str(),
               out.string().c_str());
+  if (solve)
+    std::printf("  solved: effective modulus %.4g Pa (Reuss %.4g, Voigt %.4g), %d corrections\n",
+                effective["modulus"].get<double>(), effective.value("reuss", 0.0), effective.value("voigt", 0.0),
+                effective["corrections"].get<int>());
 }
 
 }  // namespace grainmesh

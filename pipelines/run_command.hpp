@@ -1,7 +1,8 @@
 // `grainmesh run [CONFIG] -o OUT`: tessellate, mesh and export in one process, from one
 // config (or the embedded default, data/default.ini). Writes OUT/tessellation.json,
 // tessellation.png, mesh.vtu, mesh.json, mesh.png, case/ (the OpenFOAM case), config.ini
-// (the resolved config, which repeats the run exactly) and report.json, last.
+// (the resolved config, which repeats the run exactly) and report.json, last; with
+// --solve the case is solved and homogenised too.
 #pragma once
 
 #include <filesystem>
@@ -21,6 +22,8 @@ const char* default_run_config();
 // The config as INI text, section by section in order of first appearance.
 std::string config_ini(const Config& config);
 
-void run_run_command(const Config& config, const std::filesystem::path& out);
+// With `solve`, also runs solidDisplacementFoam on the case and homogenises (report.json
+// "effective"); a run that does not converge fails.
+void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false);
 
 }  // namespace grainmesh

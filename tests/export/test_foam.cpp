@@ -14,6 +14,7 @@
 #include "helpers.hpp"
 #include "mesh/grain_mesh.hpp"
 #include "pipelines/domain_command.hpp"
+#include "pipelines/homogenise.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -38,24 +39,10 @@ std::map<std::string, int> zone_cells(const std::string& log) {
   return zones;
 }
 
-// The xx components of the internal field of an ASCII volSymmTensorField file as
-// written by OpenFOAM: (xx xy xz yy yz zz) per cell.
+// The xx components of the stress the solver wrote.
 std::vector<double> read_sigma_xx(const fs::path& file) {
-  const std::string text = test::read_file(file);
-  auto at = text.find("internalField");
-  REQUIRE(at != std::string::npos);
-  at = text.find("List<symmTensor>", at);
-  REQUIRE(at != std::string::npos);
-  std::istringstream in(text.substr(at + 16));
-  std::size_t n = 0;
-  char paren = 0;
-  in >> n >> paren;
-  std::vector<double> xx(n);
-  for (double& x : xx) {
-    double rest[5];
-    in >> paren >> x >> rest[0] >> rest[1] >> rest[2] >> rest[3] >> rest[4] >> paren;
-  }
-  REQUIRE(in);
+  std::vector<double> xx;
+  for (const CellStress& c : read_cell_stress(file)) xx.push_back(c.xx);
   return xx;
 }
 
