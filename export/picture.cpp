@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <memory>
+#include <string>
 
 #include "common/errors.hpp"
 
@@ -31,14 +33,31 @@ Rgb region_colour(int region) {
   return palette[static_cast<std::size_t>(((region % n) + n) % n)];
 }
 
-// A white image of a box at the asked width, mapping coordinates to pixels, y up.
+// Viridis, by five stops: t in [0, 1].
+Rgb viridis(double t) {
+  static constexpr std::array<Rgb, 5> stops{{{0.267, 0.005, 0.329},
+                                             {0.230, 0.322, 0.546},
+                                             {0.128, 0.567, 0.551},
+                                             {0.369, 0.789, 0.383},
+                                             {0.993, 0.906, 0.144}}};
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * (stops.size() - 1);
+  const auto k = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+  const double u = t - static_cast<double>(k);
+  const Rgb a = stops[k], b = stops[k + 1];
+  return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
+}
+
+// A white image of a box at the asked width, mapping coordinates to pixels, y up, with
+// `extra_px` more rows at the bottom (for a colour bar).
 class Canvas {
  public:
-  Canvas(const Box& box, const PictureOptions& options)
+  Canvas(const Box& box, const PictureOptions& options, int extra_px = 0)
       : box_(box),
         margin_(options.margin_px),
         scale_((options.width_px - 2.0 * options.margin_px) / std::max(box.width(), 1e-300)),
-        height_(std::clamp(static_cast<int>(std::ceil(box.height() * scale_)) + 2 * options.margin_px, 1, 20000)),
+        extra_(extra_px),
+        height_(std::clamp(static_cast<int>(std::ceil(box.height() * scale_)) + 2 * options.margin_px + extra_px, 1,
+                           20000)),
         surface_(cairo_image_surface_create(CAIRO_FORMAT_RGB24, options.width_px, height_), cairo_surface_destroy),
         cr_(cairo_create(surface_.get()), cairo_destroy) {
     cairo_set_source_rgb(cr_.get(), 1, 1, 1);
@@ -46,7 +65,10 @@ class Canvas {
   }
   cairo_t* get() const { return cr_.get(); }
   double scale() const { return scale_; }
-  Vec2 px(Vec2 p) const { return {margin_ + (p.x - box_.lo.x) * scale_, height_ - margin_ - (p.y - box_.lo.y) * scale_}; }
+  Vec2 px(Vec2 p) const {
+    return {margin_ + (p.x - box_.lo.x) * scale_, height_ - extra_ - margin_ - (p.y - box_.lo.y) * scale_};
+  }
+  int height() const { return height_; }
   void save(const std::filesystem::path& file) {
     cairo_surface_flush(surface_.get());
     if (cairo_surface_write_to_png(surface_.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
@@ -57,6 +79,7 @@ class Canvas {
   Box box_;
   double margin_;
   double scale_;
+  int extra_;
   int height_;
   std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface_;
   std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
@@ -72,10 +95,26 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
     box = *options.view;
   }
-  Canvas canvas(box, options);
+  const bool field = !options.field.empty();
+  if (field && options.field.size() != mesh.triangles.size())
+    throw IoError(file.string() + ": the field has " + std::to_string(options.field.size()) + " values for " +
+                  std::to_string(mesh.triangles.size()) + " triangles");
+  Canvas canvas(box, options, field ? 56 : 0);
   cairo_t* c = canvas.get();
   const double scale = canvas.scale();
   auto px = [&](Vec2 p) { return canvas.px(p); };
+  // The colour range: the field's 1st to 99th percentile, so that a few peaks (at
+  // junctions) do not wash out the rest; values beyond take the end colours.
+  double least = 0.0, most = 1.0;
+  if (field) {
+    std::vector<double> v = options.field;
+    const std::size_t k = v.size() / 100;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    least = v[k];
+    std::nth_element(v.begin(), v.end() - 1 - static_cast<std::ptrdiff_t>(k), v.end());
+    most = v[v.size() - 1 - k];
+    if (!(most > least)) most = least + 1.0;
+  }
   // A detail: clip to the window, and skip what lies wholly outside it.
   const Vec2 lo = px(box.lo), hi = px(box.hi);
   cairo_rectangle(c, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
@@ -94,8 +133,28 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
 
   // Fills without antialiasing, so that neighbouring triangles leave no seams.
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
-  int max_region = 0;
-  for (int r : mesh.region) max_region = std::max(max_region, r);
+  if (field) {
+    cairo_save(c);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& v = mesh.triangles[t];
+      if (outside({v[0], v[1], v[2]})) continue;
+      const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
+      cairo_move_to(c, a.x, a.y);
+      cairo_line_to(c, b.x, b.y);
+      cairo_line_to(c, d.x, d.y);
+      cairo_close_path(c);
+      const Rgb col = viridis((options.field[t] - least) / (most - least));
+      cairo_set_source_rgb(c, col.r, col.g, col.b);
+      // A hairline of the same colour closes the seams between neighbours.
+      cairo_fill_preserve(c);
+      cairo_set_line_width(c, 0.5);
+      cairo_stroke(c);
+    }
+    cairo_restore(c);
+  }
+  int max_region = field ? -1 : 0;
+  if (!field)
+    for (int r : mesh.region) max_region = std::max(max_region, r);
   for (int r = 0; r <= max_region; ++r) {
     bool any = false;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -133,7 +192,7 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     cairo_set_source_rgb(c, col.r, col.g, col.b);
     cairo_stroke(c);
   };
-  if (mean_len >= 3.0)
+  if (mean_len >= 3.0 && !field)
     stroke([](const MeshEdge&) { return true; }, std::clamp(mean_len / 25.0, 0.4, 1.0), {0.25, 0.25, 0.30});
   const double thick = std::clamp(mean_len / 6.0, 1.5, 3.0);
   const std::vector<int>& outline = options.outline_by.empty() ? mesh.region : options.outline_by;
@@ -141,6 +200,31 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
          {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 
+  if (field) {  // the colour bar: least value on the left, greatest on the right
+    cairo_reset_clip(c);
+    const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 44.0;
+    for (int i = 0; i < 256; ++i) {
+      const Rgb col = viridis(i / 255.0);
+      cairo_set_source_rgb(c, col.r, col.g, col.b);
+      cairo_rectangle(c, x0 + (x1 - x0) * i / 256.0, y0, (x1 - x0) / 256.0 + 0.5, 14.0);
+      cairo_fill(c);
+    }
+    cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
+    cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(c, 13.0);
+    char text[64];
+    std::snprintf(text, sizeof text, "<= %.4g", least);
+    cairo_move_to(c, x0, y0 + 30.0);
+    cairo_show_text(c, text);
+    std::snprintf(text, sizeof text, ">= %.4g", most);
+    cairo_text_extents_t ext;
+    cairo_text_extents(c, text, &ext);
+    cairo_move_to(c, x1 - ext.x_advance, y0 + 30.0);
+    cairo_show_text(c, text);
+    cairo_text_extents(c, options.field_name.c_str(), &ext);
+    cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 30.0);
+    cairo_show_text(c, options.field_name.c_str());
+  }
   canvas.save(file);
 }
 

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mesh/trimesh.hpp"
@@ -15,11 +16,15 @@ struct PictureOptions {
   int margin_px = 20;
   std::vector<int> outline_by{};  // #T labels: thick lines where they differ; empty = the region
   std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
+  // A field to show instead of the regions: one value per triangle, coloured (viridis)
+  // from its 1st to its 99th percentile, with a colour bar titled `field_name` below.
+  std::vector<double> field{};
+  std::string field_name{};
 };
 
 // Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a
-// fixed palette), thin mesh edges when they are at least a few pixels long, and thick
-// lines along the mesh boundary and between regions. Throws IoError.
+// fixed palette) or by a field, thin mesh edges when they are at least a few pixels long,
+// and thick lines along the mesh boundary and between regions (outline_by). Throws IoError.
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
 
 // The cell with its regions filled by phase (holes left open), grain boundaries in thin

@@ -1,5 +1,6 @@
 #include "pipelines/homogenise.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -83,6 +84,24 @@ std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file
     in >> paren >> c.xx >> c.xy >> xz >> c.yy >> yz >> zz >> paren;
   }
   if (!in) throw GeometryError(sigma_file.string() + ": unreadable cell values");
+  return out;
+}
+
+std::vector<double> read_cell_displacement(const std::filesystem::path& d_file) {
+  const std::string text = read_text(d_file);
+  const auto at = text.find("List<vector>");
+  if (at == std::string::npos) throw GeometryError(d_file.string() + ": no cell values");
+  std::istringstream in(text.substr(at + 12));
+  std::size_t n = 0;
+  char paren = 0;
+  in >> n >> paren;
+  std::vector<double> out(n);
+  for (double& d : out) {  // (x y z)
+    double x, y, z;
+    in >> paren >> x >> y >> z >> paren;
+    d = std::sqrt(x * x + y * y + z * z);
+  }
+  if (!in) throw GeometryError(d_file.string() + ": unreadable cell values");
   return out;
 }
 

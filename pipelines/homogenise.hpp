@@ -36,6 +36,9 @@ struct CellStress {
 };
 std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file);
 
+// The length of the displacement of every cell, from an ASCII volVectorField (case/1/D).
+std::vector<double> read_cell_displacement(const std::filesystem::path& d_file);
+
 // Runs solidDisplacementFoam in `case_dir` (written by write_foam_case for `m` with `o`),
 // checks that it converged, and averages its stress over the cells. Throws IoError when
 // OpenFOAM is missing, GeometryError when the solver fails or does not converge.

@@ -109,6 +109,19 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                  {"strain_xx", h.strain_xx},
                  {"corrections", h.corrections},
                  {"final_residual", h.final_residual}};
+    // Pictures of the solution over the cells, grain boundaries drawn (the thesis' 3.14-3.15).
+    const std::vector<CellStress> sigma = read_cell_stress(dir / "case/1/sigma");
+    std::vector<double> sxx, syy, sxy;
+    for (const CellStress& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
+    const std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
+        {"stress_xx.png", {sxx, "sigma_xx (Pa)"}},
+        {"stress_yy.png", {syy, "sigma_yy (Pa)"}},
+        {"stress_xy.png", {sxy, "tau_xy (Pa)"}},
+        {"displacement.png", {read_cell_displacement(dir / "case/1/D"), "|D| (m)"}}};
+    for (const auto& [name, field] : pictures)
+      write_mesh_png(dir / name, m.mesh,
+                     {.width_px = mesh_job.picture_width, .outline_by = {}, .view = {}, .field = field.first,
+                      .field_name = field.second});
     if (!foam.uniaxial) {  // the bounds are for the default load (mean eps_yy zero)
       const ElasticBounds b = elastic_bounds(e.phases, fractions, foam.plane_stress);
       effective["voigt"] = b.voigt;

@@ -15,4 +15,6 @@ for name in grains_wc_co grains_binder; do
   cp "$tmp/${name}_mesh/mesh.png" "docs/images/${name}_mesh.png"
   cp "$tmp/${name}_mesh/mesh_detail.png" "docs/images/${name}_mesh_detail.png"
 done
+./build/grainmesh run -o "$tmp/run" --solve --set output.picture_width=800 > /dev/null
+cp "$tmp/run/stress_xx.png" docs/images/default_stress_xx.png
 echo "pictures written to docs/images/"

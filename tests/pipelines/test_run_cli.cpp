@@ -85,5 +85,7 @@ TEST_CASE("grainmesh run --solve homogenises: the modulus lies between Reuss and
     CHECK(modulus < previous);  // the matrix is the softer phase
     previous = modulus;
     CHECK(fs::exists(out / "case/1/sigma"));
+    for (const char* picture : {"stress_xx.png", "stress_yy.png", "stress_xy.png", "displacement.png"})
+      CHECK(fs::file_size(out / picture) > 10000);
   }
 }
