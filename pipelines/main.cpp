@@ -16,6 +16,7 @@
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"
+#include "pipelines/sweep_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
 namespace po = boost::program_options;
@@ -29,6 +30,9 @@ constexpr const char* kUsage =
     "commands:\n"
     "  run [CONFIG] -o OUT [--solve] [--set KEY=VALUE ...]\n"
     "      tessellate, mesh and export in one go (without CONFIG: the thesis' cell, data/default.ini)\n"
+    "  sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] [--set KEY=VALUE ...]\n"
+    "  sweep --collect DIR\n"
+    "      runs over the cartesian product of the [sweep] lists; resumes; DIR/summary.csv\n"
     "  tessellate CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
@@ -157,6 +161,49 @@ int run_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// `grainmesh sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] [--set ...]`, or
+// `grainmesh sweep --collect DIR`.
+int sweep_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] | --collect DIR");
+  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(), "sweep config (INI) with [sweep]")(
+      "output,o", po::value<std::string>(), "the sweep's directory (runs resume there)")(
+      "jobs", po::value<int>()->default_value(1), "runs at a time")(
+      "shard", po::value<std::string>(), "I/N: run only the I-th of N deterministic parts")(
+      "solve", "solve and homogenise every run")("collect", po::value<std::string>(),
+                                                  "merge the reports of DIR into DIR/summary.csv")(
+      "set", po::value<std::vector<std::string>>()->composing(), "set a config key");
+  po::positional_options_description pos;
+  pos.add("config", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+  } catch (const po::error& e) {
+    throw ConfigError(std::string("sweep: ") + e.what());
+  }
+  if (vm.count("help")) {
+    std::cout << desc << "\nSee README.md, section 'grainmesh sweep'.\n";
+    return kOk;
+  }
+  if (vm.count("collect")) {
+    collect_sweep(vm["collect"].as<std::string>());
+    return kOk;
+  }
+  if (!vm.count("config")) throw ConfigError("sweep: missing the SWEEP.ini file argument");
+  if (!vm.count("output")) throw ConfigError("sweep: missing -o DIR (the sweep's directory)");
+  SweepOptions o;
+  o.jobs = vm["jobs"].as<int>();
+  if (o.jobs < 1 || o.jobs > 1024) throw ConfigError("sweep: --jobs must be between 1 and 1024");
+  if (vm.count("shard")) {
+    const std::string s = vm["shard"].as<std::string>();
+    if (std::sscanf(s.c_str(), "%d/%d", &o.shard, &o.shards) != 2 || o.shards < 1 || o.shard < 1 || o.shard > o.shards)
+      throw ConfigError("sweep: --shard " + s + ": expected I/N with 1 <= I <= N");
+  }
+  o.solve = vm.count("solve") > 0;
+  const Config config = Config::from_file(vm["config"].as<std::string>(), overrides(vm));
+  run_sweep_command(config, vm["output"].as<std::string>(), o);
+  return kOk;
+}
+
 // `grainmesh check TESSELLATION.json MESH.vtu`.
 int check_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh check TESSELLATION.json MESH.vtu");
@@ -195,6 +242,7 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "run") return run_main(rest);
+    if (args[0] == "sweep") return sweep_main(rest);
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
     if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "check") return check_main(rest);

@@ -51,6 +51,12 @@ std::string config_ini(const Config& config) {
   return text;
 }
 
+void check_run_config(const Config& c) {
+  c.check_keys(run_config_keys());
+  read_tessellate_job(c.subset(tessellate_config_keys()));
+  read_foam_options(c.subset(export_config_keys()));
+}
+
 void run_run_command(const Config& c, const std::filesystem::path& out, bool solve) {
   c.check_keys(run_config_keys());
   check_output_replaceable(out);

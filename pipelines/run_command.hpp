@@ -26,4 +26,8 @@ std::string config_ini(const Config& config);
 // "effective"); a run that does not converge fails.
 void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false);
 
+// Checks a run config's keys and the values that can be checked before tessellating (all
+// but the mesh keys that depend on the tessellation). Throws ConfigError naming the key.
+void check_run_config(const Config& config);
+
 }  // namespace grainmesh

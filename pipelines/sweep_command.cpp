@@ -1,0 +1,279 @@
+#include "pipelines/sweep_command.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+#include "pipelines/run_command.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+std::string trimmed(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  return s;
+}
+
+// A seed for (base, point, realisation) that does not depend on which shard runs it
+// (SplitMix64).
+std::uint64_t derived_seed(std::uint64_t base, std::uint64_t point, std::uint64_t realisation) {
+  std::uint64_t z = base * 0x9E3779B97F4A7C15ull + point * 0xD1B54A32D192ED03ull + realisation + 1;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return (z ^ (z >> 31)) >> 11;  // fits a double exactly, and so a JSON number
+}
+
+std::string run_name(std::size_t point, int realisation) {
+  char name[64];
+  std::snprintf(name, sizeof name, "p%03zu-r%02d", point, realisation);
+  return name;
+}
+
+Json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(file.string() + ": cannot open");
+  std::stringstream s;
+  s << in.rdbuf();
+  try {
+    return Json::parse(s.str());
+  } catch (const Json::exception& e) {
+    throw IoError(file.string() + ": not valid JSON: " + e.what());
+  }
+}
+
+// A run is done when its report (written last) parses and, if solved, holds the result.
+bool run_done(const std::filesystem::path& run_dir, bool solve) {
+  std::error_code ec;
+  if (!std::filesystem::exists(run_dir / "report.json", ec)) return false;
+  try {
+    const Json r = read_json(run_dir / "report.json");
+    return r.value("command", "") == "run" && (!solve || r.contains("effective"));
+  } catch (const IoError&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+void run_sweep_command(const Config& c, const std::filesystem::path& dir, const SweepOptions& o) {
+  // The sweep's lists: every sweep.KEY except its own settings names a run key.
+  std::vector<std::string> keys;
+  std::vector<std::vector<std::string>> values;
+  const std::vector<std::string> run_keys = run_config_keys();
+  int realisations = 1;
+  for (const auto& [key, value] : c.entries()) {
+    if (key.rfind("sweep.", 0) != 0) continue;
+    const std::string name = key.substr(6);
+    if (name == "realisations") {
+      const long long k = c.integer(key, 1);
+      if (k < 1 || k > 100000) c.fail(key, "must be between 1 and 100000");
+      realisations = static_cast<int>(k);
+      continue;
+    }
+    const Config probe = Config::from_text("", c.source(), {name + "=x"});
+    try {
+      probe.check_keys(run_keys);
+    } catch (const ConfigError&) {
+      c.fail(key, "names no config key of a run ('" + name + "')");
+    }
+    std::vector<std::string> list;
+    std::stringstream in(value);
+    for (std::string item; std::getline(in, item, ',');)
+      if (!trimmed(item).empty()) list.push_back(trimmed(item));
+    if (list.empty()) c.fail(key, "gives no values");
+    keys.push_back(name);
+    values.push_back(list);
+  }
+  std::vector<std::string> known = run_keys;
+  for (const char* k : {"sweep.*", "sweep.*.*", "sweep.*.*.*"}) known.push_back(k);
+  c.check_keys(known);
+  const Config base = c.subset(run_keys);
+  const std::uint64_t base_seed = base.unsigned_integer("tessellation.seed", 1);
+
+  // The points, first key slowest; each realisation a run.
+  std::size_t points = 1;
+  for (const auto& v : values) points *= v.size();
+  struct Run {
+    std::string name;
+    std::size_t point;
+    int realisation;
+    std::vector<std::string> overrides;
+  };
+  std::vector<Run> runs;
+  Json plan_points = Json::array();
+  for (std::size_t p = 0; p < points; ++p) {
+    Json point = Json::object();
+    std::vector<std::string> overrides;
+    std::size_t rest = p;
+    for (std::size_t k = keys.size(); k-- > 0;) {
+      const std::string& v = values[k][rest % values[k].size()];
+      rest /= values[k].size();
+      overrides.insert(overrides.begin(), keys[k] + "=" + v);
+      point[keys[k]] = v;
+    }
+    plan_points.push_back(point);
+    for (int r = 0; r < realisations; ++r) {
+      std::vector<std::string> o2 = overrides;
+      const std::uint64_t seed = derived_seed(base_seed, p, static_cast<std::uint64_t>(r));
+      o2.push_back("tessellation.seed=" + std::to_string(seed));
+      o2.push_back("mesh.seed=" + std::to_string(seed));
+      runs.push_back({run_name(p, r), p, r, o2});
+    }
+  }
+  // Every run's config is checked before any is started (the mesh keys that need the
+  // tessellation excepted).
+  const std::string base_text = config_ini(base);
+  for (const Run& r : runs) check_run_config(Config::from_text(base_text, c.source(), r.overrides));
+
+  std::filesystem::create_directories(dir / "logs");
+  write_json(dir / "plan.json", Json{{"format", "grainmesh-sweep"},
+                                     {"keys", keys},
+                                     {"points", plan_points},
+                                     {"realisations", realisations},
+                                     {"solve", o.solve},
+                                     {"runs", runs.size()}});
+
+  // This shard's runs that are not done. What an interrupted sweep left of them — a run
+  // directory without a complete report, the staging directory of a killed run — is
+  // removed: the sweep owns them (other shards' runs, which may be running, are not touched).
+  std::vector<const Run*> todo;
+  std::set<std::string> mine;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(o.shards)) != o.shard - 1) continue;
+    if (run_done(dir / runs[i].name, o.solve)) continue;
+    std::filesystem::remove_all(dir / runs[i].name);
+    todo.push_back(&runs[i]);
+    mine.insert(runs[i].name);
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();  // ".NAME.partial-PID"
+    const auto cut = name.find(".partial-");
+    if (name.size() > 1 && name[0] == '.' && cut != std::string::npos && mine.count(name.substr(1, cut - 1)))
+      std::filesystem::remove_all(entry.path());
+  }
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t done = 0, failed = 0, next = 0;
+  std::map<pid_t, const Run*> running;
+  auto progress = [&] {
+    if (!terminal) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double left = done > 0 ? elapsed / static_cast<double>(done) * static_cast<double>(todo.size() - done) : 0.0;
+    std::fprintf(stderr, "\rgrainmesh sweep: %zu / %zu runs, %.0f s elapsed, ~%.0f s left   ", done, todo.size(),
+                 elapsed, left);
+    std::fflush(stderr);
+  };
+  std::fflush(stdout);
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && static_cast<int>(running.size()) < o.jobs) {
+      const Run* r = todo[next++];
+      const pid_t pid = fork();
+      if (pid < 0) throw IoError("sweep: cannot start a run (fork failed)");
+      if (pid == 0) {
+        // The run: its output to its log, its errors as its exit code.
+        if (!std::freopen((dir / "logs" / (r->name + ".log")).c_str(), "w", stdout)) _exit(4);
+        dup2(STDOUT_FILENO, STDERR_FILENO);
+        int code = 0;
+        try {
+          run_run_command(Config::from_text(base_text, c.source(), r->overrides), dir / r->name, o.solve);
+        } catch (const std::exception& e) {
+          std::printf("grainmesh: error: %s\n", e.what());
+          code = 3;
+        }
+        std::fflush(stdout);
+        _exit(code);
+      }
+      running[pid] = r;
+    }
+    progress();
+    int status = 0;
+    const pid_t pid = wait(&status);
+    if (pid < 0) break;
+    running.erase(pid);
+    ++done;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) ++failed;
+  }
+  progress();
+  if (terminal) std::fprintf(stderr, "\n");
+  std::printf("grainmesh sweep: %zu points x %d realisations = %zu runs; this shard (%d/%d) ran %zu, %zu were done "
+              "already\n  in %s (plan.json, one directory per run, logs/)\n",
+              points, realisations, runs.size(), o.shard, o.shards, todo.size(),
+              (runs.size() + o.shards - o.shard) / o.shards - todo.size(), dir.string().c_str());
+  if (failed > 0)
+    throw GeometryError("sweep: " + std::to_string(failed) + " of " + std::to_string(todo.size()) +
+                        " runs failed; their logs are in " + (dir / "logs").string() + " (run the sweep again to retry)");
+}
+
+void collect_sweep(const std::filesystem::path& dir) {
+  const Json plan = read_json(dir / "plan.json");
+  const auto keys = plan.at("keys").get<std::vector<std::string>>();
+  const int realisations = plan.at("realisations").get<int>();
+  // Student's t at 97.5 % for n - 1 degrees of freedom (n up to 31; 1.96 beyond).
+  static const double t975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
+                                2.074, 2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  std::string csv;
+  for (const auto& k : keys) csv += k + ",";
+  csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min\n";
+  std::size_t rows = 0;
+  const auto& points = plan.at("points");
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    std::vector<double> modulus;
+    double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
+    int found = 0;
+    for (int r = 0; r < realisations; ++r) {
+      const std::filesystem::path report = dir / run_name(p, r) / "report.json";
+      if (!std::filesystem::exists(report)) continue;
+      const Json j = read_json(report);
+      ++found;
+      cells += j["mesh"]["cells"].get<double>();
+      q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
+      if (j.contains("effective")) {
+        const Json& e = j["effective"];
+        modulus.push_back(e["modulus"].get<double>());
+        voigt = e.value("voigt", NAN);
+        reuss = e.value("reuss", NAN);
+        if (e.contains("hashin_shtrikman")) {
+          hs_lo = e["hashin_shtrikman"]["lower"].get<double>();
+          hs_hi = e["hashin_shtrikman"]["upper"].get<double>();
+        }
+      }
+    }
+    if (found == 0) continue;
+    double mean = NAN, sd = NAN, ci = NAN;
+    if (!modulus.empty()) {
+      mean = 0.0;
+      for (double m : modulus) mean += m;
+      mean /= static_cast<double>(modulus.size());
+      if (modulus.size() > 1) {
+        double ss = 0.0;
+        for (double m : modulus) ss += (m - mean) * (m - mean);
+        sd = std::sqrt(ss / static_cast<double>(modulus.size() - 1));
+        const std::size_t dof = modulus.size() - 1;
+        ci = (dof <= 30 ? t975[dof] : 1.96) * sd / std::sqrt(static_cast<double>(modulus.size()));
+      }
+    }
+    for (const auto& k : keys) csv += points[p][k].get<std::string>() + ",";
+    auto num = [](double v) { return std::isnan(v) ? std::string() : to_text(v, 10); };
+    csv += std::to_string(found) + "," + num(mean) + "," + num(sd) + "," + num(ci) + "," + num(voigt) + "," +
+           num(reuss) + "," + num(hs_lo) + "," + num(hs_hi) + "," + num(cells / found) + "," + num(q_min) + "\n";
+    ++rows;
+  }
+  write_text_file(dir / "summary.csv", csv);
+  std::printf("grainmesh sweep --collect: %zu points in %s\n", rows, (dir / "summary.csv").string().c_str());
+}
+
+}  // namespace grainmesh

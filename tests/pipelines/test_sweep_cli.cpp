@@ -1,0 +1,108 @@
+// `grainmesh sweep`: an end-to-end sweep with solving, resuming, shards, collecting, and
+// bad input.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <map>
+#include <regex>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+using test::run_grainmesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_sweep(const fs::path& file, const std::string& sweep_section) {
+  std::ofstream out(file);
+  out << test::read_file(test::source_dir() / "data/default.ini") << "\n[sweep]\n" << sweep_section;
+}
+
+// "this shard (I/N) ran R" from a sweep's output.
+int ran(const std::string& out) {
+  std::smatch m;
+  REQUIRE(std::regex_search(out, m, std::regex(R"(ran (\d+), )")));
+  return std::stoi(m[1]);
+}
+
+}  // namespace
+
+TEST_CASE("a sweep solves every point, between the bounds, and resumes where it stopped", "[cli][sweep][physics]") {
+  test::ScratchDir dir("sweep");
+  write_sweep(dir / "sweep.ini", "tessellation.grains = 20, 40\nphase.matrix.fraction = 0.1, 0.4\nrealisations = 2\n");
+  const std::string out = (dir / "out").string();
+  const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "2", "--solve"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(ran(r.out) == 8);
+  std::map<std::pair<std::string, std::string>, double> modulus;  // (grains, matrix) -> sum
+  const auto plan = nlohmann::json::parse(test::read_file(dir / "out/plan.json"));
+  for (const auto& entry : fs::directory_iterator(out)) {
+    if (!entry.is_directory() || entry.path().filename() == "logs") continue;
+    const auto& point = plan["points"][std::stoi(entry.path().filename().string().substr(1, 3))];
+    const auto report = nlohmann::json::parse(test::read_file(entry.path() / "report.json"));
+    const auto& e = report["effective"];
+    CHECK(e["final_residual"].get<double>() < 1e-8);
+    CHECK(e["modulus"].get<double>() > e["reuss"].get<double>());
+    CHECK(e["modulus"].get<double>() < e["voigt"].get<double>());
+    modulus[{point["tessellation.grains"], point["phase.matrix.fraction"]}] += e["modulus"].get<double>();
+    CHECK(test::run_openfoam(entry.path() / "case", "checkMesh").out.find("Mesh OK.") != std::string::npos);
+  }
+  REQUIRE(modulus.size() == 4);
+  for (const char* grains : {"20", "40"}) CHECK(modulus[{grains, "0.4"}] < modulus[{grains, "0.1"}]);
+
+  // Killed part-way: a run lost, another half-written (a staging directory, no report).
+  fs::remove_all(dir / "out/p001-r00");
+  fs::create_directories(dir / "out/.p001-r00.partial-99999/case");  // its staging, left by the kill
+  fs::remove(dir / "out/p002-r01/report.json");
+  const auto again = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--solve"});
+  INFO(again.err);
+  REQUIRE(again.exit_code == 0);
+  CHECK(ran(again.out) == 2);
+  CHECK_FALSE(fs::exists(dir / "out/.p001-r00.partial-99999"));
+  CHECK(fs::exists(dir / "out/p001-r00/report.json"));
+
+  const auto collect = run_grainmesh({"sweep", "--collect", out});
+  REQUIRE(collect.exit_code == 0);
+  const std::string csv = test::read_file(dir / "out/summary.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);  // a header and one row per point
+  CHECK(csv.find("modulus_mean,modulus_std,modulus_ci95") != std::string::npos);
+}
+
+TEST_CASE("sweep shards together run every run exactly once", "[cli][sweep]") {
+  test::ScratchDir dir("shards");
+  write_sweep(dir / "sweep.ini", "tessellation.grains = 10, 20\nphase.matrix.fraction = 0.2, 0.3\nrealisations = 2\n");
+  int total = 0;
+  for (const char* shard : {"1/3", "2/3", "3/3"}) {
+    const auto r = run_grainmesh(
+        {"sweep", (dir / "sweep.ini").string(), "-o", (dir / "out").string(), "--shard", shard, "--set", "mesh.h=0.1"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    total += ran(r.out);
+  }
+  CHECK(total == 8);
+  int reports = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "out")) reports += fs::exists(entry.path() / "report.json");
+  CHECK(reports == 8);
+  const auto rest = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", (dir / "out").string(), "--set", "mesh.h=0.1"});
+  CHECK(ran(rest.out) == 0);
+}
+
+TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
+  test::ScratchDir dir("sweep-bad");
+  write_sweep(dir / "unknown.ini", "tessellation.grainz = 10, 20\n");
+  write_sweep(dir / "empty.ini", "tessellation.grains = ,\n");
+  write_sweep(dir / "badvalue.ini", "tessellation.grains = 10, many\n");
+  write_sweep(dir / "ok.ini", "tessellation.grains = 10\n");
+  const std::vector<test::Refusal> cases{
+      {{"sweep", (dir / "unknown.ini").string()}, 2, "sweep.tessellation.grainz: names no config key"},
+      {{"sweep", (dir / "empty.ini").string()}, 2, "sweep.tessellation.grains: gives no values"},
+      {{"sweep", (dir / "badvalue.ini").string()}, 2, "tessellation.grains: 'many' is not a"},
+      {{"sweep", (dir / "ok.ini").string(), "--shard", "4/3"}, 2, "--shard 4/3: expected I/N"},
+      {{"sweep", (dir / "ok.ini").string(), "--set", "load.bogus=1"}, 2, "unknown key 'load.bogus'"},
+  };
+  for (const auto& c : cases) test::check_refused(c, dir / "out");
+}
