@@ -260,4 +260,93 @@ void write_tessellation_png(const std::filesystem::path& file, const Tessellatio
   canvas.save(file);
 }
 
+void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
+  Box data;
+  for (const PlotSeries& s : plot.series)
+    for (const Vec2 p : s.points)
+      if (is_finite(p)) data.extend(p);
+  if (data.empty()) throw IoError(file.string() + ": nothing to plot");
+  // Some air around the data, and a range even for a single value.
+  const Vec2 pad{std::max(0.05 * data.width(), 1e-9 * std::max(1.0, std::abs(data.lo.x))),
+                 std::max(0.08 * data.height(), 1e-9 * std::max(1.0, std::abs(data.lo.y)))};
+  data = Box{data.lo - pad, data.hi + pad};
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, plot.width_px, plot.height_px), cairo_surface_destroy);
+  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), cairo_destroy);
+  cairo_t* c = cr.get();
+  cairo_set_source_rgb(c, 1, 1, 1);
+  cairo_paint(c);
+  const double left = 90, right = plot.width_px - 200.0, top = 20, bottom = plot.height_px - 60.0;
+  auto px = [&](Vec2 p) {
+    return Vec2{left + (p.x - data.lo.x) / data.width() * (right - left),
+                bottom - (p.y - data.lo.y) / data.height() * (bottom - top)};
+  };
+  static constexpr std::array<Rgb, 6> palette{
+      {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65}, {0.35, 0.35, 0.35}, {0.90, 0.62, 0.00}}};
+  cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(c, 12.0);
+  // Axes with five ticks each.
+  cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
+  cairo_set_line_width(c, 1.0);
+  cairo_rectangle(c, left, top, right - left, bottom - top);
+  cairo_stroke(c);
+  char text[64];
+  for (int k = 0; k <= 4; ++k) {
+    const double fx = data.lo.x + data.width() * k / 4, fy = data.lo.y + data.height() * k / 4;
+    const Vec2 tx = px({fx, data.lo.y}), ty = px({data.lo.x, fy});
+    std::snprintf(text, sizeof text, "%.3g", fx);
+    cairo_move_to(c, tx.x - 12, bottom + 18);
+    cairo_show_text(c, text);
+    std::snprintf(text, sizeof text, "%.3g", fy);
+    cairo_move_to(c, 30, ty.y + 4);
+    cairo_show_text(c, text);
+  }
+  cairo_move_to(c, 0.5 * (left + right) - 40, plot.height_px - 15.0);
+  cairo_show_text(c, plot.x_label.c_str());
+  cairo_save(c);
+  cairo_move_to(c, 18, 0.5 * (top + bottom) + 60);
+  cairo_rotate(c, -M_PI / 2);
+  cairo_show_text(c, plot.y_label.c_str());
+  cairo_restore(c);
+  // The series, and the legend on the right.
+  double legend_y = top + 10;
+  for (const PlotSeries& s : plot.series) {
+    const Rgb col = palette[static_cast<std::size_t>(s.colour) % palette.size()];
+    cairo_set_source_rgb(c, col.r, col.g, col.b);
+    if (s.line) {
+      const double dash[] = {6.0, 4.0};
+      cairo_set_dash(c, dash, 2, 0);
+      cairo_set_line_width(c, 1.5);
+      bool first = true;
+      for (const Vec2 p : s.points) {
+        if (!is_finite(p)) continue;
+        const Vec2 q = px(p);
+        first ? cairo_move_to(c, q.x, q.y) : cairo_line_to(c, q.x, q.y);
+        first = false;
+      }
+      cairo_stroke(c);
+      cairo_move_to(c, right + 15, legend_y);
+      cairo_line_to(c, right + 35, legend_y);
+      cairo_stroke(c);
+      cairo_set_dash(c, nullptr, 0, 0);
+    } else {
+      for (const Vec2 p : s.points) {
+        if (!is_finite(p)) continue;
+        const Vec2 q = px(p);
+        cairo_arc(c, q.x, q.y, 3.5, 0, 2 * M_PI);
+        cairo_fill(c);
+      }
+      cairo_arc(c, right + 25, legend_y, 3.5, 0, 2 * M_PI);
+      cairo_fill(c);
+    }
+    cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
+    cairo_move_to(c, right + 42, legend_y + 4);
+    cairo_show_text(c, s.name.c_str());
+    legend_y += 20;
+  }
+  cairo_surface_flush(surface.get());
+  if (cairo_surface_write_to_png(surface.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
+    throw IoError(file.string() + ": cannot write PNG");
+}
+
 }  // namespace grainmesh

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -31,5 +32,20 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
 // dark lines and the cell's sides in a thick one. Throws IoError.
 void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t,
                             const PictureOptions& options = {});
+
+// A 2D plot: series of points (markers) or polylines, with axes, ticks and a legend.
+struct PlotSeries {
+  std::string name;
+  std::vector<Vec2> points;
+  bool line = false;    // a polyline through the points (in their order), dashed
+  int colour = 0;       // index into a fixed palette
+};
+struct Plot {
+  std::string x_label, y_label;
+  std::vector<PlotSeries> series;
+  int width_px = 900, height_px = 600;
+};
+// Throws IoError when the file cannot be written or nothing is to be drawn.
+void write_plot_png(const std::filesystem::path& file, const Plot& plot);
 
 }  // namespace grainmesh

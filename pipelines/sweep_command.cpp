@@ -3,7 +3,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,6 +15,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "export/picture.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_command.hpp"
@@ -230,6 +233,13 @@ void collect_sweep(const std::filesystem::path& dir) {
   csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min\n";
   std::size_t rows = 0;
   const auto& points = plan.at("points");
+  // The plot: modulus against the first fraction key (else the first key), one series
+  // per value of the other keys, every realisation a point; the bounds as lines.
+  std::size_t x_key = 0;
+  for (std::size_t k = keys.size(); k-- > 0;)
+    if (keys[k].size() > 9 && keys[k].compare(keys[k].size() - 9, 9, ".fraction") == 0) x_key = k;
+  std::map<std::string, std::vector<Vec2>> by_series;
+  std::map<double, std::array<double, 3>> bounds;  // x -> summed voigt, reuss, count
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
@@ -253,6 +263,17 @@ void collect_sweep(const std::filesystem::path& dir) {
       }
     }
     if (found == 0) continue;
+    if (!keys.empty() && !modulus.empty()) {
+      std::string series;
+      for (std::size_t k = 0; k < keys.size(); ++k)
+        if (k != x_key) series += (series.empty() ? "" : ", ") + keys[k] + " " + points[p][keys[k]].get<std::string>();
+      const double x = std::strtod(points[p][keys[x_key]].get<std::string>().c_str(), nullptr);
+      for (double m : modulus) by_series[series.empty() ? "runs" : series].push_back({x, m});
+      if (!std::isnan(voigt)) {
+        auto& b = bounds[x];
+        b[0] += voigt, b[1] += reuss, b[2] += 1;
+      }
+    }
     double mean = NAN, sd = NAN, ci = NAN;
     if (!modulus.empty()) {
       mean = 0.0;
@@ -273,7 +294,20 @@ void collect_sweep(const std::filesystem::path& dir) {
     ++rows;
   }
   write_text_file(dir / "summary.csv", csv);
-  std::printf("grainmesh sweep --collect: %zu points in %s\n", rows, (dir / "summary.csv").string().c_str());
+  if (!by_series.empty()) {
+    Plot plot{.x_label = keys[x_key], .y_label = "effective modulus (Pa)", .series = {}};
+    int colour = 0;
+    for (auto& [name, pts] : by_series) plot.series.push_back({name, pts, false, colour++});
+    PlotSeries voigt_line{"Voigt", {}, true, 4}, reuss_line{"Reuss", {}, true, 5};
+    for (const auto& [x, b] : bounds) {
+      voigt_line.points.push_back({x, b[0] / b[2]});
+      reuss_line.points.push_back({x, b[1] / b[2]});
+    }
+    if (!bounds.empty()) plot.series.insert(plot.series.end(), {voigt_line, reuss_line});
+    write_plot_png(dir / "summary.png", plot);
+  }
+  std::printf("grainmesh sweep --collect: %zu points in %s%s\n", rows, (dir / "summary.csv").string().c_str(),
+              by_series.empty() ? "" : " and summary.png");
 }
 
 }  // namespace grainmesh

@@ -70,6 +70,7 @@ TEST_CASE("a sweep solves every point, between the bounds, and resumes where it 
   const std::string csv = test::read_file(dir / "out/summary.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);  // a header and one row per point
   CHECK(csv.find("modulus_mean,modulus_std,modulus_ci95") != std::string::npos);
+  CHECK(fs::file_size(dir / "out/summary.png") > 5000);
 }
 
 TEST_CASE("sweep shards together run every run exactly once", "[cli][sweep]") {
