@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <unordered_map>
 
 #include "common/errors.hpp"
@@ -219,7 +220,16 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     rr.converged = res.stats.converged;
   };
   tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
-  arena.execute([&] { tbb::parallel_for(0, nr, [&](int r) { mesh_region(r); }); });
+  std::mutex progress_mutex;
+  int regions_done = 0;
+  arena.execute([&] {
+    tbb::parallel_for(0, nr, [&](int r) {
+      mesh_region(r);
+      if (!o.progress) return;
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      o.progress(++regions_done, nr);
+    });
+  });
 
   for (int r = 0; r < nr; ++r) {
     const int base = static_cast<int>(pts.size());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct GrainMeshOptions {
   // 0.973 against 0.971 on 200-grain cells). A region stops after 1000 iterations (still
   // a valid mesh): the quality is reached long before the last points settle in thin layers.
   DistMeshOptions distmesh{.fscale = 1.15, .ttol = 0.2, .max_iterations = 1000};
+  // Called after each region with (regions done, regions), from the meshing threads one
+  // at a time; for a progress display. Empty = none.
+  std::function<void(int, int)> progress{};
 };
 
 struct GrainMesh {

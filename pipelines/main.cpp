@@ -135,7 +135,8 @@ int run_main(const std::vector<std::string>& args) {
                                                  "config file (INI); none = the embedded default (data/default.ini)")(
       "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
       "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set mesh.h=0.02")(
-      "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)");
+      "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)")(
+      "quiet,q", "no stage and progress display on the terminal");
   po::positional_options_description pos;
   pos.add("config", 1);
   po::variables_map vm;
@@ -152,7 +153,7 @@ int run_main(const std::vector<std::string>& args) {
   const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
                                            : Config::from_text(default_run_config(), "default config", overrides(vm));
   try {
-    run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0);
+    run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("quiet") > 0);
   } catch (const ConfigError& e) {
     throw naming_source(e, config);
   } catch (const GeometryError& e) {

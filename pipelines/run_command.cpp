@@ -1,5 +1,7 @@
 #include "pipelines/run_command.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -57,7 +59,7 @@ void check_run_config(const Config& c) {
   read_foam_options(c.subset(export_config_keys()));
 }
 
-void run_run_command(const Config& c, const std::filesystem::path& out, bool solve) {
+void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet) {
   c.check_keys(run_config_keys());
   check_output_replaceable(out);
   // Each stage reads its part; every value is checked before any work is done.
@@ -68,13 +70,30 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   if (solve && foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   const auto start = std::chrono::steady_clock::now();
+  // The stage on one line of a terminal, rewritten in place (at most ten times a second).
+  const bool show = !quiet && isatty(STDERR_FILENO) != 0;
+  auto last_shown = start - std::chrono::seconds(1);
+  auto stage = [&](const std::string& what, bool force = true) {
+    if (!show) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (!force && now - last_shown < std::chrono::milliseconds(100)) return;
+    last_shown = now;
+    std::fprintf(stderr, "\r\033[Kgrainmesh run: %s (%.1f s)", what.c_str(), since(start));
+    std::fflush(stderr);
+  };
 
   auto clock = std::chrono::steady_clock::now();
+  stage("tessellating");
   const Tessellation t = run_tessellate_job(tess_job, tess_config);
   const double tessellate_seconds = since(clock);
 
   clock = std::chrono::steady_clock::now();
-  const MeshJob mesh_job = read_mesh_job(mesh_config, t);
+  MeshJob mesh_job = read_mesh_job(mesh_config, t);
+  stage("meshing");
+  if (show)
+    mesh_job.options.progress = [&](int done, int total) {
+      stage("meshing: " + std::to_string(done) + " / " + std::to_string(total) + " regions", done == total);
+    };
   const GrainMesh m = mesh_tessellation(t, mesh_job.options);
   check_conformity(t, m);
   const double mesh_seconds = since(clock);
@@ -93,6 +112,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   write_mesh_png(dir / "mesh.png", by_phase, {.width_px = mesh_job.picture_width, .outline_by = m.mesh.region});
 
   clock = std::chrono::steady_clock::now();
+  stage("exporting");
   ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = description.cell, .periodic = t.periodic};
   for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
   std::filesystem::create_directories(dir / "case");
@@ -104,6 +124,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   double solve_seconds = 0.0;
   if (solve) {
     clock = std::chrono::steady_clock::now();
+    stage("solving with solidDisplacementFoam");
     const Homogenised h = solve_and_homogenise(dir / "case", e, foam);
     solve_seconds = since(clock);
     std::vector<double> fractions;
@@ -165,6 +186,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   if (solve) report["effective"] = effective;
   write_json(dir / "report.json", report);
   staged.commit();
+  if (show) std::fprintf(stderr, "\r\033[K");
 
   std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "
               "tessellation.png, mesh.vtu, mesh.png, case/, config.ini, report.json}\n  the case: %s/case/Allrun runs "

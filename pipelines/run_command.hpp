@@ -24,7 +24,8 @@ std::string config_ini(const Config& config);
 
 // With `solve`, also runs solidDisplacementFoam on the case and homogenises (report.json
 // "effective"); a run that does not converge fails.
-void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false);
+// A terminal shows the stage and the meshing's progress on stderr unless `quiet`.
+void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false);
 
 // Checks a run config's keys and the values that can be checked before tessellating (all
 // but the mesh keys that depend on the tessellation). Throws ConfigError naming the key.

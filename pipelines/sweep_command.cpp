@@ -141,7 +141,9 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
   const std::string base_text = config_ini(base);
   for (const Run& r : runs) check_run_config(Config::from_text(base_text, c.source(), r.overrides));
 
-  std::filesystem::create_directories(dir / "logs");
+  std::error_code ec;
+  std::filesystem::create_directories(dir / "logs", ec);
+  if (ec) throw IoError(dir.string() + ": cannot create the sweep's directory: " + ec.message());
   write_json(dir / "plan.json", Json{{"format", "grainmesh-sweep"},
                                      {"keys", keys},
                                      {"points", plan_points},
@@ -191,7 +193,7 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
         dup2(STDOUT_FILENO, STDERR_FILENO);
         int code = 0;
         try {
-          run_run_command(Config::from_text(base_text, c.source(), r->overrides), dir / r->name, o.solve);
+          run_run_command(Config::from_text(base_text, c.source(), r->overrides), dir / r->name, o.solve, true);
         } catch (const std::exception& e) {
           std::printf("grainmesh: error: %s\n", e.what());
           code = 3;

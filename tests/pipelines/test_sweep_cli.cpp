@@ -106,4 +106,8 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
       {{"sweep", (dir / "ok.ini").string(), "--set", "load.bogus=1"}, 2, "unknown key 'load.bogus'"},
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
+  // A directory that cannot be made: below a plain file.
+  std::ofstream(dir / "plain-file") << "x";
+  test::check_refused({{"sweep", (dir / "ok.ini").string()}, 4, "cannot create the sweep's directory"},
+                      dir / "plain-file/out");
 }
