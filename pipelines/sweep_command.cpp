@@ -133,6 +133,8 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
       const std::uint64_t seed = derived_seed(base_seed, p, static_cast<std::uint64_t>(r));
       o2.push_back("tessellation.seed=" + std::to_string(seed));
       o2.push_back("mesh.seed=" + std::to_string(seed));
+      // Runs side by side mesh on one thread each (the mesh is the same either way).
+      if (o.jobs > 1 && !base.has("mesh.threads")) o2.push_back("mesh.threads=1");
       runs.push_back({run_name(p, r), p, r, o2});
     }
   }
