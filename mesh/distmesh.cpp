@@ -137,6 +137,7 @@ class Engine {
   std::vector<double> len_, len0_, d_, di_;  // #bars lengths, wanted lengths; #N d, dI
   std::vector<double> bar_size_;             // #bars size field at the midpoints
   std::vector<double> point_size_;           // #N size at the points (absolute sizes only)
+  std::vector<int> edge_start_, edge_high_;  // triangulate()'s edge buckets, kept to reuse memory
   std::vector<double> dval_;                 // #N d at dpos_, the last exact evaluation
   std::vector<Vec2> dpos_;
   DistMeshStats stats_;
@@ -312,25 +313,35 @@ void Engine::triangulate() {
       if (pb_.domain(c) < -geps_) tris_.push_back(t);
     }
   }
-  std::vector<std::uint64_t> keys;
-  keys.reserve(3 * tris_.size());
+  // The bars, ordered by (lower end, higher end): every triangle edge bucketed by its
+  // lower end (a counting sort, linear), each bucket (a few edges) sorted by the higher
+  // end; an edge seen once is on the boundary.
+  const std::size_t n = p_.size();
+  edge_start_.assign(n + 2, 0);
+  for (const auto& t : tris_)
+    for (int k = 0; k < 3; ++k) ++edge_start_[static_cast<std::size_t>(std::min(t[k], t[(k + 1) % 3])) + 2];
+  for (std::size_t v = 2; v < edge_start_.size(); ++v) edge_start_[v] += edge_start_[v - 1];
+  edge_high_.resize(3 * tris_.size());
   for (const auto& t : tris_)
     for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(t[k]), b = static_cast<std::uint64_t>(t[(k + 1) % 3]);
-      keys.push_back(a < b ? (a << 32) | b : (b << 32) | a);
+      const int a = t[k], b = t[(k + 1) % 3];
+      edge_high_[edge_start_[static_cast<std::size_t>(std::min(a, b)) + 1]++] = std::max(a, b);
     }
-  std::sort(keys.begin(), keys.end());
-  on_boundary_.assign(p_.size(), 0);
+  on_boundary_.assign(n, 0);
   bars_.clear();
   bar_on_boundary_.clear();
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i + 1;
-    while (j < keys.size() && keys[j] == keys[i]) ++j;
-    const int a = static_cast<int>(keys[i] >> 32), b = static_cast<int>(keys[i] & 0xffffffffu);
-    if (j - i == 1) on_boundary_[a] = on_boundary_[b] = 1;
-    bar_on_boundary_.push_back(j - i == 1);
-    bars_.push_back({a, b});
-    i = j;
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto first = edge_high_.begin() + edge_start_[v], last = edge_high_.begin() + edge_start_[v + 1];
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      auto j = i + 1;
+      while (j != last && *j == *i) ++j;
+      const int a = static_cast<int>(v), b = *i;
+      if (j - i == 1) on_boundary_[a] = on_boundary_[b] = 1;
+      bar_on_boundary_.push_back(j - i == 1);
+      bars_.push_back({a, b});
+      i = j;
+    }
   }
   // The size at each bar's midpoint. Evaluated here rather than every iteration: until
   // the next triangulation no point moves more than ttol h0, which changes a size by a
