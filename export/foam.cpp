@@ -37,6 +37,13 @@ struct SideFace {
 
 }  // namespace
 
+ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
+  ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = Box{{0.0, 0.0}, {t.width, t.height}},
+               .periodic = t.periodic};
+  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  return e;
+}
+
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   const TriMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());

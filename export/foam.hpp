@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "mesh/grain_mesh.hpp"
 #include "mesh/trimesh.hpp"
+#include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
 
@@ -77,6 +79,9 @@ struct PolyMesh {
   int internal_faces() const { return static_cast<int>(neighbour.size()); }
   int faces() const { return static_cast<int>(owner.size()); }
 };
+
+// A grain mesh with its tessellation's cell and phases.
+ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
 
 // Builds the polyMesh. Throws GeometryError when a cyclic side's faces do not pair, or a
 // boundary edge lies on no side while the mesh is to be cyclic.

@@ -131,18 +131,24 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     return left || right || below || above;
   };
 
+  // Adds triangle t to the current path, unless it lies outside the window.
+  auto trace = [&](std::size_t t) {
+    const auto& v = mesh.triangles[t];
+    if (outside({v[0], v[1], v[2]})) return false;
+    const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
+    cairo_move_to(c, a.x, a.y);
+    cairo_line_to(c, b.x, b.y);
+    cairo_line_to(c, d.x, d.y);
+    cairo_close_path(c);
+    return true;
+  };
+
   // Fills without antialiasing, so that neighbouring triangles leave no seams.
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
   if (field) {
     cairo_save(c);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto& v = mesh.triangles[t];
-      if (outside({v[0], v[1], v[2]})) continue;
-      const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
-      cairo_move_to(c, a.x, a.y);
-      cairo_line_to(c, b.x, b.y);
-      cairo_line_to(c, d.x, d.y);
-      cairo_close_path(c);
+      if (!trace(t)) continue;
       const Rgb col = viridis((options.field[t] - least) / (most - least));
       cairo_set_source_rgb(c, col.r, col.g, col.b);
       // A hairline of the same colour closes the seams between neighbours.
@@ -158,15 +164,7 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
   for (int r = 0; r <= max_region; ++r) {
     bool any = false;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      if (mesh.region[t] != r) continue;
-      const auto& v = mesh.triangles[t];
-      if (outside({v[0], v[1], v[2]})) continue;
-      const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
-      cairo_move_to(c, a.x, a.y);
-      cairo_line_to(c, b.x, b.y);
-      cairo_line_to(c, d.x, d.y);
-      cairo_close_path(c);
-      any = true;
+      if (mesh.region[t] == r && trace(t)) any = true;
     }
     if (!any) continue;
     const Rgb col = region_colour(r);

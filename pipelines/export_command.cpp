@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <variant>
 
@@ -37,13 +36,10 @@ void write_mesh_description(const std::filesystem::path& file, const MeshDescrip
 namespace {
 
 MeshDescription read_mesh_description(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(file.string() + ": cannot open (grainmesh mesh and domain write it beside mesh.vtu)");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(file, "the mesh description (grainmesh mesh and domain write it beside mesh.vtu)");
   MeshDescription d;
   try {
-    const Json j = Json::parse(text.str());
+    const Json j = Json::parse(text);
     if (j.at("format") != "grainmesh-mesh" || j.at("version") != 1)
       throw GeometryError(file.string() + ": not a grainmesh-mesh version 1 file");
     const Json& c = j.at("cell");

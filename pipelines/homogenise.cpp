@@ -2,13 +2,13 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "pipelines/output_dir.hpp"
 
 namespace grainmesh {
 
@@ -27,12 +27,17 @@ Moduli moduli(const FoamPhase& p, bool plane_stress) {
           plane_stress ? -nu / E : -nu * (1 + nu) / E};
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw GeometryError(file.string() + ": missing: the solver wrote no result");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+// The cell values of an ASCII field file written by OpenFOAM: a stream at the first
+// value's opening parenthesis, and their count. `type` is the list's element type.
+std::istringstream cell_values(const std::filesystem::path& file, const std::string& type, std::size_t& n) {
+  const std::string text = read_text_file(file, "the solver's result");
+  const std::string list = "List<" + type + ">";
+  const auto at = text.find(list);
+  if (at == std::string::npos) throw GeometryError(file.string() + ": no cell values");
+  std::istringstream in(text.substr(at + list.size()));
+  char paren = 0;
+  in >> n >> paren;
+  return in;
 }
 
 }  // namespace
@@ -71,14 +76,10 @@ ElasticBounds elastic_bounds(const std::vector<FoamPhase>& phases, const std::ve
 }
 
 std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file) {
-  const std::string text = read_text(sigma_file);
-  const auto at = text.find("List<symmTensor>");
-  if (at == std::string::npos) throw GeometryError(sigma_file.string() + ": no cell values");
-  std::istringstream in(text.substr(at + 16));
   std::size_t n = 0;
-  char paren = 0;
-  in >> n >> paren;
+  std::istringstream in = cell_values(sigma_file, "symmTensor", n);
   std::vector<CellStress> out(n);
+  char paren = 0;
   for (CellStress& c : out) {  // (xx xy xz yy yz zz)
     double xz, yz, zz;
     in >> paren >> c.xx >> c.xy >> xz >> c.yy >> yz >> zz >> paren;
@@ -88,14 +89,10 @@ std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file
 }
 
 std::vector<double> read_cell_displacement(const std::filesystem::path& d_file) {
-  const std::string text = read_text(d_file);
-  const auto at = text.find("List<vector>");
-  if (at == std::string::npos) throw GeometryError(d_file.string() + ": no cell values");
-  std::istringstream in(text.substr(at + 12));
   std::size_t n = 0;
-  char paren = 0;
-  in >> n >> paren;
+  std::istringstream in = cell_values(d_file, "vector", n);
   std::vector<double> out(n);
+  char paren = 0;
   for (double& d : out) {  // (x y z)
     double x, y, z;
     in >> paren >> x >> y >> z >> paren;
@@ -113,7 +110,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                           "' && WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\" solidDisplacementFoam > "
                           "log.solidDisplacementFoam 2>&1";
   const int status = std::system(cmd.c_str());
-  const std::string text = read_text(log);
+  const std::string text = read_text_file(log, "the solver's log");
   if (status != 0 || text.find("\nEnd") == std::string::npos)
     throw GeometryError("--solve: solidDisplacementFoam failed; see " + log.string());
 

@@ -57,16 +57,14 @@ E naming_source(const E& e, const Config& c) {
   return E(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
 }
 
-// Parses `grainmesh NAME INPUT -o OUT [--set KEY=VALUE ...]` and any options of the
-// command's own in `desc`. Empty when --help was asked for (and answered).
-std::optional<po::variables_map> parse_command(const std::string& name, po::options_description desc,
-                                               const std::string& input, const std::string& input_help,
+// Parses a command's arguments against `desc` (which gets --help) with the positional
+// arguments `positional`, in order. Empty when --help was asked for (and answered).
+std::optional<po::variables_map> parse_options(const std::string& name, po::options_description desc,
+                                               const std::vector<std::string>& positional,
                                                const std::vector<std::string>& args) {
-  desc.add_options()("help,h", "show this help")(input.c_str(), po::value<std::string>(), input_help.c_str())(
-      "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set section.key=value");
+  desc.add_options()("help,h", "show this help");
   po::positional_options_description pos;
-  pos.add(input.c_str(), 1);
+  for (const std::string& p : positional) pos.add(p.c_str(), 1);
   po::variables_map vm;
   try {
     po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
@@ -74,9 +72,28 @@ std::optional<po::variables_map> parse_command(const std::string& name, po::opti
     throw ConfigError(name + ": " + e.what());
   }
   if (vm.count("help")) {
-    std::cout << desc << "\nKeys: see README.md, section 'grainmesh " << name << "'.\n";
+    std::cout << desc << "\nSee README.md, section 'grainmesh " << name << "'.\n";
     return std::nullopt;
   }
+  return vm;
+}
+
+// -o OUT and --set KEY=VALUE, which every command that writes takes.
+void add_output_options(po::options_description& desc, const char* output_help) {
+  desc.add_options()("output,o", po::value<std::string>(), output_help)(
+      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set section.key=value");
+}
+
+// Parses `grainmesh NAME INPUT -o OUT [--set KEY=VALUE ...]` and any options of the
+// command's own in `desc`. Empty when --help was asked for (and answered).
+std::optional<po::variables_map> parse_command(const std::string& name, po::options_description desc,
+                                               const std::string& input, const std::string& input_help,
+                                               const std::vector<std::string>& args) {
+  desc.add_options()(input.c_str(), po::value<std::string>(), input_help.c_str());
+  add_output_options(desc, "output directory (replaced when it holds an earlier output)");
+  const auto parsed = parse_options(name, desc, {input}, args);
+  if (!parsed) return std::nullopt;
+  const po::variables_map& vm = *parsed;
   if (!vm.count(input)) throw ConfigError(name + ": missing the " + input + " file argument");
   if (!vm.count("output")) throw ConfigError(name + ": missing -o OUT (the output directory)");
   return vm;
@@ -86,19 +103,32 @@ std::vector<std::string> overrides(const po::variables_map& vm) {
   return vm.count("set") ? vm["set"].as<std::vector<std::string>>() : std::vector<std::string>{};
 }
 
+// Runs `run`, its config and geometry errors starting with the config's name.
+template <typename F>
+void naming_errors(const Config& config, F&& run) {
+  try {
+    run();
+  } catch (const ConfigError& e) {
+    throw naming_source(e, config);
+  } catch (const GeometryError& e) {
+    throw naming_source(e, config);
+  }
+}
+
+// The config of a command whose config file is optional (--config): the file with the
+// --set overrides, or the overrides alone.
+Config optional_config(const po::variables_map& vm) {
+  return vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
+                            : Config::from_text("", "--set", overrides(vm));
+}
+
 // A command of the form `grainmesh NAME CONFIG -o OUT [--set KEY=VALUE ...]`.
 int config_command(const std::string& name, const std::vector<std::string>& args, Runner run) {
   const auto vm = parse_command(name, po::options_description("grainmesh " + name + " CONFIG -o OUT [--set KEY=VALUE ...]"),
                                 "config", "config file (INI)", args);
   if (!vm) return kOk;
   const Config config = Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm));
-  try {
-    run(config, (*vm)["output"].as<std::string>());
-  } catch (const ConfigError& e) {
-    throw naming_source(e, config);
-  } catch (const GeometryError& e) {
-    throw naming_source(e, config);
-  }
+  naming_errors(config, [&] { run(config, (*vm)["output"].as<std::string>()); });
   return kOk;
 }
 
@@ -108,8 +138,7 @@ int mesh_main(const std::vector<std::string>& args) {
   desc.add_options()("config", po::value<std::string>(), "mesh config file (INI) with mesh.* and phase.NAME.size keys");
   const auto vm = parse_command("mesh", desc, "tessellation", "tessellation.json written by grainmesh tessellate", args);
   if (!vm) return kOk;
-  const Config config = vm->count("config") ? Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm))
-                                            : Config::from_text("", "--set", overrides(*vm));
+  const Config config = optional_config(*vm);
   run_mesh_command((*vm)["tessellation"].as<std::string>(), config, (*vm)["output"].as<std::string>());
   return kOk;
 }
@@ -121,8 +150,7 @@ int export_main(const std::vector<std::string>& args) {
       "force", "replace CASE even when it is a non-empty directory");
   const auto vm = parse_command("export", desc, "mesh", "mesh.vtu written by grainmesh mesh or domain", args);
   if (!vm) return kOk;
-  const Config config = vm->count("config") ? Config::from_file((*vm)["config"].as<std::string>(), overrides(*vm))
-                                            : Config::from_text("", "--set", overrides(*vm));
+  const Config config = optional_config(*vm);
   run_export_command((*vm)["mesh"].as<std::string>(), config, (*vm)["output"].as<std::string>(),
                      vm->count("force") ? Replace::anything : Replace::empty_only);
   return kOk;
@@ -130,35 +158,20 @@ int export_main(const std::vector<std::string>& args) {
 
 // `grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]`: without CONFIG, the embedded default.
 int run_main(const std::vector<std::string>& args) {
-  po::options_description desc("grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]");
-  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(),
-                                                 "config file (INI); none = the embedded default (data/default.ini)")(
-      "output,o", po::value<std::string>(), "output directory (replaced when it holds an earlier output)")(
-      "set", po::value<std::vector<std::string>>()->composing(), "set a config key, e.g. --set mesh.h=0.02")(
+  po::options_description desc("grainmesh run [CONFIG] -o OUT [--solve] [--quiet] [--set KEY=VALUE ...]");
+  desc.add_options()("config", po::value<std::string>(), "config file (INI); none = the embedded default (data/default.ini)")(
       "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)")(
       "quiet,q", "no stage and progress display on the terminal");
-  po::positional_options_description pos;
-  pos.add("config", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
-  } catch (const po::error& e) {
-    throw ConfigError(std::string("run: ") + e.what());
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\nKeys: see README.md, section 'grainmesh run'.\n";
-    return kOk;
-  }
+  add_output_options(desc, "output directory (replaced when it holds an earlier output)");
+  const auto parsed = parse_options("run", desc, {"config"}, args);
+  if (!parsed) return kOk;
+  const po::variables_map& vm = *parsed;
   if (!vm.count("output")) throw ConfigError("run: missing -o OUT (the output directory)");
   const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
                                            : Config::from_text(default_run_config(), "default config", overrides(vm));
-  try {
+  naming_errors(config, [&] {
     run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("quiet") > 0);
-  } catch (const ConfigError& e) {
-    throw naming_source(e, config);
-  } catch (const GeometryError& e) {
-    throw naming_source(e, config);
-  }
+  });
   return kOk;
 }
 
@@ -166,25 +179,15 @@ int run_main(const std::vector<std::string>& args) {
 // `grainmesh sweep --collect DIR`.
 int sweep_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] | --collect DIR");
-  desc.add_options()("help,h", "show this help")("config", po::value<std::string>(), "sweep config (INI) with [sweep]")(
-      "output,o", po::value<std::string>(), "the sweep's directory (runs resume there)")(
+  desc.add_options()("config", po::value<std::string>(), "sweep config (INI) with [sweep]")(
       "jobs", po::value<int>()->default_value(1), "runs at a time")(
       "shard", po::value<std::string>(), "I/N: run only the I-th of N deterministic parts")(
       "solve", "solve and homogenise every run")("collect", po::value<std::string>(),
-                                                  "merge the reports of DIR into DIR/summary.csv")(
-      "set", po::value<std::vector<std::string>>()->composing(), "set a config key");
-  po::positional_options_description pos;
-  pos.add("config", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
-  } catch (const po::error& e) {
-    throw ConfigError(std::string("sweep: ") + e.what());
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\nSee README.md, section 'grainmesh sweep'.\n";
-    return kOk;
-  }
+                                                  "merge the reports of DIR into DIR/summary.csv");
+  add_output_options(desc, "the sweep's directory (runs resume there)");
+  const auto parsed = parse_options("sweep", desc, {"config"}, args);
+  if (!parsed) return kOk;
+  const po::variables_map& vm = *parsed;
   if (vm.count("collect")) {
     collect_sweep(vm["collect"].as<std::string>());
     return kOk;
@@ -208,20 +211,11 @@ int sweep_main(const std::vector<std::string>& args) {
 // `grainmesh check TESSELLATION.json MESH.vtu`.
 int check_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh check TESSELLATION.json MESH.vtu");
-  desc.add_options()("help,h", "show this help")("tessellation", po::value<std::string>(), "tessellation.json")(
+  desc.add_options()("tessellation", po::value<std::string>(), "tessellation.json")(
       "mesh", po::value<std::string>(), "mesh.vtu written by grainmesh mesh");
-  po::positional_options_description pos;
-  pos.add("tessellation", 1).add("mesh", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
-  } catch (const po::error& e) {
-    throw ConfigError(std::string("check: ") + e.what());
-  }
-  if (vm.count("help")) {
-    std::cout << desc;
-    return kOk;
-  }
+  const auto parsed = parse_options("check", desc, {"tessellation", "mesh"}, args);
+  if (!parsed) return kOk;
+  const po::variables_map& vm = *parsed;
   if (!vm.count("tessellation") || !vm.count("mesh"))
     throw ConfigError("check: give the tessellation.json and the mesh.vtu to check");
   run_check_command(vm["tessellation"].as<std::string>(), vm["mesh"].as<std::string>());

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <variant>
 
 #include "common/errors.hpp"
@@ -27,11 +25,7 @@ const std::vector<std::string>& mesh_config_keys() {
 }
 
 Tessellation read_tessellation_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(file.string() + ": cannot open tessellation file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return tessellation_from_json(text.str(), file.string());
+  return tessellation_from_json(read_text_file(file, "tessellation file"), file.string());
 }
 
 MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
@@ -85,6 +79,21 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   return job;
 }
 
+void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width) {
+  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
+  for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  write_mesh_description(dir / "mesh.json", description);
+  TriMesh by_phase = m.mesh;
+  by_phase.region = m.phase;
+  write_mesh_png(dir / "mesh.png", by_phase, {.width_px = picture_width, .outline_by = m.mesh.region});
+  // A detail at the centre, three grains wide, where single elements show.
+  const double side = std::min({3.0 * std::sqrt(t.width * t.height / std::max(1, t.stats.grains)), t.width, t.height});
+  const Vec2 centre{0.5 * t.width, 0.5 * t.height}, half{0.5 * side, 0.5 * side};
+  write_mesh_png(dir / "mesh_detail.png", by_phase,
+                 {.width_px = picture_width, .outline_by = m.mesh.region, .view = Box{centre - half, centre + half}});
+}
+
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out);
   const Tessellation t = read_tessellation_file(tessellation);
@@ -94,19 +103,7 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   const MeshQuality q = measure_quality(m.mesh);
 
   StagedOutput staged(out);
-  write_vtu(staged.dir() / "mesh.vtu", m.mesh,
-            {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
-  TriMesh by_phase = m.mesh;
-  by_phase.region = m.phase;
-  write_mesh_png(staged.dir() / "mesh.png", by_phase, {.width_px = job.picture_width, .outline_by = m.mesh.region});
-  // A detail at the centre, three grains wide, where single elements show.
-  const double side = std::min({3.0 * std::sqrt(t.width * t.height / std::max(1, t.stats.grains)), t.width, t.height});
-  const Vec2 centre{0.5 * t.width, 0.5 * t.height}, half{0.5 * side, 0.5 * side};
-  write_mesh_png(staged.dir() / "mesh_detail.png", by_phase,
-                 {.width_px = job.picture_width, .outline_by = m.mesh.region, .view = Box{centre - half, centre + half}});
-  MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
-  for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
-  write_mesh_description(staged.dir() / "mesh.json", description);
+  write_mesh_files(staged.dir(), t, m, job.picture_width);
   Json report;
   report["command"] = "mesh";
   report["tessellation"] = tessellation.string();

@@ -25,6 +25,10 @@ MeshJob read_mesh_job(const Config& config, const Tessellation& t);
 // Reads and validates tessellation.json. Throws IoError or GeometryError naming the file.
 Tessellation read_tessellation_file(const std::filesystem::path& file);
 
+// Writes a grain mesh's files into `dir`: mesh.vtu (cell data grain, phase, quality),
+// mesh.json (the cell and phases, for the export), mesh.png and mesh_detail.png.
+void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width);
+
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
                       const std::filesystem::path& out);
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <system_error>
 
@@ -68,6 +69,14 @@ void StagedOutput::commit() {
   if (ec) throw IoError(final_.string() + ": cannot move the output into place: " + ec.message());
   committed_ = true;
   if (!old.empty()) fs::remove_all(old, ec);
+}
+
+std::string read_text_file(const fs::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(file.string() + ": cannot open " + what);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 void write_text_file(const fs::path& file, const std::string& text) {

@@ -38,6 +38,9 @@ class StagedOutput {
 // Checks, before any work is done, that `final_dir` could be replaced (see above).
 void check_output_replaceable(const std::filesystem::path& final_dir, Replace policy = Replace::earlier_output);
 
+// The whole of `file`; IoError "FILE: cannot open WHAT" when it cannot be read.
+std::string read_text_file(const std::filesystem::path& file, const std::string& what = "file");
+
 // Writes `text` to `file` through a temporary file and a rename. Throws IoError.
 void write_text_file(const std::filesystem::path& file, const std::string& text);
 

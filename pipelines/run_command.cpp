@@ -8,7 +8,6 @@
 
 #include "export/foam.hpp"
 #include "export/picture.hpp"
-#include "export/vtu.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
@@ -103,18 +102,11 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const std::filesystem::path dir = staged.dir();
   write_text_file(dir / "tessellation.json", tessellation_to_json(t));
   write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
-  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
-  MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
-  for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
-  write_mesh_description(dir / "mesh.json", description);
-  TriMesh by_phase = m.mesh;
-  by_phase.region = m.phase;
-  write_mesh_png(dir / "mesh.png", by_phase, {.width_px = mesh_job.picture_width, .outline_by = m.mesh.region});
+  write_mesh_files(dir, t, m, mesh_job.picture_width);
 
   clock = std::chrono::steady_clock::now();
   stage("exporting");
-  ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = description.cell, .periodic = t.periodic};
-  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  const ExportMesh e = grain_export_mesh(t, m);
   std::filesystem::create_directories(dir / "case");
   write_foam_case(dir / "case", e, foam);
   const double export_seconds = since(clock);

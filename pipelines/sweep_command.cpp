@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -46,12 +45,9 @@ std::string run_name(std::size_t point, int realisation) {
 }
 
 Json read_json(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(file.string() + ": cannot open");
-  std::stringstream s;
-  s << in.rdbuf();
+  const std::string text = read_text_file(file);
   try {
-    return Json::parse(s.str());
+    return Json::parse(text);
   } catch (const Json::exception& e) {
     throw IoError(file.string() + ": not valid JSON: " + e.what());
   }

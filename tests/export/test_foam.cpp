@@ -46,16 +46,6 @@ std::vector<double> read_sigma_xx(const fs::path& file) {
   return xx;
 }
 
-ExportMesh grain_export(const Tessellation& t, const GrainMesh& m) {
-  ExportMesh e;
-  e.mesh = m.mesh;
-  e.phase = m.phase;
-  e.cell = Box{{0.0, 0.0}, {t.width, t.height}};
-  e.periodic = t.periodic;
-  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
-  return e;
-}
-
 Tessellation microstructure(bool periodic) {
   TessellationOptions o;
   o.width = 3.0;
@@ -87,7 +77,7 @@ TEST_CASE("checkMesh accepts a periodic two-phase microstructure with patches an
           "[export][openfoam]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export(t, m);
+  const ExportMesh e = grain_export_mesh(t, m);
   for (bool cyclic : {false, true})
     for (bool binary : {false, true}) {
       INFO("cyclic " << cyclic << " binary " << binary);
@@ -120,7 +110,7 @@ TEST_CASE("solidDisplacementFoam converges on a two-phase microstructure case", 
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
   test::ScratchDir dir("solve");
-  write_foam_case(dir.path(), grain_export(t, m), {});
+  write_foam_case(dir.path(), grain_export_mesh(t, m), {});
   // The thesis' phases (800 and 300 GPa) differ by less than 3 in stiffness: harmonic.
   CHECK(test::read_file(dir / "system/fvSchemes").find("laplacian(DD,D) Gauss harmonic corrected") != std::string::npos);
   const auto r = test::run_openfoam(dir.path(), "solidDisplacementFoam");
@@ -199,7 +189,7 @@ TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across a
     const GrainMesh m = mesh_tessellation(t, {.size = 0.05, .phase_size = {}});
     test::ScratchDir dir("laminate");
     const FoamOptions o{};  // right moved by 0.001, symmetry elsewhere, plane strain
-    write_foam_case(dir.path(), grain_export(t, m), o);
+    write_foam_case(dir.path(), grain_export_mesh(t, m), o);
     const auto r = test::run_openfoam(dir.path(), "solidDisplacementFoam");
     REQUIRE(r.exit_code == 0);
     const double strain = o.displacement / t.width;  // the mean of d(ux)/dx, exactly
@@ -250,7 +240,7 @@ TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of t
 TEST_CASE("cyclic cases: the displacement jump across left/right loads the periodic cell", "[export][openfoam][physics]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export(t, m);
+  const ExportMesh e = grain_export_mesh(t, m);
   const FoamOptions cyclic{.cyclic = true};
 
   // Two phases: periodic and symmetric boundaries give nearly the same mean stress.
