@@ -15,10 +15,11 @@ namespace grainmesh {
 namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, K>;  // index among the kept faces
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 using CVb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using CFbInfo = CGAL::Triangulation_face_base_with_info_2<int, K>;  // nesting depth, -1 = not yet
+using CFbInfo = CGAL::Triangulation_face_base_with_info_2<int, K>;  // nesting depth, then index
 using CFb = CGAL::Constrained_triangulation_face_base_2<K, CFbInfo>;
 using CTds = CGAL::Triangulation_data_structure_2<CVb, CFb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CTds, CGAL::Exact_predicates_tag>;
@@ -33,29 +34,41 @@ std::vector<std::pair<K::Point_2, int>> with_ids(std::span<const Vec2> points) {
   return input;
 }
 
-template <typename T>
-std::vector<std::array<int, 3>> faces(const T& tri) {
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(tri.number_of_faces());
+// The faces `keep` accepts, with their neighbours among them. Face info is overwritten
+// with the face's index (-1 for faces not kept).
+template <typename T, typename Keep>
+Triangulation flat(T& tri, Keep keep) {
+  Triangulation out;
+  out.triangles.reserve(tri.number_of_faces());
+  for (auto f : tri.all_face_handles()) {
+    if (tri.is_infinite(f) || !keep(f)) {
+      f->info() = -1;
+      continue;
+    }
+    f->info() = static_cast<int>(out.triangles.size());
+    out.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  }
+  out.neighbours.resize(out.triangles.size());
   for (auto f : tri.finite_face_handles())
-    triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return triangles;
+    if (f->info() >= 0)
+      for (int i = 0; i < 3; ++i) out.neighbours[f->info()][i] = f->neighbor(i)->info();
+  return out;
 }
 }  // namespace
 
-std::vector<std::array<int, 3>> delaunay_triangulation(std::span<const Vec2> points) {
+Triangulation delaunay_triangulation(std::span<const Vec2> points) {
   const auto input = with_ids(points);
   try {
     // The range insert sorts along a Hilbert curve first (deterministically).
-    const Delaunay dt(input.begin(), input.end());
-    return faces(dt);
+    Delaunay dt(input.begin(), input.end());
+    return flat(dt, [](auto) { return true; });
   } catch (const CGAL::Failure_exception& e) {
     throw GeometryError(std::string("delaunay: CGAL failed: ") + e.what());
   }
 }
 
-std::vector<std::array<int, 3>> constrained_delaunay_triangulation(std::span<const Vec2> points,
-                                                                   std::span<const std::array<int, 2>> constraints) {
+Triangulation constrained_delaunay_triangulation(std::span<const Vec2> points,
+                                                 std::span<const std::array<int, 2>> constraints) {
   const auto input = with_ids(points);
   try {
     Cdt cdt;
@@ -88,11 +101,7 @@ std::vector<std::array<int, 3>> constrained_delaunay_triangulation(std::span<con
       level.swap(deeper);
       deeper.clear();
     }
-    std::vector<std::array<int, 3>> triangles;
-    triangles.reserve(cdt.number_of_faces());
-    for (auto f : cdt.finite_face_handles())
-      if (f->info() % 2 == 1) triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-    return triangles;
+    return flat(cdt, [](auto f) { return f->info() % 2 == 1; });
   } catch (const CGAL::Failure_exception& e) {
     throw GeometryError(std::string("delaunay: CGAL failed: ") + e.what());
   }

@@ -104,7 +104,9 @@ class Engine {
   void seed_points(Rng& rng);
   std::vector<double> checked_size(const std::vector<Vec2>& pts) const;
   int interface_mover(int a, int b, const std::vector<double>& di) const;
-  void triangulate();
+  void triangulate(bool from_scratch = false);
+  void points_changed();
+  void points_appended(std::size_t first, const std::vector<int>& near);
   void bar_forces();
   bool density_control();
   void move_points();
@@ -128,16 +130,21 @@ class Engine {
   std::vector<Vec2> p_;                      // #N positions, fixed first
   std::vector<Vec2> pold_;                   // positions at the last triangulation
   std::vector<Vec2> before_;                 // positions at the start of the iteration
+  Triangulation live_;                       // kept Delaunay by flips while points move
+  bool live_valid_ = false;                  // false: the points changed, build anew
+  std::vector<int> orphans_;                 // points in no triangle of live_
   std::vector<std::array<int, 3>> tris_;     // triangles with centroid inside
   std::vector<std::array<int, 2>> bars_;     // unique edges of tris_
   std::vector<char> on_boundary_;            // #N: on an edge of one triangle
   std::vector<char> bar_on_boundary_;        // #bars: an edge of one triangle
   std::vector<char> on_interface_;           // #N: held on dI = 0 (kept aligned with p_)
   std::vector<Vec2> force_, mid_;            // #N total force; #bars midpoints (at triangulation)
-  std::vector<double> len_, len0_, d_, di_;  // #bars lengths, wanted lengths; #N d, dI
+  std::vector<double> len_, d_, di_;         // #bars lengths; #N d, dI
   std::vector<double> bar_size_;             // #bars size field at the midpoints
   std::vector<double> point_size_;           // #N size at the points (absolute sizes only)
-  std::vector<int> edge_start_, edge_high_;  // triangulate()'s edge buckets, kept to reuse memory
+  std::vector<char> kept_;                   // #live triangles: inside the domain
+  double sum_size2_ = 0.0;                   // sum of bar_size_ squared
+  double len0_scale_ = 0.0;                  // wanted length / bar size, this iteration
   std::vector<double> dval_;                 // #N d at dpos_, the last exact evaluation
   std::vector<Vec2> dpos_;
   DistMeshStats stats_;
@@ -301,46 +308,62 @@ void Engine::seed_points(Rng& rng) {
   stats_.initial_points = p_.size();
 }
 
+// After points were added, removed or renumbered: the next triangulation starts afresh.
+void Engine::points_changed() {
+  live_valid_ = false;
+  dval_.clear();
+}
+
 // Step 2: Delaunay triangulation, keeping triangles whose centroid is inside; the bars
 // are the unique edges, and an edge of one triangle only lies on the mesh boundary.
-void Engine::triangulate() {
-  tris_.clear();
-  if (fixed_boundary()) {
-    tris_ = constrained_delaunay_triangulation(p_, pb_.constraints);  // the seeded rings say what is inside
-  } else {
-    for (const auto& t : delaunay_triangulation(p_)) {
-      const Vec2 c = (p_[t[0]] + p_[t[1]] + p_[t[2]]) / 3.0;
-      if (pb_.domain(c) < -geps_) tris_.push_back(t);
-    }
+// Beyond the thesis, the triangulation is not built anew each time: while the points
+// only moved, edge flips make the last one Delaunay again (the same triangles a new one
+// would have, but for ties), unless a move turned a triangle over.
+void Engine::triangulate(bool from_scratch) {
+  const auto started = std::chrono::steady_clock::now();
+  bool repaired = live_valid_ && !from_scratch;
+  for (std::size_t k = 0; repaired && k < orphans_.size(); ++k)  // a point outside it moved in
+    repaired = p_[orphans_[k]] == pold_[orphans_[k]];
+  // A domain's triangulation covers the points' hull, whose outer slivers (between
+  // points on a straight side) may turn over; they are no part of the mesh and go.
+  const std::size_t before = live_.triangles.size();
+  repaired = repaired && restore_delaunay(live_, p_, &stats_.flips, !fixed_boundary());
+  if (!repaired) {
+    live_ = fixed_boundary() ? constrained_delaunay_triangulation(p_, pb_.constraints) : delaunay_triangulation(p_);
+    live_valid_ = true;
+    ++stats_.rebuilds;
   }
-  // The bars, ordered by (lower end, higher end): every triangle edge bucketed by its
-  // lower end (a counting sort, linear), each bucket (a few edges) sorted by the higher
-  // end; an edge seen once is on the boundary.
-  const std::size_t n = p_.size();
-  edge_start_.assign(n + 2, 0);
-  for (const auto& t : tris_)
-    for (int k = 0; k < 3; ++k) ++edge_start_[static_cast<std::size_t>(std::min(t[k], t[(k + 1) % 3])) + 2];
-  for (std::size_t v = 2; v < edge_start_.size(); ++v) edge_start_[v] += edge_start_[v - 1];
-  edge_high_.resize(3 * tris_.size());
-  for (const auto& t : tris_)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      edge_high_[edge_start_[static_cast<std::size_t>(std::min(a, b)) + 1]++] = std::max(a, b);
-    }
-  on_boundary_.assign(n, 0);
+  if (!repaired || live_.triangles.size() < before) {
+    std::vector<char> used(p_.size(), 0);
+    for (const auto& t : live_.triangles)
+      for (int v : t) used[v] = 1;
+    orphans_.clear();
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      if (!used[i]) orphans_.push_back(static_cast<int>(i));
+  }
+  // The kept triangles, and their edges as bars: each edge once, from the lower of its
+  // two kept triangles, or the only one (then on the mesh boundary). Linear, no sorting.
+  const auto& tri = live_.triangles;
+  const auto& nb = live_.neighbours;
+  kept_.assign(tri.size(), 1);
+  if (!fixed_boundary())  // the seeded rings say what is inside; else the centroid does
+    for (std::size_t t = 0; t < tri.size(); ++t)
+      kept_[t] = pb_.domain((p_[tri[t][0]] + p_[tri[t][1]] + p_[tri[t][2]]) / 3.0) < -geps_;
+  tris_.clear();
   bars_.clear();
   bar_on_boundary_.clear();
-  for (std::size_t v = 0; v < n; ++v) {
-    const auto first = edge_high_.begin() + edge_start_[v], last = edge_high_.begin() + edge_start_[v + 1];
-    std::sort(first, last);
-    for (auto i = first; i != last;) {
-      auto j = i + 1;
-      while (j != last && *j == *i) ++j;
-      const int a = static_cast<int>(v), b = *i;
-      if (j - i == 1) on_boundary_[a] = on_boundary_[b] = 1;
-      bar_on_boundary_.push_back(j - i == 1);
+  on_boundary_.assign(p_.size(), 0);
+  for (std::size_t t = 0; t < tri.size(); ++t) {
+    if (!kept_[t]) continue;
+    tris_.push_back(tri[t]);
+    for (int k = 0; k < 3; ++k) {
+      const int u = nb[t][k];
+      const bool boundary = u < 0 || !kept_[u];
+      if (!boundary && u < static_cast<int>(t)) continue;
+      const int a = tri[t][(k + 1) % 3], b = tri[t][(k + 2) % 3];
       bars_.push_back({a, b});
-      i = j;
+      bar_on_boundary_.push_back(boundary);
+      if (boundary) on_boundary_[a] = on_boundary_[b] = 1;
     }
   }
   // The size at each bar's midpoint. Evaluated here rather than every iteration: until
@@ -361,31 +384,39 @@ void Engine::triangulate() {
     for (std::size_t e = 0; e < bars_.size(); ++e) mid_[e] = 0.5 * (p_[bars_[e][0]] + p_[bars_[e][1]]);
     size_->eval(mid_, bar_size_);
   }
+  sum_size2_ = 0.0;
+  for (double h : bar_size_) sum_size2_ += h * h;
   pold_ = p_;
   ++stats_.retriangulations;
+  stats_.triangulation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 // Step 3: bar lengths and the lengths they want (eq. 2.9), and the repulsive forces (eq. 2.6).
 void Engine::bar_forces() {
   const std::size_t nb = bars_.size();
   len_.resize(nb);
-  len0_.resize(nb);
-  double sum_l2 = 0.0;
-  for (std::size_t e = 0; e < nb; ++e) {
-    len_[e] = norm(p_[bars_[e][0]] - p_[bars_[e][1]]);
-    sum_l2 += len_[e] * len_[e];
+  auto length2 = [&](std::size_t e) { return norm2(p_[bars_[e][0]] - p_[bars_[e][1]]); };
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;  // four chains, so the additions overlap
+  std::size_t e = 0;
+  for (; e + 4 <= nb; e += 4) {
+    const double a = length2(e), b = length2(e + 1), c = length2(e + 2), d = length2(e + 3);
+    s0 += a, s1 += b, s2 += c, s3 += d;
+    len_[e] = std::sqrt(a), len_[e + 1] = std::sqrt(b), len_[e + 2] = std::sqrt(c), len_[e + 3] = std::sqrt(d);
   }
-  double sum_h2 = 0.0;
-  for (double h : bar_size_) sum_h2 += h * h;
-  const double scale = sum_h2 > 0.0 ? opt_.fscale * std::sqrt(sum_l2 / sum_h2) : 0.0;
-  for (std::size_t e = 0; e < nb; ++e) len0_[e] = scale * bar_size_[e];
+  for (; e < nb; ++e) {
+    const double a = length2(e);
+    s0 += a;
+    len_[e] = std::sqrt(a);
+  }
+  const double sum_l2 = (s0 + s1) + (s2 + s3);
+  len0_scale_ = sum_size2_ > 0.0 ? opt_.fscale * std::sqrt(sum_l2 / sum_size2_) : 0.0;
 
   force_.assign(p_.size(), Vec2{});
   for (std::size_t e = 0; e < nb; ++e) {
-    const double l = len_[e];
-    if (l >= len0_[e] || l == 0.0) continue;
+    const double l = len_[e], l0 = len0_scale_ * bar_size_[e];
+    if (l >= l0 || l == 0.0) continue;
     const int i = bars_[e][0], j = bars_[e][1];
-    const Vec2 f = ((len0_[e] - l) / l) * (p_[i] - p_[j]);
+    const Vec2 f = ((l0 - l) / l) * (p_[i] - p_[j]);
     force_[i] += f;
     force_[j] -= f;
   }
@@ -398,37 +429,72 @@ void Engine::bar_forces() {
 bool Engine::density_control() {
   std::vector<char> drop(p_.size(), 0);
   std::vector<Vec2> added_boundary, added_interface;
+  std::vector<int> near, near_interface;  // a point near each added one
   bool any = false;
   for (std::size_t e = 0; e < bars_.size(); ++e) {
     const int a = bars_[e][0], b = bars_[e][1];
-    if (len0_[e] > 2.0 * len_[e]) {
+    const double len0 = len0_scale_ * bar_size_[e];
+    if (len0 > 2.0 * len_[e]) {
       for (int v : bars_[e])
         if (static_cast<std::size_t>(v) >= nfix_) drop[v] = any = true;
-    } else if (opt_.split_long_edges && !fixed_boundary() && len_[e] > 1.5 * len0_[e] / opt_.fscale) {
+    } else if (opt_.split_long_edges && !fixed_boundary() && len_[e] > 1.5 * len0 / opt_.fscale) {
       const Vec2 mid = 0.5 * (p_[a] + p_[b]);
       if (bar_on_boundary_[e]) {
         added_boundary.push_back(project_to_zero(pb_.domain, mid, deps_, proj_tol_));
+        near.push_back(a);
       } else if (on_interface_[a] && on_interface_[b] && pb_.interface) {
         added_interface.push_back(project_to_zero(*pb_.interface, mid, deps_, proj_tol_));
+        near_interface.push_back(a);
       }
     }
   }
   any = any || !added_boundary.empty() || !added_interface.empty();
   if (!any) return false;
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < p_.size(); ++i)
-    if (!drop[i]) {
-      p_[out] = p_[i];
-      on_interface_[out++] = on_interface_[i];
-    }
-  stats_.density_removed += p_.size() - out;
-  dval_.clear();  // indices changed
-  p_.resize(out);
-  on_interface_.resize(out);
+  const bool dropping = std::find(drop.begin(), drop.end(), 1) != drop.end();
+  if (dropping) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      if (!drop[i]) {
+        p_[out] = p_[i];
+        on_interface_[out++] = on_interface_[i];
+      }
+    stats_.density_removed += p_.size() - out;
+    points_changed();
+    p_.resize(out);
+    on_interface_.resize(out);
+  }
+  const std::size_t first = p_.size();
   for (const Vec2 q : added_boundary) p_.push_back(q), on_interface_.push_back(0);
   for (const Vec2 q : added_interface) p_.push_back(q), on_interface_.push_back(1);
   stats_.density_added += added_boundary.size() + added_interface.size();
+  if (!dropping) {
+    near.insert(near.end(), near_interface.begin(), near_interface.end());
+    points_appended(first, near);
+  }
   return true;
+}
+
+// Points `first` on were appended, each near the point `near` names: they are inserted
+// into the live triangulation (brought up to the points' moves first), or the next
+// triangulation starts afresh.
+void Engine::points_appended(std::size_t first, const std::vector<int>& near) {
+  dval_.resize(p_.size(), std::numeric_limits<double>::infinity());  // nothing known of the new ones
+  dpos_.resize(p_.size());
+  if (!live_valid_ || !restore_delaunay(live_, p_, &stats_.flips)) {  // (its hull kept whole)
+    live_valid_ = false;
+    return;
+  }
+  std::vector<int> triangle_at(first, -1);
+  for (std::size_t t = 0; t < live_.triangles.size(); ++t)
+    for (int v : live_.triangles[t]) triangle_at[v] = static_cast<int>(t);
+  for (std::size_t k = first; k < p_.size(); ++k) {
+    const int hint = triangle_at[near[k - first]];
+    if (hint < 0 || !insert_point(live_, p_, static_cast<int>(k), hint)) {
+      live_valid_ = false;
+      return;
+    }
+    ++stats_.inserted;
+  }
 }
 
 // Step 4: forward Euler (eq. 2.12); fixed points do not move.
@@ -598,10 +664,14 @@ void Engine::optimize_stars(std::size_t first) {
     return sum;
   };
 
+  // A point is looked at again only once it or a neighbour has moved: otherwise it would
+  // find what it found before (the same sweeps, in less time).
+  std::vector<char> dirty(p_.size(), 1);
   for (int sweep = 0; sweep < opt_.optimize_sweeps; ++sweep) {
     int moved = 0;
     for (std::size_t i = std::max(first, nfix_); i < p_.size(); ++i) {
-      if (start[i] == start[i + 1]) continue;
+      if (!dirty[i] || start[i] == start[i + 1]) continue;
+      dirty[i] = 0;
       if (on_boundary_[i] && on_interface[i]) continue;  // where the two curves meet
       double qmin0;
       const double f0 = star_quality(i, p_[i], qmin0);
@@ -634,6 +704,8 @@ void Engine::optimize_stars(std::size_t first) {
           continue;
         p_[i] = x;
         ++moved;
+        for (int k = start[i]; k < start[i + 1]; ++k)
+          for (int v : tris_[star[k]]) dirty[v] = 1;
         break;
       }
     }
@@ -656,6 +728,7 @@ constexpr std::size_t kMaxTrials = 200;
 // make the new star good. Returns how many points were added.
 std::size_t Engine::insert_steiner_points() {
   std::vector<Vec2> added;
+  std::vector<int> near;
   for (const auto& t : tris_) {
     const Vec2 a = p_[t[0]], b = p_[t[1]], c = p_[t[2]];
     if (radius_ratio(a, b, c) >= kMendBelow) continue;
@@ -666,8 +739,11 @@ std::size_t Engine::insert_steiner_points() {
     const double r = norm(centre - a);
     if (!(pb_.domain(centre) < -0.5 * r)) continue;
     added.push_back(centre);
+    near.push_back(t[0]);
   }
+  const std::size_t first = p_.size();
   for (const Vec2 q : added) p_.push_back(q), on_interface_.push_back(0);
+  points_appended(first, near);
   return added.size();
 }
 
@@ -702,6 +778,7 @@ std::size_t Engine::remove_crowding_points() {
     const Vec2 kept = p_[v];
     p_.erase(p_.begin() + static_cast<std::ptrdiff_t>(v));
     on_interface_.erase(on_interface_.begin() + static_cast<std::ptrdiff_t>(v));
+    points_changed();
     triangulate();
     const auto now = shortfall(kMendBelow);
     if (now.first >= best.first && now.second < best.second) {
@@ -711,8 +788,8 @@ std::size_t Engine::remove_crowding_points() {
     }
     p_.insert(p_.begin() + static_cast<std::ptrdiff_t>(v), kept);
     on_interface_.insert(on_interface_.begin() + static_cast<std::ptrdiff_t>(v), 0);
+    points_changed();
   }
-  dval_.clear();
   triangulate();
   return removed;
 }
@@ -746,6 +823,7 @@ std::size_t Engine::try_steiner_points() {
   for (const Vec2 x : candidates) {
     p_.push_back(x);
     on_interface_.push_back(0);
+    points_changed();
     triangulate();
     optimize_stars(p_.size() - 1);
     const auto now = shortfall(kMendBelow);
@@ -756,8 +834,8 @@ std::size_t Engine::try_steiner_points() {
     }
     p_.pop_back();
     on_interface_.pop_back();
+    points_changed();
   }
-  dval_.clear();
   triangulate();
   return kept;
 }
@@ -784,7 +862,9 @@ TriMesh Engine::compact() const {
 
 DistMeshResult Engine::run(Rng& rng) {
   const auto start = std::chrono::steady_clock::now();
+  auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   seed_points(rng);
+  stats_.seeding_seconds = since(start);
 
   bool retriangulate = true;
   for (int it = 1;; ++it) {
@@ -825,7 +905,9 @@ DistMeshResult Engine::run(Rng& rng) {
     }
   }
 
-  triangulate();
+  // A domain's hull can fold without turning a triangle over: start the finish afresh.
+  const auto finish = std::chrono::steady_clock::now();
+  triangulate(!fixed_boundary());
   if (pb_.interface) stats_.interface_straddling = repair_interface();
   optimize_stars();
   for (int round = 0; fixed_boundary() && round < 6 && insert_steiner_points() > 0; ++round) {
@@ -837,7 +919,8 @@ DistMeshResult Engine::run(Rng& rng) {
 
   DistMeshResult result{compact(), stats_};
   validate(result.mesh);
-  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.stats.finish_seconds = since(finish);
+  result.stats.seconds = since(start);
   return result;
 }
 

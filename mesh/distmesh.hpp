@@ -10,6 +10,7 @@
 
 #include "common/geometry.hpp"
 #include "common/random.hpp"
+#include "mesh/delaunay.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/size_function.hpp"
 #include "mesh/trimesh.hpp"
@@ -62,6 +63,12 @@ struct DistMeshProblem {
 struct DistMeshStats {
   int iterations = 0;
   int retriangulations = 0;
+  int rebuilds = 0;                 // of them, built anew (the rest repaired by flips)
+  std::size_t flips = 0;            // edge flips of the repairs
+  std::size_t inserted = 0;         // points added to a live triangulation by a walk
+  double seeding_seconds = 0.0;       // the parts of `seconds`: seeding, triangulating,
+  double triangulation_seconds = 0.0;  // ... and the finish after the force iterations
+  double finish_seconds = 0.0;
   bool converged = false;           // false: the iteration limit stopped it
   std::string stop_reason;
   double lattice_spacing = 0.0;     // h0, or finer where curved boundaries ask for it

@@ -190,12 +190,17 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   report["fixed_points"] = job.problem.fixed.size();
   report["iterations"] = s.iterations;
   report["retriangulations"] = s.retriangulations;
+  report["triangulations_built_anew"] = s.rebuilds;
+  report["edge_flips"] = s.flips;
   report["density_removed"] = s.density_removed;
   report["density_added"] = s.density_added;
   report["interface_repairs"] = s.interface_repairs;
   report["converged"] = s.converged;
   report["stop_reason"] = s.stop_reason;
   report["seconds"] = s.seconds;
+  report["seeding_seconds"] = s.seeding_seconds;
+  report["triangulation_seconds"] = s.triangulation_seconds;
+  report["finish_seconds"] = s.finish_seconds;
   report["peak_memory_mib"] = peak_memory_mib();
   write_json(staged.dir() / "report.json", report);
   staged.commit();
