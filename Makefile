@@ -29,7 +29,9 @@ run: build
 test: build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 
+# Benchmarks against Gmsh (installed here if missing) and CGAL; results in bench/results.json.
 bench: build
+	@./scripts/install-deps.sh --bench
 	@cmake --build $(BUILD_DIR) --target bench
 
 clean:

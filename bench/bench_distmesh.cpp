@@ -1,7 +1,7 @@
 // make bench: fixed-seed DistMesh benchmarks. Each case runs in a child process, three
 // times, so that its peak memory is its own; the time is the mesher's alone (seeding,
 // iterations, final optimisation), without reading the config or writing files.
-// Prints a table and writes bench/results.json.
+// Prints a table and updates bench/results.json ("distmesh").
 #include <unistd.h>
 
 #include <algorithm>
@@ -50,7 +50,6 @@ int main(int argc, char** argv) {
       {"ellipse_minus_circle (Table 3.3)", "data/examples/ellipse_minus_circle.ini", 19.97},
       {"intersection_two_circles (Table 3.3)", "data/examples/intersection_two_circles.ini", 1.16},
       {"fibres_20", "data/examples/fibres_20.ini", {}},
-      {"unit disk h0 = 0.004", "bench/cases/disk_h0004.ini", {}},
   };
 
   Json results = Json::array();

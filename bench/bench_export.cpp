@@ -2,7 +2,7 @@
 // (a square grid cut into triangles, two phases in stripes of grains) stands in for a
 // mesh-stage output: the export's cost depends on the counts, not on where they came from.
 // Each case runs in a child process, three times (median); "seconds" is write_foam_case()
-// (polyMesh, zones, fields, dictionaries). Writes bench/export_results.json.
+// (polyMesh, zones, fields, dictionaries). Writes bench/results.json ("export").
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
     labelled.update(row);
     results.push_back(labelled);
   }
-  write_results(source / "bench" / "export_results.json", "export",
+  write_results(source / "bench" / "results.json", "export",
                 "median of 3 runs, each in a fresh process; write_foam_case() alone", results);
   return 0;
 }

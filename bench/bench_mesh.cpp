@@ -1,23 +1,31 @@
-// make bench: the mesh stage on tessellations. Each case runs in a child process, three
-// times (median), so that its peak memory is its own; "seconds" is mesh_tessellation()
-// alone (size field, seeding, every region, merge), the tessellation is timed apart.
-// Also compares the per-region mesher with the thesis' global Algorithm 3 on its 6-fibre
-// cell. Prints tables and writes bench/mesh_results.json.
+// make bench: the pipeline on periodic two-phase WC-Co cells of 1,000, 10,000 and
+// 100,000 grains: seconds per stage (tessellate, mesh, export of the OpenFOAM case),
+// triangles per second, peak memory, on 1 and 2 threads. The 1,000-grain cell is also
+// meshed by Gmsh from the same polygons (a .geo written here, every grain boundary one
+// shared line, so the grains' meshes conform), as a peer. Also compares the per-region
+// mesher with the thesis' global Algorithm 3 on its 6-fibre cell. Each case runs in a
+// child process, three times (median; once for 100,000 grains), so that its peak memory
+// is its own. Prints tables and updates bench/results.json ("mesh").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "bench/child.hpp"
+#include "bench/peers.hpp"
+#include "export/foam.hpp"
 #include "mesh/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 
 using namespace grainmesh;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -28,38 +36,56 @@ double since(std::chrono::steady_clock::time_point t) {
 struct CellCase {
   std::string name;
   int grains;
-  PhaseMode mode;
-  double matrix_fraction;
+  double triangles_per_grain;
   int threads;
   int runs;
 };
 
-// A periodic unit-aspect WC-Co cell with 3 Lloyd iterations, meshed at about 100
-// triangles per grain.
-Json measure_cell(const CellCase& c) {
+// A periodic unit-aspect WC-Co cell (15 % Co, grain mode) with 3 Lloyd iterations and
+// grains of unit area.
+Tessellation wc_co_cell(int grains) {
   TessellationOptions o;
-  o.width = std::sqrt(static_cast<double>(c.grains));  // grains of unit area
+  o.width = std::sqrt(static_cast<double>(grains));
   o.height = o.width;
-  o.grains = c.grains;
+  o.grains = grains;
   o.lloyd_iterations = 3;
-  o.phase_mode = c.mode;
+  o.phase_mode = PhaseMode::grain;
   o.arrangement = Arrangement::dispersed;
-  o.matrix_phase = 1;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", c.matrix_fraction, false, 211e9, 0.31}};
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.15, false, 211e9, 0.31}};
   Rng rng(1);
+  return tessellate(o, rng);
+}
+
+// The element size of `n` equilateral triangles per unit area.
+double size_for(double n) { return std::sqrt(4.0 / (n * std::sqrt(3.0))); }
+
+// The three stages, each timed: tessellate, mesh, export (ASCII polyMesh, zones, fields).
+Json measure_cell(const CellCase& c) {
   auto start = std::chrono::steady_clock::now();
-  const Tessellation t = tessellate(o, rng);
+  const Tessellation t = wc_co_cell(c.grains);
   const double tessellate_seconds = since(start);
-  const double size = std::sqrt(4.0 / (100.0 * std::sqrt(3.0)));  // 100 equilateral triangles per unit area
-  const GrainMesh m = mesh_tessellation(t, {.size = size, .phase_size = {}, .threads = c.threads});
+  start = std::chrono::steady_clock::now();
+  const GrainMesh m =
+      mesh_tessellation(t, {.size = size_for(c.triangles_per_grain), .phase_size = {}, .threads = c.threads});
+  const double mesh_seconds = since(start);
+  const fs::path dir = fs::temp_directory_path() / ("grainmesh-bench-cell-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  start = std::chrono::steady_clock::now();
+  write_foam_case(dir, grain_export_mesh(t, m), {});
+  const double export_seconds = since(start);
+  fs::remove_all(dir);
   const Conformity conf = check_conformity(t, m);
   const MeshQuality q = measure_quality(m.mesh);
-  return {{"seconds", m.seconds},
+  return {{"seconds", tessellate_seconds + mesh_seconds + export_seconds},
           {"tessellate_seconds", tessellate_seconds},
+          {"mesh_seconds", mesh_seconds},
+          {"mesh_regions_seconds", m.regions_seconds},
+          {"export_seconds", export_seconds},
           {"points", m.mesh.points.size()},
           {"triangles", m.mesh.triangles.size()},
           {"triangles_per_grain", static_cast<double>(m.mesh.triangles.size()) / t.stats.grains},
-          {"triangles_per_second", static_cast<double>(m.mesh.triangles.size()) / m.seconds},
+          {"triangles_per_second", static_cast<double>(m.mesh.triangles.size()) / mesh_seconds},
           {"q_min", q.q_min},
           {"q_mean", q.q_mean},
           {"q_below_0_5", q.q_below_half},
@@ -67,6 +93,54 @@ Json measure_cell(const CellCase& c) {
           {"max_non_orthogonality_deg", q.max_non_orthogonality_deg},
           {"max_area_error", conf.max_area_error},
           {"unconverged_regions", m.unconverged_regions}};
+}
+
+// The tessellation as a Gmsh .geo: a point per vertex (mesh size h), a line per edge, a
+// plane surface per region whose curve loops run along its rings over those lines.
+void write_geo(const Tessellation& t, double h, const fs::path& file) {
+  std::ofstream out(file);
+  out.precision(17);
+  out << "// " << t.grains.size() << " grains, every grain boundary one line shared by both sides.\n";
+  for (std::size_t v = 0; v < t.vertices.size(); ++v)
+    out << "Point(" << v + 1 << ") = {" << t.vertices[v].x << ", " << t.vertices[v].y << ", 0, " << h << "};\n";
+  std::map<std::pair<int, int>, int> line;  // (from, to) -> signed line id
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const int id = static_cast<int>(e) + 1, a = t.edges[e].v0, b = t.edges[e].v1;
+    out << "Line(" << id << ") = {" << a + 1 << ", " << b + 1 << "};\n";
+    line[{a, b}] = id;
+    line[{b, a}] = -id;
+  }
+  int loop = 0;
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    std::vector<int> loops;
+    for (const auto& ring : t.regions[r].rings) {
+      out << "Curve Loop(" << ++loop << ") = {";
+      for (std::size_t k = 0; k < ring.size(); ++k)
+        out << (k ? ", " : "") << line.at({ring[k], ring[(k + 1) % ring.size()]});
+      out << "};\n";
+      loops.push_back(loop);
+    }
+    out << "Plane Surface(" << r + 1 << ") = {";
+    for (std::size_t k = 0; k < loops.size(); ++k) out << (k ? ", " : "") << loops[k];
+    out << "};\n";
+  }
+  out << "Mesh.MeshSizeMax = " << h << ";\n";
+}
+
+// Gmsh on the cell's polygons: its meshing time from its log, the whole process's, and
+// the quality of the mesh it wrote.
+Json gmsh_cell(const Tessellation& t, double h, int threads, const fs::path& scratch) {
+  const fs::path geo = scratch / "cell.geo", msh = scratch / "cell.msh";
+  write_geo(t, h, geo);
+  const ProcessRun r = run_process({"gmsh", geo.string(), "-2", "-algo", "front2d", "-nt", std::to_string(threads),
+                                    "-format", "msh22", "-o", msh.string()},
+                                   scratch / "gmsh.log");
+  if (r.exit_code != 0) return {{"error", "gmsh: exit code " + std::to_string(r.exit_code)}};
+  Json row{{"seconds", gmsh_meshing_seconds(r.output)}, {"process_seconds", r.seconds}};
+  row.update(mesh_measures(read_msh2(msh)));
+  row["triangles_per_grain"] = row["triangles"].get<double>() / t.stats.grains;
+  row["peak_memory_mib"] = r.peak_mib;
+  return row;
 }
 
 // The thesis' 6-fibre cell (data/examples/fibres_6.ini) as regions: each fibre a
@@ -144,34 +218,87 @@ Json fibres_global(const std::filesystem::path& source) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::filesystem::path source = argc > 1 ? argv[1] : ".";
+  const fs::path source = argc > 1 ? argv[1] : ".";
   const std::vector<CellCase> cells{
-      {"1,000 grains, 1 thread", 1000, PhaseMode::grain, 0.15, 1, 3},
-      {"1,000 grains, 2 threads", 1000, PhaseMode::grain, 0.15, 2, 3},
-      {"10,000 grains, 1 thread", 10000, PhaseMode::grain, 0.15, 1, 3},
-      {"10,000 grains, 2 threads", 10000, PhaseMode::grain, 0.15, 2, 3},
-      {"100 grains binder 5 %, 2 threads", 100, PhaseMode::binder, 0.05, 2, 1},
+      {"1,000 grains, 1 thread", 1000, 100, 1, 3},
+      {"1,000 grains, 2 threads", 1000, 100, 2, 3},
+      {"1,000 grains at 130/grain, 1 thread", 1000, 130, 1, 3},
+      {"1,000 grains at 130/grain, 2 threads", 1000, 130, 2, 3},
+      {"10,000 grains, 1 thread", 10000, 100, 1, 3},
+      {"10,000 grains, 2 threads", 10000, 100, 2, 3},
+      {"100,000 grains, 1 thread", 100000, 100, 1, 1},
+      {"100,000 grains, 2 threads", 100000, 100, 2, 1},
   };
   const bool fibres_only = argc > 2 && std::string(argv[2]) == "fibres";
   Json results = Json::array();
-  if (!fibres_only) std::printf("%-34s %8s %8s %9s %8s %10s %7s %7s %8s %9s\n", "case", "mesh s", "tess s", "triangles", "tri/grain",
-              "tri/s", "q_min", "q_mean", "non-orth", "peak MiB");
+  if (!fibres_only)
+    std::printf("%-38s %7s %7s %7s %7s %9s %8s %9s %6s %6s %11s %9s\n", "periodic WC-Co cell (15 % Co)", "tess s",
+                "mesh s", "export s", "total s", "triangles", "tri/grain", "tri/s", "q_min", "q_mean", "x mesh/regs",
+                "peak MiB");
+  std::map<std::pair<int, double>, Json> one_thread;  // (grains, tri/grain) -> its row
   for (const CellCase& c : cells) {
     if (fibres_only) break;
     Json row = median_in_children(c.runs, [&] { return measure_cell(c); });
     if (row.contains("error")) {
-      std::printf("%-34s error: %s\n", c.name.c_str(), row["error"].get<std::string>().c_str());
+      std::printf("%-38s error: %s\n", c.name.c_str(), row["error"].get<std::string>().c_str());
       return 1;
     }
-    std::printf("%-34s %8.3f %8.3f %9zu %8.1f %10.0f %7.3f %7.4f %8.1f %9.1f\n", c.name.c_str(),
-                row["seconds"].get<double>(), row["tessellate_seconds"].get<double>(),
-                row["triangles"].get<std::size_t>(), row["triangles_per_grain"].get<double>(),
-                row["triangles_per_second"].get<double>(), row["q_min"].get<double>(), row["q_mean"].get<double>(),
-                row["max_non_orthogonality_deg"].get<double>(), row["peak_memory_mib"].get<double>());
+    std::string speedup = "-";
+    if (c.threads == 1) {
+      one_thread[{c.grains, c.triangles_per_grain}] = row;
+    } else if (const auto it = one_thread.find({c.grains, c.triangles_per_grain}); it != one_thread.end()) {
+      // The mesh stage as a whole, and its per-region meshing (the part that runs in parallel).
+      for (const std::string key : {"mesh", "mesh_regions"})
+        row[key + "_speedup_over_1_thread"] =
+            it->second[key + "_seconds"].get<double>() / row[key + "_seconds"].get<double>();
+      char text[32];
+      std::snprintf(text, sizeof text, "%.2f/%.2f", row["mesh_speedup_over_1_thread"].get<double>(),
+                    row["mesh_regions_speedup_over_1_thread"].get<double>());
+      speedup = text;
+    }
+    std::printf("%-38s %7.2f %7.2f %7.2f %7.2f %9zu %8.1f %9.0f %6.3f %6.4f %11s %9.1f\n", c.name.c_str(),
+                row["tessellate_seconds"].get<double>(), row["mesh_seconds"].get<double>(),
+                row["export_seconds"].get<double>(), row["seconds"].get<double>(), row["triangles"].get<std::size_t>(),
+                row["triangles_per_grain"].get<double>(), row["triangles_per_second"].get<double>(),
+                row["q_min"].get<double>(), row["q_mean"].get<double>(), speedup.c_str(),
+                row["peak_memory_mib"].get<double>());
     std::fflush(stdout);
-    Json labelled{{"case", c.name}, {"grains", c.grains}, {"threads", c.threads}};
+    Json labelled{{"case", c.name}, {"mesher", "grainmesh"}, {"grains", c.grains}, {"threads", c.threads}};
     labelled.update(row);
     results.push_back(labelled);
+  }
+
+  // The peer: Gmsh on the same 1,000-grain polygons, at the same two densities.
+  const fs::path scratch = fs::temp_directory_path() / "grainmesh-bench-gmsh-cell";
+  if (!fibres_only && !gmsh_version(fs::temp_directory_path()).empty()) {
+    fs::create_directories(scratch);
+    const Tessellation t = wc_co_cell(1000);
+    std::printf("\n%-38s %8s %9s %9s %8s %6s %6s %8s %9s\n", "the 1,000-grain cell by Gmsh (front2d)", "mesh s",
+                "process s", "triangles", "tri/grain", "q_min", "q_mean", "q<0.5", "peak MiB");
+    for (const double per_grain : {100.0, 130.0})
+      for (const int threads : {1, 2}) {
+        std::vector<Json> samples;
+        for (int run = 0; run < 3; ++run) samples.push_back(gmsh_cell(t, size_for(per_grain), threads, scratch));
+        if (samples[0].contains("error")) {
+          std::printf("gmsh: %s\n", samples[0]["error"].get<std::string>().c_str());
+          return 1;
+        }
+        std::sort(samples.begin(), samples.end(), [](const Json& a, const Json& b) {
+          return a["seconds"].get<double>() < b["seconds"].get<double>();
+        });
+        Json row = samples[1];
+        const std::string name = "Gmsh, 1,000 grains at " + std::to_string(static_cast<int>(per_grain)) + "/grain, " +
+                                 std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+        std::printf("%-38s %8.2f %9.2f %9zu %8.1f %6.3f %6.4f %8.4f %9.1f\n", name.c_str(), row["seconds"].get<double>(),
+                    row["process_seconds"].get<double>(), row["triangles"].get<std::size_t>(),
+                    row["triangles_per_grain"].get<double>(), row["q_min"].get<double>(), row["q_mean"].get<double>(),
+                    row["q_below_0_5"].get<double>(), row["peak_memory_mib"].get<double>());
+        std::fflush(stdout);
+        Json labelled{{"case", name}, {"mesher", "Gmsh front2d"}, {"grains", 1000}, {"threads", threads}, {"runs", 3}};
+        labelled.update(row);
+        results.push_back(labelled);
+      }
+    fs::remove_all(scratch);
   }
 
   std::printf("\n%-34s %8s %9s %7s %7s %8s %10s %12s\n", "6-fibre cell (fibres_6.ini)", "seconds", "triangles", "q_min",
@@ -198,9 +325,9 @@ int main(int argc, char** argv) {
     labelled.update(row);
     results.push_back(labelled);
   }
-  write_results(source / "bench" / "mesh_results.json", "mesh",
-                "median of 3 runs (1 for the binder cell), each in a fresh process; mesh seconds exclude the "
-                "tessellation",
+  write_results(source / "bench" / "results.json", "mesh",
+                "median of 3 runs (1 for 100,000 grains), each in a fresh process; seconds = tessellate + mesh + "
+                "export (ASCII case), each stage timed apart; Gmsh: its log's 2D meshing time, and the whole process",
                 results);
   return 0;
 }

@@ -1,7 +1,7 @@
 // make bench: fixed-seed tessellation benchmarks, each run in a fresh child process
 // (median of 3 for time, largest peak memory). The time is tessellate() alone: seeds,
 // power diagrams, Lloyd, regularisation, window, phases and cut; no file output.
-// Prints a table and writes bench/tessellate_results.json.
+// Prints a table and writes bench/results.json ("tessellate").
 #include <unistd.h>
 
 #include <chrono>
@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     results.push_back(labelled);
   }
-  write_results(source / "bench" / "tessellate_results.json", "tessellate",
+  write_results(source / "bench" / "results.json", "tessellate",
                 "median of 3 runs of tessellate() alone, in a fresh process each", results);
   return all_ok ? 0 : 1;
 }

@@ -68,17 +68,40 @@ Json median_in_children(int runs, F&& measure) {
   return row;
 }
 
-// Writes `file` with the benchmark's name, this machine, how it was timed, and the cases.
+// This machine: processor, cores, memory, system and compiler.
+inline Json machine() {
+  auto first_line_with = [](const char* file, const std::string& key) {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind(key, 0) == 0) {
+        const auto colon = line.find_first_of(":=");
+        std::string v = colon == std::string::npos ? line : line.substr(colon + 1);
+        v.erase(0, v.find_first_not_of(" \t\""));
+        while (!v.empty() && (v.back() == '"' || v.back() == ' ')) v.pop_back();
+        return v;
+      }
+    return std::string("unknown");
+  };
+  return {{"cpu", first_line_with("/proc/cpuinfo", "model name")},
+          {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
+          {"memory", first_line_with("/proc/meminfo", "MemTotal")},
+          {"system", first_line_with("/etc/os-release", "PRETTY_NAME")},
+          {"compiler", "GCC " __VERSION__}};
+}
+
+// Records one benchmark's cases, how they were timed and this machine in `file` (a JSON
+// document shared by every benchmark: each replaces only its own entry).
 inline void write_results(const std::filesystem::path& file, const std::string& benchmark, const std::string& timing,
                           const Json& cases) {
-  char host[256] = "unknown";
-  gethostname(host, sizeof host);
-  const Json doc{{"benchmark", benchmark},
-                 {"machine", {{"cores", sysconf(_SC_NPROCESSORS_ONLN)}, {"host", host}}},
-                 {"timing", timing},
-                 {"cases", cases}};
+  Json doc = Json::object();
+  if (std::ifstream in(file); in) {
+    doc = Json::parse(in, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("benchmarks")) doc = Json::object();
+  }
+  doc["machine"] = machine();
+  doc["benchmarks"][benchmark] = Json{{"timing", timing}, {"cases", cases}};
   std::ofstream(file) << doc.dump(2) << "\n";
-  std::printf("wrote %s\n", file.string().c_str());
+  std::printf("wrote %s (\"%s\")\n", file.string().c_str(), benchmark.c_str());
 }
 
 }  // namespace grainmesh

@@ -149,6 +149,8 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   const auto size = std::make_shared<const FeatureSize>(tessellation_size(t, o));
   const auto seeds = seed_edges(t, o, *size);
   GrainMesh out;
+  auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  out.sizing_seconds = since(start);
   // Global nodes: tessellation vertices, then edge seeds, then each region's interior.
   std::vector<Vec2>& pts = out.mesh.points;
   pts = t.vertices;
@@ -219,6 +221,7 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     rr.iterations = res.stats.iterations;
     rr.converged = res.stats.converged;
   };
+  const auto regions_start = std::chrono::steady_clock::now();
   tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
   std::mutex progress_mutex;
   int regions_done = 0;
@@ -231,6 +234,8 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     });
   });
 
+  out.regions_seconds = since(regions_start);
+  const auto merge_start = std::chrono::steady_clock::now();
   for (int r = 0; r < nr; ++r) {
     const int base = static_cast<int>(pts.size());
     pts.insert(pts.end(), results[r].interior.begin(), results[r].interior.end());
@@ -247,7 +252,8 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   out.regions = nr;
   pair_periodic_nodes(t, out);
   validate(out.mesh);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.merge_seconds = since(merge_start);
+  out.seconds = since(start);
   return out;
 }
 

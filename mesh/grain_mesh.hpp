@@ -46,6 +46,9 @@ struct GrainMesh {
   int iterations_max = 0;            // the most force iterations any region needed
   int unconverged_regions = 0;       // regions that hit the iteration limit (still valid)
   double seconds = 0.0;
+  double sizing_seconds = 0.0;       // of them: the size field and the edge seeds,
+  double regions_seconds = 0.0;      // ... the regions (in parallel),
+  double merge_seconds = 0.0;        // ... and merging, pairing and validating
 };
 
 // The size every edge and region gets away from small features: options.size, or the

@@ -10,29 +10,38 @@
 namespace grainmesh {
 
 std::vector<MeshEdge> mesh_edges(const TriMesh& mesh) {
+  // Half-edges bucketed by their lower end (a counting sort, linear), each bucket (a few
+  // half-edges) put in order of the higher end by a stable insertion sort, so that equal
+  // edges stay in triangle order.
   struct HalfEdge {
-    std::uint64_t key;  // (min id << 32) | max id
-    int a, b, tri;
+    int high, a, b, tri;
   };
-  std::vector<HalfEdge> half;
-  half.reserve(3 * mesh.triangles.size());
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-    const auto& v = mesh.triangles[t];
+  const std::size_t np = mesh.points.size();
+  std::vector<std::size_t> start(np + 2, 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const int a = v[k], b = v[(k + 1) % 3];
-      const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
-      half.push_back({(lo << 32) | hi, a, b, t});
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= np || static_cast<std::size_t>(b) >= np)
+        throw GeometryError("mesh: triangle " + std::to_string(t) + " has a point id out of range");
+      ++start[static_cast<std::size_t>(std::min(a, b)) + 2];
     }
-  }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.key != y.key ? x.key < y.key : x.tri < y.tri;
-  });
+  for (std::size_t v = 2; v < start.size(); ++v) start[v] += start[v - 1];
+  std::vector<HalfEdge> half(3 * mesh.triangles.size());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      half[start[static_cast<std::size_t>(std::min(a, b)) + 1]++] = {std::max(a, b), a, b, t};
+    }
+  for (std::size_t v = 0; v < np; ++v)
+    for (std::size_t i = start[v] + 1; i < start[v + 1]; ++i)
+      for (std::size_t j = i; j > start[v] && half[j - 1].high > half[j].high; --j) std::swap(half[j - 1], half[j]);
+  auto same = [](const HalfEdge& x, const HalfEdge& y) { return std::min(x.a, x.b) == std::min(y.a, y.b) && x.high == y.high; };
 
   std::vector<MeshEdge> edges;
   edges.reserve(half.size() / 2 + 1);
   for (std::size_t i = 0; i < half.size();) {
     std::size_t j = i + 1;
-    while (j < half.size() && half[j].key == half[i].key) ++j;
+    while (j < half.size() && same(half[j], half[i])) ++j;
     const HalfEdge& h = half[i];
     if (j - i > 2)
       throw GeometryError("mesh: edge " + std::to_string(h.a) + "-" + std::to_string(h.b) + " has " +

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages grainmesh builds and tests with, only those missing.
+# With --bench, also the peers `make bench` compares against (Gmsh).
 # Idempotent: a second run installs nothing and takes well under a second.
 set -euo pipefail
 
@@ -15,6 +16,9 @@ packages=(
   nlohmann-json3-dev                    # reports
   openfoam                              # checkMesh and solidDisplacementFoam in the tests
 )
+if [[ "${1:-}" == "--bench" ]]; then
+  packages+=(gmsh)                      # make bench's peer mesher
+fi
 
 missing=()
 for p in "${packages[@]}"; do
