@@ -47,24 +47,6 @@ Json run_once(const Peer& peer, const fs::path& dir) {
   return row;
 }
 
-// The median run by mesher seconds, with the median process seconds and the largest peak.
-Json median(std::vector<Json> samples) {
-  std::sort(samples.begin(), samples.end(),
-            [](const Json& a, const Json& b) { return a["seconds"].get<double>() < b["seconds"].get<double>(); });
-  Json row = samples[samples.size() / 2];
-  std::vector<double> process;
-  double peak = 0.0;
-  for (const Json& s : samples) {
-    process.push_back(s["process_seconds"].get<double>());
-    peak = std::max(peak, s["peak_memory_mib"].get<double>());
-  }
-  std::sort(process.begin(), process.end());
-  row["process_seconds"] = process[process.size() / 2];
-  row["peak_memory_mib"] = peak;
-  row["runs"] = samples.size();
-  return row;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -135,7 +117,7 @@ int main(int argc, char** argv) {
   Json results = Json::array();
   double ours = 0.0, ours_process = 0.0;
   for (std::size_t k = 0; k < peers.size(); ++k) {
-    Json row = median(samples[k]);
+    Json row = median_of(samples[k]);
     if (k == 0) ours = row["seconds"].get<double>(), ours_process = row["process_seconds"].get<double>();
     row["times_grainmesh_seconds"] = row["seconds"].get<double>() / ours;
     row["times_grainmesh_process_seconds"] = row["process_seconds"].get<double>() / ours_process;

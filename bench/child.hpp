@@ -7,6 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesh/quality.hpp"
+#include "mesh/trimesh.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -50,7 +53,28 @@ Json measure_in_child(F&& measure) {
   return j;
 }
 
-// The median run by "seconds" of `runs` children, with the largest peak memory of all.
+// The median sample by "seconds" (and by "process_seconds" too, where samples have it),
+// with the largest peak memory of all and the number of samples as "runs".
+inline Json median_of(std::vector<Json> samples) {
+  std::sort(samples.begin(), samples.end(),
+            [](const Json& a, const Json& b) { return a["seconds"].get<double>() < b["seconds"].get<double>(); });
+  Json row = samples[samples.size() / 2];
+  std::vector<double> process;
+  double peak = 0.0;
+  for (const Json& s : samples) {
+    if (s.contains("process_seconds")) process.push_back(s["process_seconds"].get<double>());
+    peak = std::max(peak, s["peak_memory_mib"].get<double>());
+  }
+  if (process.size() == samples.size()) {
+    std::sort(process.begin(), process.end());
+    row["process_seconds"] = process[process.size() / 2];
+  }
+  row["peak_memory_mib"] = peak;
+  row["runs"] = samples.size();
+  return row;
+}
+
+// The median of `runs` children (see median_of); the first error, if any.
 template <typename F>
 Json median_in_children(int runs, F&& measure) {
   std::vector<Json> samples;
@@ -58,15 +82,15 @@ Json median_in_children(int runs, F&& measure) {
     samples.push_back(measure_in_child(measure));
     if (samples.back().contains("error")) return samples.back();
   }
-  std::sort(samples.begin(), samples.end(),
-            [](const Json& a, const Json& b) { return a["seconds"].get<double>() < b["seconds"].get<double>(); });
-  Json row = samples[static_cast<std::size_t>(runs / 2)];
-  double peak = 0.0;
-  for (const Json& s : samples) peak = std::max(peak, s["peak_memory_mib"].get<double>());
-  row["peak_memory_mib"] = peak;
-  row["runs"] = runs;
-  return row;
+  return median_of(std::move(samples));
 }
+
+// Points, triangles and the quality measures every table reports.
+inline Json mesh_measures(const TriMesh& m, const MeshQuality& q) {
+  return {{"points", m.points.size()},  {"triangles", m.triangles.size()}, {"q_min", q.q_min},
+          {"q_mean", q.q_mean},         {"q_below_0_5", q.q_below_half},  {"min_angle_deg", q.min_angle_deg}};
+}
+inline Json mesh_measures(const TriMesh& m) { return mesh_measures(m, measure_quality(m)); }
 
 // This machine: processor, cores, memory, system and compiler.
 inline Json machine() {

@@ -19,8 +19,6 @@
 #include <vector>
 
 #include "bench/child.hpp"
-#include "mesh/quality.hpp"
-#include "mesh/trimesh.hpp"
 
 namespace grainmesh {
 
@@ -100,13 +98,6 @@ inline TriMesh read_msh2(const std::filesystem::path& file) {
   if (m.triangles.empty()) throw std::runtime_error(file.string() + " holds no triangles");
   m.region.assign(m.triangles.size(), 0);
   return m;
-}
-
-// Points, triangles and the quality measures every table reports.
-inline Json mesh_measures(const TriMesh& m) {
-  const MeshQuality q = measure_quality(m);
-  return {{"points", m.points.size()},  {"triangles", m.triangles.size()}, {"q_min", q.q_min},
-          {"q_mean", q.q_mean},         {"q_below_0_5", q.q_below_half},  {"min_angle_deg", q.min_angle_deg}};
 }
 
 // Gmsh's own time for its 2D meshing, from its log ("Done meshing 2D (Wall 12.3s, ...").

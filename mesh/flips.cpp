@@ -12,6 +12,16 @@ namespace {
 
 using Check = std::pair<int, int>;  // (triangle, corner): the edge opposite that corner
 
+// Triangle n (none when < 0) had `from` across one edge; now it has `to` there.
+void repoint(Triangulation& t, int n, int from, int to) {
+  if (n < 0) return;
+  for (int& k : t.neighbours[n])
+    if (k == from) {
+      k = to;
+      return;
+    }
+}
+
 // Flips the edges on `stack`, and those that each flip exposes, until all are locally
 // Delaunay. Returns the flips made.
 std::size_t flip_until_delaunay(Triangulation& t, std::span<const Vec2> p, std::vector<Check>& stack) {
@@ -34,16 +44,8 @@ std::size_t flip_until_delaunay(Triangulation& t, std::span<const Vec2> p, std::
     nb[s] = {n_bd, u, n_ab};
     tri[u] = {d, c, a};
     nb[u] = {n_ca, s, n_dc};
-    auto repoint = [&](int n, int from, int to) {
-      if (n < 0) return;
-      for (int& k : nb[n])
-        if (k == from) {
-          k = to;
-          return;
-        }
-    };
-    repoint(n_bd, u, s);
-    repoint(n_ca, s, u);
+    repoint(t, n_bd, u, s);
+    repoint(t, n_ca, s, u);
     ++count;
     stack.insert(stack.end(), {{s, 0}, {s, 2}, {u, 0}, {u, 2}});
   }
@@ -61,10 +63,7 @@ bool trim_hull(Triangulation& t, std::vector<int> turned) {
     progress = false;
     std::erase_if(turned, [&](int s) {
       if (std::find(nb[s].begin(), nb[s].end(), -1) == nb[s].end()) return false;
-      for (int u : nb[s])
-        if (u >= 0)
-          for (int& k : nb[u])
-            if (k == s) k = -1;
+      for (int u : nb[s]) repoint(t, u, s, -1);
       dead[s] = 1;
       return progress = true;
     });
@@ -143,10 +142,8 @@ bool insert_point(Triangulation& t, std::span<const Vec2> p, int v, int hint) {
       nb.push_back({b, s, n0});
       tri.push_back({v2, v0, v});
       nb.push_back({s, a, n1});
-      for (auto [m, to] : {std::pair{n0, a}, std::pair{n1, b}})
-        if (m >= 0)
-          for (int& k : nb[m])
-            if (k == s) k = to;
+      repoint(t, n0, s, a);
+      repoint(t, n1, s, b);
       stack = {{s, 2}, {a, 2}, {b, 2}};
     } else {  // beyond the hull edge opposite corner `beyond` of s, and no other: one triangle on it
       if (beyond_count != 1) return false;
