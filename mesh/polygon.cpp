@@ -209,6 +209,9 @@ bool PolygonDistance::contains(Vec2 p) const {
       const int o = orient2d(a, b, p);
       if (o == 0) return false;  // on the edge
       if (b.y > a.y ? o > 0 : o < 0) odd = !odd;
+    } else if ((a.y == p.y || b.y == p.y) && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x) &&
+               orient2d(a, b, p) == 0) {
+      return false;  // on an edge the crossing test does not see: horizontal, or at a vertex
     }
   }
   return odd;

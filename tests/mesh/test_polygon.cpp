@@ -141,6 +141,26 @@ TEST_CASE("the inside test is exact next to an edge", "[polygon]") {
   CHECK(std::abs(d(on)) < 1e-15);
 }
 
+TEST_CASE("vertices and horizontal edges are on the boundary: not strictly inside", "[polygon]") {
+  // Found by the polygon fuzzer: the crossing test skipped edges level with the point,
+  // so a vertex at a local maximum or a point on a horizontal edge counted as inside.
+  // The 200-gon has its edges in a grid, the square not.
+  std::vector<Vec2> star;
+  for (int k = 0; k < 200; ++k) {
+    const double a = 2 * std::numbers::pi * k / 200, r = k % 2 ? 1.0 : 0.8;
+    star.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  star[50] = {star[50].x, 1.0};  // a vertex at the top
+  for (const PolygonRings& rings : {PolygonRings{{{0, 0}, {4, 0}, {4, 3}, {0, 3}}}, PolygonRings{star}}) {
+    const PolygonDistance d(rings);
+    for (const Vec2 v : rings[0]) CHECK(!d.contains(v));
+  }
+  const PolygonDistance square({{{0, 0}, {4, 0}, {4, 3}, {0, 3}}});
+  CHECK(!square.contains({2, 0}));
+  CHECK(!square.contains({2, 3}));
+  CHECK(square.contains({2, 1.5}));
+}
+
 TEST_CASE("polygon_area subtracts holes", "[polygon]") {
   CHECK(polygon_area({{{0, 0}, {2, 0}, {2, 2}, {0, 2}}}) == Approx(4.0));
   CHECK(polygon_area({{{0, 0}, {0, 2}, {2, 2}, {2, 0}}, {{0.5, 0.5}, {1, 0.5}, {1, 1}}}) == Approx(4.0 - 0.125));
