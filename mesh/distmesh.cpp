@@ -208,6 +208,12 @@ std::vector<Vec2> Engine::graded_points() const {
       continue;
     }
     if (pb_.domain(c) < geps_) out.push_back(c);
+    if (out.size() % 65536 == 0 && !out.empty()) {
+      if (static_cast<double>(out.size()) > kMaxMeshPoints)
+        throw ConfigError("the size field asks for more than " + to_text(kMaxMeshPoints) +
+                          " points (its least value is " + to_text(h0_) + "): raise the smallest size");
+      if (opt_.deadline.passed()) opt_.deadline.check("while seeding points");
+    }
   }
   return out;
 }
@@ -668,6 +674,7 @@ void Engine::optimize_stars(std::size_t first) {
   // find what it found before (the same sweeps, in less time).
   std::vector<char> dirty(p_.size(), 1);
   for (int sweep = 0; sweep < opt_.optimize_sweeps; ++sweep) {
+    opt_.deadline.check("while optimising the mesh");
     int moved = 0;
     for (std::size_t i = std::max(first, nfix_); i < p_.size(); ++i) {
       if (!dirty[i] || start[i] == start[i + 1]) continue;
@@ -774,6 +781,7 @@ std::size_t Engine::remove_crowding_points() {
   auto best = shortfall(kMendBelow);
   // From the highest index down, so the indices still to try stay valid.
   for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
+    opt_.deadline.check("while removing crowding points");
     const auto v = static_cast<std::size_t>(*it);
     const Vec2 kept = p_[v];
     p_.erase(p_.begin() + static_cast<std::ptrdiff_t>(v));
@@ -821,6 +829,7 @@ std::size_t Engine::try_steiner_points() {
   std::size_t kept = 0;
   auto best = shortfall(kMendBelow);
   for (const Vec2 x : candidates) {
+    opt_.deadline.check("while trying Steiner points");
     p_.push_back(x);
     on_interface_.push_back(0);
     points_changed();
@@ -869,6 +878,8 @@ DistMeshResult Engine::run(Rng& rng) {
   bool retriangulate = true;
   for (int it = 1;; ++it) {
     stats_.iterations = it;
+    if (opt_.deadline.passed())
+      opt_.deadline.check("after " + std::to_string(it - 1) + " force iterations (" + std::to_string(p_.size()) + " points)");
     if (retriangulate || max_move_since_triangulation() > opt_.ttol * h0_) {
       triangulate();
       retriangulate = false;
@@ -911,6 +922,7 @@ DistMeshResult Engine::run(Rng& rng) {
   if (pb_.interface) stats_.interface_straddling = repair_interface();
   optimize_stars();
   for (int round = 0; fixed_boundary() && round < 6 && insert_steiner_points() > 0; ++round) {
+    opt_.deadline.check("while inserting Steiner points");
     triangulate();
     optimize_stars();
   }

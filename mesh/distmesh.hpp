@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/deadline.hpp"
 #include "common/geometry.hpp"
 #include "common/random.hpp"
 #include "mesh/delaunay.hpp"
@@ -33,7 +34,15 @@ struct DistMeshOptions {
                                    // interface edges
   int optimize_sweeps = 50;        // local quality optimisation sweeps at the very end
   double optimize_below = 0.99;    // ... of the points with a triangle of q below this
+  // The run's wall-clock guard, asked every force iteration and in every long loop of
+  // seeding and finishing: TimeLimitError once it passes. Default: none.
+  Deadline deadline{};
 };
+
+// The most points a size function may ask the engine to seed (about twice as many
+// triangles): beyond it the size is a mistake (a jump of many orders of magnitude, a
+// unit slip), and the error says so instead of exhausting memory.
+inline constexpr double kMaxMeshPoints = 50e6;
 
 struct DistMeshProblem {
   DistanceFunction domain;                    // d < 0 inside the domain
@@ -88,8 +97,9 @@ struct DistMeshResult {
 
 // Meshes problem.domain. Randomness (the rejection step) comes from rng only.
 // Always returns a valid mesh (see validate()) or throws: ConfigError for bad
-// parameters or a size function that is not finite and positive in the domain,
-// GeometryError for an empty domain or fixed points outside it.
+// parameters, a size function that is not finite and positive in the domain or one that
+// asks for more than kMaxMeshPoints points, GeometryError for an empty domain or fixed
+// points outside it, TimeLimitError when options.deadline passes.
 DistMeshResult distmesh(const DistMeshProblem& problem, const DistMeshOptions& options, Rng& rng);
 
 }  // namespace grainmesh

@@ -66,6 +66,9 @@ std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& size, double c
     cum[k] = cum[k - 1] + 0.5 * (prev + next) * len / m;
     prev = next;
   }
+  if (!(cum[m] < kMaxMeshPoints))
+    throw ConfigError("mesh: a grain boundary " + to_text(len) + " long would get " + to_text(cum[m]) +
+                      " nodes (size down to " + to_text(finest) + "): raise the element size");
   const int n = std::max(1, static_cast<int>(std::lround(cum[m])));
   std::vector<Vec2> out;
   int k = 0;
@@ -227,7 +230,17 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   int regions_done = 0;
   arena.execute([&] {
     tbb::parallel_for(0, nr, [&](int r) {
-      mesh_region(r);
+      // The engine's errors, with the grain they happened in.
+      const std::string where = "mesh: grain " + std::to_string(t.regions[r].grain) + ": ";
+      try {
+        mesh_region(r);
+      } catch (const TimeLimitError& e) {
+        throw TimeLimitError(where + e.what());
+      } catch (const ConfigError& e) {
+        throw ConfigError(where + e.what());
+      } catch (const GeometryError& e) {
+        throw GeometryError(where + e.what());
+      }
       if (!o.progress) return;
       const std::lock_guard<std::mutex> lock(progress_mutex);
       o.progress(++regions_done, nr);

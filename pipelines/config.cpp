@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -78,7 +79,8 @@ bool key_matches(std::string_view pattern, std::string_view key) {
 }  // namespace
 
 void Config::check_keys(const std::vector<std::string>& known) const {
-  for (const auto& [key, value] : entries_)
+  for (const auto& entry : entries_) {
+    const std::string& key = entry.first;
     if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); })) {
       // Point at the section's keys when the section exists, so typos are easy to fix.
       const std::string section = key.substr(0, key.find('.') + 1);
@@ -87,15 +89,15 @@ void Config::check_keys(const std::vector<std::string>& known) const {
         if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
       throw ConfigError(source_ + ": unknown key '" + key + "'" + (hint.empty() ? "" : " (known here: " + hint + ")"));
     }
+  }
 }
 
 Config Config::subset(const std::vector<std::string>& known) const {
   Config c;
   c.source_ = source_;
-  for (const auto& [key, value] : entries_) {
-    if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); }))
-      c.entries_.emplace_back(key, value);
-  }
+  for (const auto& entry : entries_)
+    if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, entry.first); }))
+      c.entries_.push_back(entry);
   return c;
 }
 
@@ -182,6 +184,14 @@ bool Config::flag(const std::string& key, bool fallback) const {
   if (s == "true" || s == "yes" || s == "on" || s == "1") return true;
   if (s == "false" || s == "no" || s == "off" || s == "0") return false;
   fail(key, "'" + s + "' is not true or false");
+}
+
+double read_time_limit(const Config& c) {
+  if (c.optional_text(kTimeLimitKey) == "none") return std::numeric_limits<double>::infinity();
+  const double seconds = c.number(kTimeLimitKey, kDefaultTimeLimitSeconds);
+  if (!(seconds > 0.0) || !std::isfinite(seconds))
+    c.fail(kTimeLimitKey, "must be a positive number of seconds or none, got " + c.text(kTimeLimitKey));
+  return seconds;
 }
 
 }  // namespace grainmesh

@@ -57,4 +57,11 @@ class Config {
   std::vector<std::pair<std::string, std::string>> entries_;
 };
 
+// The run's wall-clock guard: key limits.seconds, seconds > 0 or "none"; 6 hours unless
+// given. Every command that meshes or tessellates reads it and reports it.
+inline constexpr const char* kTimeLimitKey = "limits.seconds";
+inline constexpr double kDefaultTimeLimitSeconds = 6 * 3600.0;
+// Its value (infinity for "none"). Throws ConfigError naming the key.
+double read_time_limit(const Config& config);
+
 }  // namespace grainmesh

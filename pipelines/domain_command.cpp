@@ -28,7 +28,8 @@ const std::vector<std::string>& domain_config_keys() {
       "distmesh.density_control_every", "distmesh.boundary_seeding",
       "distmesh.split_long_edges",
       "distmesh.optimize_sweeps",
-      "distmesh.optimize_below", "output.picture_width"};
+      "distmesh.optimize_below", "output.picture_width",
+      kTimeLimitKey};
   return keys;
 }
 
@@ -101,6 +102,7 @@ DomainJob read_domain_job(const Config& c) {
                 .options = opt,
                 .seed = c.unsigned_integer("distmesh.seed", 1)};
   job.picture_width = bounded_int(c, "output.picture_width", job.picture_width, 100, 20000);
+  job.options.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
   DistMeshProblem& pb = job.problem;
   if (!(pb.h0 > 0.0)) c.fail("size.h0", "must be positive, got " + c.text("size.h0"));
   const double segments = c.number("size.curvature_segments", kDefaultCurvatureSegments);
@@ -201,6 +203,7 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   report["seeding_seconds"] = s.seeding_seconds;
   report["triangulation_seconds"] = s.triangulation_seconds;
   report["finish_seconds"] = s.finish_seconds;
+  add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_json(staged.dir() / "report.json", report);
   staged.commit();

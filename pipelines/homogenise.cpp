@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "pipelines/output_dir.hpp"
+#include "pipelines/process.hpp"
 
 namespace grainmesh {
 
@@ -102,14 +103,13 @@ std::vector<double> read_cell_displacement(const std::filesystem::path& d_file) 
   return out;
 }
 
-Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o) {
+Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+                                 const Deadline& deadline) {
   if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
     throw IoError("--solve: solidDisplacementFoam is not installed (Debian package openfoam; scripts/install-deps.sh)");
   const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
-  const std::string cmd = "cd '" + case_dir.string() +
-                          "' && WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\" solidDisplacementFoam > "
-                          "log.solidDisplacementFoam 2>&1";
-  const int status = std::system(cmd.c_str());
+  setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // OpenFOAM's programs need it
+  const int status = run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam");
   const std::string text = read_text_file(log, "the solver's log");
   if (status != 0 || text.find("\nEnd") == std::string::npos)
     throw GeometryError("--solve: solidDisplacementFoam failed; see " + log.string());

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/deadline.hpp"
 #include "export/foam.hpp"
 
 namespace grainmesh {
@@ -42,6 +43,8 @@ std::vector<double> read_cell_displacement(const std::filesystem::path& d_file);
 // Runs solidDisplacementFoam in `case_dir` (written by write_foam_case for `m` with `o`),
 // checks that it converged, and averages its stress over the cells. Throws IoError when
 // OpenFOAM is missing, GeometryError when the solver fails or does not converge.
-Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o);
+// The solver is killed when `deadline` passes (TimeLimitError).
+Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+                                 const Deadline& deadline = {});
 
 }  // namespace grainmesh

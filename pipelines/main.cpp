@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/deadline.hpp"
 #include "common/errors.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
@@ -46,7 +47,7 @@ constexpr const char* kUsage =
     "\n"
     "grainmesh <command> --help shows the options of a command.\n";
 
-enum Exit { kOk = 0, kInternal = 1, kConfig = 2, kGeometry = 3, kIo = 4 };
+enum Exit { kOk = 0, kInternal = 1, kConfig = 2, kGeometry = 3, kIo = 4, kTimeLimit = 5 };
 
 using Runner = void (*)(const Config&, const std::filesystem::path&);
 
@@ -111,6 +112,8 @@ void naming_errors(const Config& config, F&& run) {
   } catch (const ConfigError& e) {
     throw naming_source(e, config);
   } catch (const GeometryError& e) {
+    throw naming_source(e, config);
+  } catch (const TimeLimitError& e) {
     throw naming_source(e, config);
   }
 }
@@ -253,6 +256,9 @@ int main(int argc, char** argv) {
   } catch (const IoError& e) {
     std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
     return kIo;
+  } catch (const TimeLimitError& e) {
+    std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
+    return kTimeLimit;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "grainmesh: internal error: %s\n", e.what());
     return kInternal;

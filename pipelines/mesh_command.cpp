@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
@@ -20,7 +21,7 @@ const std::vector<std::string>& mesh_config_keys() {
   static const std::vector<std::string> keys{
       "mesh.size",    "mesh.h",    "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size",
       "mesh.gradient", "mesh.grading", "mesh.threads", "mesh.seed", "mesh.max_iterations", "phase.*.size",
-      "output.picture_width"};
+      "output.picture_width", kTimeLimitKey};
   return keys;
 }
 
@@ -64,6 +65,21 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
     *value = c.number(key, 0.0);
     if (!(*value >= 0.0) || !std::isfinite(*value)) c.fail(key, "must be positive (or 0 for none), got " + c.text(key));
   }
+  // Far too fine a size is a slip (a unit, a digit): refused before any work is done.
+  double finest = o.size;
+  std::string finest_key = c.has(size_key) ? size_key : "mesh.triangles_per_grain";
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    if (o.phase_size[p] > 0.0 && o.phase_size[p] < finest) {
+      finest = o.phase_size[p];
+      finest_key = "phase." + t.phases[p].name + ".size";
+    }
+  const double triangles = t.width * t.height / (0.25 * std::sqrt(3.0) * finest * finest);
+  if (triangles > 2.0 * kMaxMeshPoints) {
+    c.fail(finest_key,
+           "asks for about " + to_text(triangles) + " triangles (size " + to_text(finest) + " over a " +
+               to_text(t.width) + " x " + to_text(t.height) + " cell), more than " + to_text(2.0 * kMaxMeshPoints) +
+               ": coarsen it");
+  }
   o.gradient = c.number(gradient_key, o.gradient);
   if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail(gradient_key, "must lie between 0.05 and 10");
   const long long threads = c.integer("mesh.threads", 0);
@@ -75,6 +91,7 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   o.distmesh.max_iterations = static_cast<int>(iterations);
   const long long width = c.integer("output.picture_width", job.picture_width);
   if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  o.distmesh.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
   job.picture_width = static_cast<int>(width);
   return job;
 }
@@ -124,6 +141,7 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   report["threads"] = job.options.threads;
   report["seed"] = job.options.seed;
   report["seconds"] = m.seconds;
+  add_time_limit(report, job.options.distmesh.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_json(staged.dir() / "report.json", report);
   staged.commit();

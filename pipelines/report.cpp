@@ -2,6 +2,8 @@
 
 #include <sys/resource.h>
 
+#include <cmath>
+
 #include "pipelines/output_dir.hpp"
 
 namespace grainmesh {
@@ -24,5 +26,10 @@ void add_quality(Json& report, const MeshQuality& q) {
 }
 
 void write_json(const std::filesystem::path& file, const Json& json) { write_text_file(file, json.dump(2) + "\n"); }
+
+void add_time_limit(Json& report, const Deadline& deadline) {
+  const double limit = deadline.limit_seconds();
+  report["time_limit_seconds"] = std::isfinite(limit) ? Json(limit) : Json("none");
+}
 
 }  // namespace grainmesh

@@ -88,6 +88,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
 
   clock = std::chrono::steady_clock::now();
   MeshJob mesh_job = read_mesh_job(mesh_config, t);
+  mesh_job.options.distmesh.deadline = tess_job.options.deadline;  // one guard for the whole run
   stage("meshing");
   if (show)
     mesh_job.options.progress = [&](int done, int total) {
@@ -117,7 +118,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   if (solve) {
     clock = std::chrono::steady_clock::now();
     stage("solving with solidDisplacementFoam");
-    const Homogenised h = solve_and_homogenise(dir / "case", e, foam);
+    const Homogenised h = solve_and_homogenise(dir / "case", e, foam, tess_job.options.deadline);
     solve_seconds = since(clock);
     std::vector<double> fractions;
     for (const PhaseStats& p : t.stats.phases) fractions.push_back(p.achieved_fraction);
@@ -175,6 +176,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                 {"total", since(start)}}},
               {"case", "case"},
               {"peak_memory_mib", peak_memory_mib()}};
+  add_time_limit(report, tess_job.options.deadline);
   if (solve) report["effective"] = effective;
   write_json(dir / "report.json", report);
   staged.commit();

@@ -16,6 +16,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "pipelines/output_dir.hpp"
+#include "pipelines/process.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_command.hpp"
 
@@ -183,9 +184,12 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && static_cast<int>(running.size()) < o.jobs) {
       const Run* r = todo[next++];
+      const pid_t parent = getpid();
       const pid_t pid = fork();
       if (pid < 0) throw IoError("sweep: cannot start a run (fork failed)");
       if (pid == 0) {
+        // A killed sweep takes its runs with it: none finishes behind a resumed sweep's back.
+        die_with_parent(parent);
         // The run: its output to its log, its errors as its exit code.
         if (!std::freopen((dir / "logs" / (r->name + ".log")).c_str(), "w", stdout)) _exit(4);
         dup2(STDOUT_FILENO, STDERR_FILENO);

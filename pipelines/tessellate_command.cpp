@@ -22,7 +22,7 @@ const std::vector<std::string>& tessellate_config_keys() {
       "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
       "phase.*.fraction",       "phase.*.E",               "phase.*.nu",
-      "output.picture_width"};
+      "output.picture_width",   kTimeLimitKey};
   return keys;
 }
 
@@ -124,6 +124,7 @@ TessellateJob read_tessellate_job(const Config& c) {
   }
   const long long width = c.integer("output.picture_width", job.picture_width);
   if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
   job.picture_width = static_cast<int>(width);
   return job;
 }
@@ -194,6 +195,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   report["edges"] = t.edges.size();
   report["regions"] = t.regions.size();
   report["seconds"] = seconds;
+  add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_json(staged.dir() / "report.json", report);
   staged.commit();

@@ -226,6 +226,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
   const double merge = 1e-9 * spacing;
   TorusGraph g = power_diagram(seeds, weights, W, H, o.periodic, merge);
   for (int it = 0; it < o.lloyd_iterations; ++it) {
+    if (o.deadline.passed()) o.deadline.check("after " + std::to_string(it) + " Lloyd iterations");
     for (int c = 0; c < n; ++c) {
       if (g.rings[c].empty()) continue;
       const auto poly = counted_polygon(g, c);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/deadline.hpp"
 #include "common/geometry.hpp"
 #include "common/random.hpp"
 
@@ -34,6 +35,7 @@ struct TessellationOptions {
   Arrangement arrangement = Arrangement::random;
   std::vector<Phase> phases;     // at least one
   int matrix_phase = -1;         // binder mode: index into phases
+  Deadline deadline{};           // the run's wall-clock guard, asked every Lloyd step
 };
 
 // A vertex of the cut tessellation: a triple junction, a point where a grain boundary
@@ -107,7 +109,8 @@ struct Tessellation {
 
 // Draws N seeds from `rng`, builds the (periodic) power diagram, relaxes, regularises,
 // assigns phases, chooses the window and cuts it. Throws ConfigError for options that
-// cannot be met (fractions, unreachable matrix fraction), GeometryError otherwise.
+// cannot be met (fractions, unreachable matrix fraction), TimeLimitError when the
+// deadline passes, GeometryError otherwise.
 Tessellation tessellate(const TessellationOptions& options, Rng& rng);
 
 // Invariants a bug could break: areas, ring orientation and simplicity, edge sides,
