@@ -5,7 +5,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 RUN_OUT ?= out
 
-.PHONY: all deps configure build run test bench clean
+.PHONY: all deps configure build san-configure san-build run test fuzz bench clean
 
 all: build
 
@@ -19,6 +19,19 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# The sanitizer build beside it: clang, AddressSanitizer + UndefinedBehaviorSanitizer (any
+# report fails the test), and the libFuzzer targets of tests/fuzz.
+SAN_DIR ?= build-san
+FUZZ_SECONDS ?= 600
+
+san-configure: deps
+	@CXX=clang++ CC=clang cmake -S . -B $(SAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DGRAINMESH_SANITIZE=ON > $(SAN_DIR).configure.log 2>&1 \
+	  || { cat $(SAN_DIR).configure.log; exit 1; }
+
+san-build: san-configure
+	@cmake --build $(SAN_DIR) -j $(JOBS)
+
 # The default pipeline: the thesis' two-phase cell (data/default.ini, embedded in the
 # binary) tessellated, meshed and exported, then the case checked and solved by OpenFOAM.
 run: build
@@ -26,8 +39,18 @@ run: build
 	$(RUN_OUT)/run/case/Allrun
 	@echo "make run: everything in $(RUN_OUT)/run: tessellation.{json,png}, mesh.{vtu,png}, case/ (checked and solved: case/log.*; open case/case.foam in ParaView), config.ini, report.json"
 
-test: build
+# Every test twice: in the release build, then in the sanitizer build, which also runs each
+# fuzz target for a short while (GRAINMESH_FUZZ_SECONDS, 20 s).
+test: build san-build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
+	cd $(SAN_DIR) && ctest -j $(JOBS) --output-on-failure
+
+# The long fuzz run: each target for FUZZ_SECONDS (600 s), its corpus kept in
+# $(SAN_DIR)/fuzz-corpus; a failing input lands in $(SAN_DIR)/fuzz-artifacts.
+fuzz: san-build
+	@for t in config tessellation_json polygon_distance; do \
+	  ./scripts/fuzz.sh $(SAN_DIR) $$t $(FUZZ_SECONDS) || exit 1; \
+	done
 
 # Benchmarks against Gmsh (installed here if missing) and CGAL; results in bench/results.json.
 bench: build
@@ -35,4 +58,4 @@ bench: build
 	@cmake --build $(BUILD_DIR) --target bench
 
 clean:
-	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log out
+	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log $(SAN_DIR) $(SAN_DIR).configure.log out

@@ -11,6 +11,7 @@
 #include "common/format.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/size_grading.hpp"
 
 namespace grainmesh {
 namespace {
@@ -65,11 +66,13 @@ class PointGrid {
 
 // The size field the engine works with: absolute edge lengths. The user's relative size
 // h is scaled so that its least value over the domain maps to h0 (the thesis' meaning
-// of h0), then limited by the curvature of curved boundaries.
+// of h0), graded where it grows faster than the problem allows, then limited by the
+// curvature of curved boundaries.
 struct AbsoluteSize final : SizeFunction::Node {
   explicit AbsoluteSize(SizeFunction r) : relative(std::move(r)) {}
   SizeFunction relative;
   double scale = 1.0;  // h0 / min h
+  std::optional<SizeGrading> grading;
   std::vector<DistanceFunction> curved;
   double angle = 0.0, gradient = 0.0;
 
@@ -77,6 +80,7 @@ struct AbsoluteSize final : SizeFunction::Node {
     relative.eval(p, out);
     for (std::size_t i = 0; i < p.size(); ++i) {
       out[i] *= scale;
+      if (grading) out[i] = grading->at(p[i], out[i]);
       for (const auto& c : curved) out[i] = std::min(out[i], c.curvature_size(p[i], angle, gradient));
     }
   }
@@ -248,6 +252,19 @@ void Engine::seed_points(Rng& rng) {
   // The absolute size field and the lattice spacing it needs.
   auto size = std::make_shared<AbsoluteSize>(pb_.size);
   size->scale = pb_.absolute_size ? 1.0 : h0_ / *std::min_element(h.begin(), h.end());
+  if (pb_.size_gradient > 0.0 && !pb_.absolute_size) {
+    // Sizes asked inside the domain (and a lattice step beyond), scaled like the field.
+    auto sample = [&](std::span<const Vec2> nodes, std::span<double> out) {
+      pb_.size.eval(nodes, out);
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const bool asked = pb_.domain(nodes[i]) < h0_ && std::isfinite(out[i]) && out[i] > 0.0;
+        out[i] = asked ? out[i] * size->scale : std::numeric_limits<double>::infinity();
+      }
+    };
+    SizeGrading grading(pb_.bbox, h0_, pb_.size_gradient, sample);
+    stats_.size_graded = grading.limits();
+    if (grading.limits()) size->grading = std::move(grading);
+  }
   double spacing = h0_;
   if (pb_.curvature_angle > 0.0) {
     size->angle = pb_.curvature_angle;

@@ -67,6 +67,9 @@ struct DistMeshProblem {
   // unit distance away from them. 0 = no limit.
   double curvature_angle = 0.0;
   double curvature_gradient = 0.1;
+  // > 0 (relative sizes only): the size grows at most this much per unit distance, so a
+  // size function that jumps is graded first (mesh/size_grading.hpp). 0 = as given.
+  double size_gradient = 0.0;
 };
 
 struct DistMeshStats {
@@ -81,6 +84,7 @@ struct DistMeshStats {
   bool converged = false;           // false: the iteration limit stopped it
   std::string stop_reason;
   double lattice_spacing = 0.0;     // h0, or finer where curved boundaries ask for it
+  bool size_graded = false;         // the size function was steeper than size_gradient
   std::size_t initial_points = 0;   // after rejection, fixed points included
   std::size_t density_removed = 0;  // points removed by density control
   std::size_t density_added = 0;    // points added on long boundary and interface edges

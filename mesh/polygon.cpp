@@ -174,12 +174,15 @@ double PolygonDistance::unsigned_distance(Vec2 p) const {
   const int px = static_cast<int>(std::floor((p.x - bounds_.lo.x) / cell_));
   const int py = static_cast<int>(std::floor((p.y - bounds_.lo.y) / cell_));
   const int qx = std::clamp(px, 0, nx_ - 1), qy = std::clamp(py, 0, ny_ - 1);
-  // Distance from p to the clamped cell, so rings count from there.
-  const double outside = std::hypot(std::max({bounds_.lo.x - p.x, 0.0, p.x - bounds_.hi.x}),
-                                    std::max({bounds_.lo.y - p.y, 0.0, p.y - bounds_.hi.y}));
+  // How far p lies outside the grid along each axis: rings count from the clamped cell.
+  const double out_x = std::max({bounds_.lo.x - p.x, 0.0, p.x - bounds_.hi.x});
+  const double out_y = std::max({bounds_.lo.y - p.y, 0.0, p.y - bounds_.hi.y});
   const int rings = std::max(nx_, ny_);
   for (int r = 0; r <= rings; ++r) {
-    const double reach = outside + (r - 1) * cell_;  // any edge in ring r is at least this far
+    // A cell of ring r is r columns or r rows from the clamped cell: along that axis at
+    // least (r - 1) cells plus p's distance outside, along the other p's distance outside.
+    const double step = std::max(0, r - 1) * cell_;
+    const double reach = std::min(std::hypot(out_x + step, out_y), std::hypot(out_x, out_y + step));
     if (r > 0 && reach > 0.0 && reach * reach > best) break;
     for (int y = qy - r; y <= qy + r; ++y) {
       if (y < 0 || y >= ny_) continue;

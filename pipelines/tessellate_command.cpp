@@ -9,6 +9,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
+#include "mesh/shape_parser.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"
@@ -18,7 +19,7 @@ namespace grainmesh {
 const std::vector<std::string>& tessellate_config_keys() {
   static const std::vector<std::string> keys{
       "domain.width",           "domain.height",           "domain.periodic",
-      "tessellation.grains",    "tessellation.grain_size", "tessellation.seed",
+      "tessellation.grains",    "tessellation.grain_size", "tessellation.seeds", "tessellation.seed",
       "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
       "phase.*.fraction",       "phase.*.E",               "phase.*.nu",
@@ -79,7 +80,20 @@ TessellateJob read_tessellate_job(const Config& c) {
   o.periodic = c.flag("domain.periodic", true);
   if (c.has("tessellation.grains") && c.has("tessellation.grain_size"))
     c.fail("tessellation.grain_size", "give either tessellation.grains or tessellation.grain_size, not both");
-  if (c.has("tessellation.grain_size")) {
+  if (c.has("tessellation.seeds")) {
+    for (const char* other : {"tessellation.grains", "tessellation.grain_size"})
+      if (c.has(other)) c.fail(other, "give tessellation.seeds or " + std::string(other) + ", not both");
+    for (const auto& text : c.all("tessellation.seeds"))
+      for (const Vec2 p : parse_point_list(text, c.source() + ": tessellation.seeds")) {
+        if (!(p.x >= 0.0 && p.x <= o.width && p.y >= 0.0 && p.y <= o.height))
+          c.fail("tessellation.seeds", "seed (" + to_text(p.x) + ", " + to_text(p.y) + ") lies outside the cell [0, " +
+                                           to_text(o.width) + "] x [0, " + to_text(o.height) + "]");
+        o.seeds.push_back(p);
+      }
+    if (o.seeds.empty()) c.fail("tessellation.seeds", "no seed given (x y, x y, ...)");
+    if (o.seeds.size() > 10'000'000) c.fail("tessellation.seeds", "more than 10 million seeds");
+    o.grains = static_cast<int>(o.seeds.size());
+  } else if (c.has("tessellation.grain_size")) {
     const double d = positive(c, "tessellation.grain_size");  // mean equivalent-circle diameter
     const double n = std::round(o.width * o.height / (0.25 * std::numbers::pi * d * d));
     if (n < 1.0) c.fail("tessellation.grain_size", "is larger than the cell: no grain fits");

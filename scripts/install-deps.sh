@@ -15,6 +15,7 @@ packages=(
   libcairo2-dev                         # pictures
   nlohmann-json3-dev                    # reports
   openfoam                              # checkMesh and solidDisplacementFoam in the tests
+  clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(gmsh)                      # make bench's peer mesher

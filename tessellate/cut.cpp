@@ -2,6 +2,7 @@
 // endpoints of its edge, in the frame of that edge, so a point on a shared edge and its
 // periodic partner on the opposite side come out with the same bits.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
@@ -43,12 +44,16 @@ struct ClipPoint {
   int tag = -1;
 };
 
+constexpr double kCornerSnap = 1e-9;  // x the cell side
+
 struct Clipper {
   double W, H;
   const CutPolygon* poly;
   int a, b;  // lattice translate of the polygon
 
-  // The crossing of the segment from `from` with the line coord(axis) = k x period.
+  // The crossing of the segment from `from` with the line coord(axis) = k x period. A
+  // crossing within kCornerSnap of a cell corner is the corner: a boundary through (or
+  // next to) a corner must not leave a side edge a rounding error long.
   Vec2 crossing(const ClipPoint& from, int axis, int k) const {
     if (from.tag < 0) return axis == 0 ? Vec2{k * W, from.p.y} : Vec2{from.p.x, k * H};
     const CutEdge& e = poly->edges[from.tag];
@@ -56,11 +61,15 @@ struct Clipper {
     if (axis == 0) {
       const double x = static_cast<double>(k - fi) * W;
       const double t = (x - e.p.x) / (e.q.x - e.p.x);
-      return {k * W, e.p.y + t * (e.q.y - e.p.y) + fj * H};
+      return {k * W, snap(e.p.y + t * (e.q.y - e.p.y) + fj * H, H)};
     }
     const double y = static_cast<double>(k - fj) * H;
     const double t = (y - e.p.y) / (e.q.y - e.p.y);
-    return {e.p.x + t * (e.q.x - e.p.x) + fi * W, k * H};
+    return {snap(e.p.x + t * (e.q.x - e.p.x) + fi * W, W), k * H};
+  }
+  static double snap(double u, double period) {
+    const double corner = std::round(u / period) * period;
+    return std::abs(u - corner) <= kCornerSnap * period ? corner : u;
   }
 
   // Keeps the part with coord >= k x period (upper = false) or <= (upper = true).

@@ -96,11 +96,18 @@ Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, 
   Regular rt;
   rt.insert(points.begin(), points.end());
 
+  Built out;
+  if (rt.dimension() < 2) {
+    // Collinear seeds whose images in the margin are collinear too: widen the margin.
+    if (!periodic) throw GeometryError("power diagram: the seeds and their far points are collinear (internal error)");
+    out.margin_ok = false;
+    return out;
+  }
+
   std::vector<Regular::Vertex_handle> central(n);
   for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
     if (v->info().i == 0 && v->info().j == 0 && v->info().v < n) central[v->info().v] = v;
 
-  Built out;
   TorusGraph& g = out.graph;
   g.width = W;
   g.height = H;
@@ -116,7 +123,12 @@ Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, 
     auto fc = rt.incident_faces(central[s]);
     const auto done = fc;
     do {
-      if (rt.is_infinite(fc)) throw GeometryError("power diagram: a seed's cell is unbounded (internal error)");
+      if (rt.is_infinite(fc)) {
+        // Unbounded: no image closes the cell yet (seeds along a line). Widen the margin.
+        if (!periodic) throw GeometryError("power diagram: a seed's cell is unbounded (internal error)");
+        out.margin_ok = false;
+        return out;
+      }
       const std::array<Corner, 3> c{fc->vertex(0)->info(), fc->vertex(1)->info(), fc->vertex(2)->info()};
       int r = 0;
       const FaceKey key = face_key(c, &r);

@@ -26,6 +26,9 @@ constexpr double kPushDistance = 1.25;
 // Cells up to this many grains try this many windows (x) as many (y) and keep the best.
 constexpr std::size_t kTrialCells = 5000;
 constexpr int kWindowTrials = 4;
+// Binder layers (twice the shrink offset) thinner than this share of the grain spacing
+// sqrt(W H / N) are refused: the pockets where they meet mesh into slivers.
+constexpr double kMinBinderLayer = 2e-3;
 
 // The best `count` cell origins on the torus: x first, then y for each x, keeping clear
 // of where the x side crosses boundaries and of the x side itself.
@@ -107,6 +110,11 @@ void mean_std(const std::vector<double>& v, double* mean, double* sd) {
 void check_options(const TessellationOptions& o) {
   if (!(o.width > 0.0) || !(o.height > 0.0)) throw ConfigError("cell width and height must be positive");
   if (o.grains < 1) throw ConfigError("the number of grains must be at least 1");
+  if (!o.seeds.empty() && static_cast<int>(o.seeds.size()) != o.grains)
+    throw ConfigError("the number of grains must equal the number of given seeds");
+  for (const Vec2 s : o.seeds)
+    if (!(s.x >= 0.0 && s.x <= o.width && s.y >= 0.0 && s.y <= o.height))
+      throw ConfigError("a given seed lies outside the cell");
   if (o.phases.empty()) throw ConfigError("at least one phase is needed");
   int rests = 0;
   double sum = 0.0;
@@ -203,10 +211,15 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
   check_options(o);
   const double W = o.width, H = o.height;
   const int n = o.grains;
-  std::vector<Vec2> seeds(n);
-  for (Vec2& s : seeds) {
-    const double x = uniform01(rng), y = uniform01(rng);
-    s = {x * W, y * H};
+  std::vector<Vec2> seeds = o.seeds;
+  if (seeds.empty()) {
+    seeds.resize(n);
+    for (Vec2& s : seeds) {
+      const double x = uniform01(rng), y = uniform01(rng);
+      s = {x * W, y * H};
+    }
+  } else if (o.periodic) {
+    for (Vec2& s : seeds) s = reduce_periodic(s, W, H);  // x = W is x = 0
   }
   std::vector<double> weights(n, 0.0);
   if (o.size_cv > 0.0) {
@@ -301,7 +314,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
       }
       return a;
     };
-    const std::string what = "binder matrix fraction " + std::to_string(f_m);
+    const std::string what = "binder matrix fraction " + to_text(f_m);
     if (!(f_m > 0.0) || !(f_m < 1.0)) throw ConfigError(what + " cannot be reached: it must lie strictly between 0 and 1");
     const double target = (1.0 - f_m) * W * H;  // grain area left after shrinking
     double lo = 0.0, hi = spacing;
@@ -315,6 +328,16 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
       (grain_area(mid) > target ? lo : hi) = mid;
     }
     st.binder_offset = 0.5 * (lo + hi);
+    // Layers thinner than kMinBinderLayer of the grain spacing cannot be meshed well (the
+    // pockets where they meet give slivers): say which fraction would do.
+    const double layer = 2.0 * st.binder_offset;
+    if (layer < kMinBinderLayer * spacing) {
+      const double needed = f_m * kMinBinderLayer * spacing / layer;  // layers grow about linearly
+      throw ConfigError(what + " makes layers " + to_text(layer, 3) + " thick, " + to_text(layer / spacing, 3) +
+                        " of the grain spacing (at least " + to_text(kMinBinderLayer) +
+                        " meshes well): raise it to at least " + to_text(std::ceil(needed * 1e4) / 1e4) +
+                        " or use tessellation.phase_mode = grain");
+    }
     std::vector<std::vector<Vec2>> shrunk;
     for (std::size_t k = 0; k < cells.size(); ++k) {
       auto s = shrink_polygon(cell_poly[k], st.binder_offset);
@@ -425,11 +448,18 @@ void validate(const Tessellation& t) {
   }
   if (std::abs(total - W * H) > 1e-9 * W * H)
     throw GeometryError("tessellation: region areas sum to " + std::to_string(total) + ", not W x H");
-  // Each grain's recorded area is the area of its regions (what the mesh is checked against).
+  // Grains are numbered by position; each grain's recorded area is the area of its regions
+  // (what the mesh is checked against), and its regions carry its phase.
+  for (std::size_t g = 0; g < t.grains.size(); ++g)
+    if (t.grains[g].id != static_cast<int>(g))
+      throw GeometryError("tessellation: grain " + std::to_string(g) + " has id " + std::to_string(t.grains[g].id));
   std::vector<double> grain_area(t.grains.size(), 0.0);
   for (const Region& r : t.regions) {
     if (r.grain < 0 || static_cast<std::size_t>(r.grain) >= t.grains.size())
       throw GeometryError("tessellation: a region names grain " + std::to_string(r.grain) + ", which does not exist");
+    if (r.phase != t.grains[r.grain].phase)
+      throw GeometryError("tessellation: a region of grain " + std::to_string(r.grain) + " has phase " +
+                          std::to_string(r.phase) + ", its grain " + std::to_string(t.grains[r.grain].phase));
     grain_area[r.grain] += region_area(t, r);
   }
   for (std::size_t g = 0; g < t.grains.size(); ++g)

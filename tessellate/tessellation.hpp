@@ -28,6 +28,7 @@ struct TessellationOptions {
   double height = 1.0;           // H
   bool periodic = true;
   int grains = 100;              // N seeds
+  std::vector<Vec2> seeds;       // given generator points in the cell (N of them); empty = drawn
   int lloyd_iterations = 0;      // centroidal relaxation steps
   double size_cv = 0.0;          // coefficient of variation of the Laguerre radii; 0 = Voronoi
   double min_edge = 0.1;         // edges shorter than this x mean grain diameter are merged; 0 = off
@@ -107,7 +108,7 @@ struct Tessellation {
   TessellationStats stats;
 };
 
-// Draws N seeds from `rng`, builds the (periodic) power diagram, relaxes, regularises,
+// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) power diagram, relaxes, regularises,
 // assigns phases, chooses the window and cuts it. Throws ConfigError for options that
 // cannot be met (fractions, unreachable matrix fraction), TimeLimitError when the
 // deadline passes, GeometryError otherwise.

@@ -52,11 +52,11 @@ std::vector<Vec2> random_star(Rng& rng, int n, Vec2 c, double rmin, double rmax,
 
 // Random points in the box around the polygon, plus points on edges, on vertices, and
 // in the vertex zones just outside convex corners.
-std::vector<Vec2> probes(const PolygonRings& rings, Rng& rng, int n) {
+std::vector<Vec2> probes(const PolygonRings& rings, Rng& rng, int n, double reach = 0.3) {
   Box b;
   for (const auto& ring : rings)
     for (Vec2 v : ring) b.extend(v);
-  const double pad = 0.3 * std::max(b.width(), b.height());
+  const double pad = reach * std::max(b.width(), b.height());
   std::vector<Vec2> pts;
   for (int i = 0; i < n; ++i)
     pts.push_back({b.lo.x - pad + (b.width() + 2 * pad) * uniform01(rng),
@@ -72,9 +72,9 @@ std::vector<Vec2> probes(const PolygonRings& rings, Rng& rng, int n) {
   return pts;
 }
 
-void check_against_brute_force(const PolygonRings& rings, Rng& rng) {
+void check_against_brute_force(const PolygonRings& rings, Rng& rng, double reach = 0.3) {
   const PolygonDistance d(rings);
-  for (const Vec2 p : probes(rings, rng, 1500)) {
+  for (const Vec2 p : probes(rings, rng, 1500, reach)) {
     const double ours = d(p), ref = brute_force(rings, p);
     INFO("p = (" << p.x << ", " << p.y << ")");
     REQUIRE(std::abs(std::abs(ours) - std::abs(ref)) <= 1e-12);
@@ -114,6 +114,28 @@ TEST_CASE("polygon distance agrees with brute force on polygons with holes", "[p
     INFO("trial " << trial);
     check_against_brute_force(rings, rng);
   }
+}
+
+TEST_CASE("large polygons (edges binned in a grid) agree with brute force near and far", "[polygon]") {
+  // Over 64 edges the search walks rings of grid cells; points far outside the box, off a
+  // side or a corner, must still stop only once no nearer edge can remain (the fuzzer
+  // found it stopping early below the box).
+  Rng rng(4);
+  for (int trial = 0; trial < 4; ++trial) {
+    const bool cw = trial % 2;
+    PolygonRings rings{random_star(rng, 100 + 60 * trial, {0, 0}, 2.0, 3.0, cw)};
+    if (trial >= 2) rings.push_back(random_star(rng, 80, {0.2, -0.1}, 0.8, 1.5, !cw));
+    for (double reach : {0.3, 3.0}) {
+      INFO("trial " << trial << ", probes up to " << reach << " extents outside");
+      check_against_brute_force(rings, rng, reach);
+    }
+  }
+  // A wide, flat polygon: far more grid columns than rows.
+  std::vector<Vec2> flat;
+  for (int k = 0; k <= 100; ++k) flat.push_back({0.1 * k, 0.2 + 0.05 * std::sin(0.7 * k)});
+  flat.push_back({10.0, -0.2});
+  flat.push_back({0.0, -0.2});
+  check_against_brute_force({flat}, rng, 3.0);
 }
 
 TEST_CASE("points exactly on the boundary have distance zero", "[polygon]") {

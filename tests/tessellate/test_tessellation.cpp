@@ -345,3 +345,51 @@ TEST_CASE("tessellation.json reads back bit for bit", "[tessellate]") {
   CHECK(tessellation_to_json(back).find("\"regions\"") != std::string::npos);
   CHECK_THROWS_WITH(tessellation_from_json("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
 }
+
+TEST_CASE("validate refuses grains out of order and regions of another phase", "[tessellate]") {
+  const Tessellation t = make(options(30, 1.0, 1.0), 5);
+  REQUIRE_NOTHROW(validate(t));
+  Tessellation renumbered = t;
+  renumbered.grains[1].id = 0;  // two grains 0: a mesh would mix them up (found by fuzzing)
+  CHECK_THROWS_WITH(validate(renumbered), Catch::Contains("grain 1 has id 0"));
+  Tessellation recoloured = t;
+  recoloured.regions[0].phase = 1 - recoloured.regions[0].phase;
+  CHECK_THROWS_WITH(validate(recoloured), Catch::Contains("has phase"));
+}
+
+TEST_CASE("given seeds: collinear, coincident, on a lattice or alone, the cell keeps every invariant",
+          "[tessellate]") {
+  struct Case {
+    std::string name;
+    std::vector<Vec2> seeds;
+    int grains;  // expected; coincident seeds hide one another
+  };
+  std::vector<Case> cases;
+  std::vector<Vec2> row, column, diagonal, lattice;
+  for (int k = 0; k < 100; ++k) row.push_back({(k + 0.5) / 100, 0.5});
+  for (int k = 0; k < 40; ++k) column.push_back({0.5, (k + 0.5) / 40});
+  for (int k = 0; k < 40; ++k) diagonal.push_back({(k + 0.5) / 40, (k + 0.5) / 40});
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) lattice.push_back({i / 6.0, j / 6.0});  // every junction 4-fold
+  cases.push_back({"100 seeds on a row (all images collinear within the first margin)", row, 100});
+  cases.push_back({"40 seeds on a column", column, 40});
+  cases.push_back({"40 seeds on the diagonal", diagonal, 40});
+  cases.push_back({"a square lattice, seeds on the cell's sides", lattice, 36});
+  cases.push_back({"seeds 1e-10 apart", {{0.3, 0.3}, {0.3, 0.3 + 1e-10}, {0.7, 0.6}, {0.2, 0.8}}, 4});
+  cases.push_back({"one seed", {{0.5, 0.5}}, 1});
+  for (bool periodic : {true, false})
+    for (const Case& c : cases) {
+      INFO(c.name << (periodic ? ", periodic" : ", plane"));
+      auto o = options(static_cast<int>(c.seeds.size()), 1.0, 1.0);
+      o.seeds = c.seeds;
+      o.periodic = periodic;
+      o.min_edge = 0.0;  // keep the degenerate geometry as it is
+      Tessellation t;
+      REQUIRE_NOTHROW(t = make(o, 1));
+      REQUIRE_NOTHROW(validate(t));
+      CHECK(t.stats.grains == c.grains);
+    }
+  auto o = options(2, 1.0, 1.0);
+  o.seeds = {{0.5, 0.5}, {1.5, 0.5}};
+  CHECK_THROWS_WITH(make(o, 1), Catch::Contains("outside the cell"));
+}
