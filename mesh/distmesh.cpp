@@ -191,6 +191,8 @@ std::vector<Vec2> Engine::lattice(double spacing) const {
 constexpr double kMaxLatticePoints = 20000.0;
 // Initial points keep this many sizes clear of a seeded boundary.
 constexpr double kClear = 0.4;
+// Optimisation keeps free points at least this x the local size inside a seeded boundary.
+constexpr double kStarClearance = 0.05;
 
 // With an absolute size field: the centres of a quadtree's leaves over the bounding box,
 // each leaf split until it is about the size at its centre (or h0), kept where
@@ -724,6 +726,9 @@ void Engine::optimize_stars(std::size_t first) {
         // A free point stays inside (with a fixed seeded boundary, a star that is not
         // inverted says so), and on its side of the interface.
         if (!fixed_boundary() && !on_boundary_[i] && pb_.domain(x) >= -geps_) continue;
+        // With a seeded boundary, a point its star lets onto (or next to) a boundary
+        // segment would be split off into a sliver by the next triangulation.
+        if (fixed_boundary() && !(pb_.domain(x) < -kStarClearance * (*size_)(x))) continue;
         if (pb_.interface && !on_interface[i] && ((*pb_.interface)(x) < 0.0) != ((*pb_.interface)(p_[i]) < 0.0))
           continue;
         p_[i] = x;
@@ -743,6 +748,9 @@ void Engine::optimize_stars(std::size_t first) {
 constexpr double kMendBelow = 0.7;
 constexpr double kTryBelow = 0.6;
 constexpr std::size_t kMaxTrials = 200;
+// A Steiner point closer than this x the local size to the corners of its triangle only
+// splits a sliver into slivers: none is added there.
+constexpr double kSteinerClearance = 0.1;
 
 // The forces only push: where they left a gap (at a wide corner between seeds, across a
 // thin place) a triangle stays poor that no move of its points can mend, often with all
@@ -762,6 +770,7 @@ std::size_t Engine::insert_steiner_points() {
     const Vec2 centre = a + Vec2{ac.y * norm2(ab) - ab.y * norm2(ac), ab.x * norm2(ac) - ac.x * norm2(ab)} / den;
     const double r = norm(centre - a);
     if (!(pb_.domain(centre) < -0.5 * r)) continue;
+    if (r < kSteinerClearance * (*size_)(centre)) continue;  // a sliver far below the size: a point there makes more
     added.push_back(centre);
     near.push_back(t[0]);
   }
@@ -785,15 +794,25 @@ std::pair<double, double> Engine::shortfall(double target) const {
 // A free corner of a poor triangle that crowds a small place (a grain piece a few sizes
 // wide) is removed when the mesh without it is better. Returns how many were removed.
 std::size_t Engine::remove_crowding_points() {
-  std::vector<int> candidates;
+  // The free corners of poor triangles, the worst first when there are more than can be
+  // tried; then by index.
+  std::unordered_map<int, double> worst;
   for (const auto& t : tris_) {
-    if (radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]) >= kMendBelow) continue;
+    const double q = radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]);
+    if (q >= kMendBelow) continue;
     for (int v : t)
-      if (static_cast<std::size_t>(v) >= nfix_) candidates.push_back(v);
+      if (static_cast<std::size_t>(v) >= nfix_) {
+        auto [it, fresh] = worst.try_emplace(v, q);
+        if (!fresh) it->second = std::min(it->second, q);
+      }
   }
+  std::vector<std::pair<double, int>> by_quality;
+  for (const auto& [v, q] : worst) by_quality.push_back({q, v});
+  std::sort(by_quality.begin(), by_quality.end());
+  if (by_quality.size() > kMaxTrials) by_quality.resize(kMaxTrials);
+  std::vector<int> candidates;
+  for (const auto& [q, v] : by_quality) candidates.push_back(v);
   std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  if (candidates.size() > kMaxTrials) candidates.resize(kMaxTrials);
   std::size_t removed = 0;
   auto best = shortfall(kMendBelow);
   // From the highest index down, so the indices still to try stay valid.
@@ -830,17 +849,26 @@ std::size_t Engine::try_steiner_points() {
     auto key = [](int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); };
     for (const auto& t : tris_)
       for (int k = 0; k < 3; ++k) opposite[key(t[k], t[(k + 1) % 3])] = t[(k + 2) % 3];
-    for (const auto& t : tris_) {
+    std::vector<std::pair<double, std::size_t>> poor;  // the worst first
+    for (std::size_t k = 0; k < tris_.size(); ++k) {
+      const auto& t = tris_[k];
+      const double q = radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]);
+      if (q < kTryBelow) poor.push_back({q, k});
+    }
+    std::sort(poor.begin(), poor.end());
+    for (const auto& [q, k] : poor) {
       if (candidates.size() == kMaxTrials) break;
-      if (radius_ratio(p_[t[0]], p_[t[1]], p_[t[2]]) >= kTryBelow) continue;
+      const auto& t = tris_[k];
       Vec2 sum = p_[t[0]] + p_[t[1]] + p_[t[2]];
       int n = 3;
-      for (int k = 0; k < 3; ++k) {
-        const auto it = opposite.find(key(t[(k + 1) % 3], t[k]));
+      for (int e = 0; e < 3; ++e) {
+        const auto it = opposite.find(key(t[(e + 1) % 3], t[e]));
         if (it != opposite.end()) sum += p_[it->second], ++n;
       }
       const Vec2 x = sum / n;
-      if (pb_.domain(x) < -geps_) candidates.push_back(x);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int v : t) nearest = std::min(nearest, norm(p_[v] - x));
+      if (pb_.domain(x) < -geps_ && nearest >= kSteinerClearance * (*size_)(x)) candidates.push_back(x);
     }
   }
   std::size_t kept = 0;

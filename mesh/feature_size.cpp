@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -98,6 +99,8 @@ namespace {
 
 // cos 60 degrees: edges meeting at less than this angle count as a feature.
 constexpr double kAcute = 0.5;
+// Samples added along one edge where a thin feature asks for more than every `spacing`.
+constexpr int kMaxRefinedSamples = 2048;
 
 struct CappedNode final : SizeFunction::Node {
   CappedNode(std::shared_ptr<const FeatureSize> s, double c) : size(std::move(s)), cap(c) {}
@@ -219,6 +222,7 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
   auto add = [&](Vec2 p, double lfs) {
     if (fraction * lfs < max_size) out.push_back({p, fraction * lfs});
   };
+  std::vector<double> vertex_size(t.vertices.size());  // what each vertex's source wants
   for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) {
     const auto& mine = incident[root(v)];
     double lfs = grid.nearest(t.vertices[v], reach, [&](int e) {
@@ -227,32 +231,62 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
     for (int e : mine)
       if (!on_side(e)) lfs = std::min(lfs, norm(t.vertices[t.edges[e].v1] - t.vertices[t.edges[e].v0]));
     add(t.vertices[v], lfs);
+    vertex_size[v] = fraction * lfs;
   }
   for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
     if (on_side(e)) continue;
     const TessEdge& ed = t.edges[e];
     const Vec2 a = t.vertices[ed.v0], b = t.vertices[ed.v1];
-    const int n = static_cast<int>(std::ceil(norm(b - a) / spacing));
-    for (int k = 1; k < n; ++k) {
-      const Vec2 p = a + (static_cast<double>(k) / n) * (b - a);
-      // Edges meeting this one at its ends do not count: near a junction they come
-      // arbitrarily close without making anything thin.
-      const int r0 = root(ed.v0), r1 = root(ed.v1);
-      const double lfs = grid.nearest(p, reach, [&](int f) {
-        if (f == e || on_side(f)) return true;
-        const int o0 = root(t.edges[f].v0), o1 = root(t.edges[f].v1);
-        if (o0 != r0 && o0 != r1 && o1 != r0 && o1 != r1) return false;
-        // An edge meeting this one at an acute angle makes a sharp corner, which
-        // wants small elements close to it; wider junctions do not.
-        const int shared = (o0 == r0 || o1 == r0) ? ed.v0 : ed.v1;
-        const Vec2 v = t.vertices[shared];
-        const Vec2 mine = (shared == ed.v0 ? b : a) - v;
-        const TessEdge& o = t.edges[f];
-        Vec2 other = t.vertices[o.v0] == v ? t.vertices[o.v1] - v : t.vertices[o.v0] - v;
-        if (!(t.vertices[o.v0] == v || t.vertices[o.v1] == v)) return true;  // meets an image: leave it
-        return dot(mine, other) < kAcute * norm(mine) * norm(other);
-      });
+    const double len = norm(b - a);
+    const int r0 = root(ed.v0), r1 = root(ed.v1);
+    // Edges meeting this one at its ends do not count: near a junction they come
+    // arbitrarily close without making anything thin.
+    auto ignored = [&](int f) {
+      if (f == e || on_side(f)) return true;
+      const int o0 = root(t.edges[f].v0), o1 = root(t.edges[f].v1);
+      if (o0 != r0 && o0 != r1 && o1 != r0 && o1 != r1) return false;
+      // An edge meeting this one at an acute angle makes a sharp corner, which
+      // wants small elements close to it; wider junctions do not.
+      const int shared = (o0 == r0 || o1 == r0) ? ed.v0 : ed.v1;
+      const Vec2 v = t.vertices[shared];
+      const Vec2 mine = (shared == ed.v0 ? b : a) - v;
+      const TessEdge& o = t.edges[f];
+      Vec2 other = t.vertices[o.v0] == v ? t.vertices[o.v1] - v : t.vertices[o.v0] - v;
+      if (!(t.vertices[o.v0] == v || t.vertices[o.v1] == v)) return true;  // meets an image: leave it
+      return dot(mine, other) < kAcute * norm(mine) * norm(other);
+    };
+    auto sample = [&](double s) {
+      const Vec2 p = a + s * (b - a);
+      const double lfs = grid.nearest(p, reach, ignored);
       add(p, lfs);
+      return fraction * lfs;
+    };
+    // Samples about every `spacing`; where a thin feature wants far smaller elements,
+    // more between them, so that the field between two samples (growing by the gradient)
+    // stays near what the feature wants.
+    const int n = std::max(2, static_cast<int>(std::ceil(len / spacing)));
+    std::vector<std::pair<double, double>> at;  // (s, wanted size)
+    for (int k = 1; k < n; ++k) at.push_back({static_cast<double>(k) / n, 0.0});
+    for (auto& [s, h] : at) h = sample(s);
+    // Breadth first, so that the bound on samples, when reached, leaves them spread out.
+    std::deque<std::tuple<double, double, double, double>> gaps;  // s0, h0, s1, h1
+    gaps.push_back({0.0, at.front().second, at.front().first, at.front().second});
+    for (std::size_t k = 0; k + 1 < at.size(); ++k)
+      gaps.push_back({at[k].first, at[k].second, at[k + 1].first, at[k + 1].second});
+    gaps.push_back({at.back().first, at.back().second, 1.0, at.back().second});
+    for (int added = 0; !gaps.empty() && added < kMaxRefinedSamples; gaps.pop_front()) {
+      const auto [s0, h0, s1, h1] = gaps.front();
+      const double wanted = std::min(h0, h1);
+      if (wanted >= max_size || (s1 - s0) * len <= wanted / gradient) continue;
+      // Within its own size of an end, the end's vertex source rules (and toward a sharp
+      // corner the samples would want ever less).
+      if ((s0 == 0.0 && s1 * len <= vertex_size[ed.v0]) || (s1 == 1.0 && (1.0 - s0) * len <= vertex_size[ed.v1]))
+        continue;
+      const double mid = 0.5 * (s0 + s1);
+      const double hm = sample(mid);
+      ++added;
+      gaps.push_back({s0, s0 == 0.0 ? hm : h0, mid, hm});
+      gaps.push_back({mid, hm, s1, s1 == 1.0 ? hm : h1});
     }
   }
   add_periodic_images(t, max_size, gradient, out);

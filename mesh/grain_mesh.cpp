@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <numbers>
 #include <unordered_map>
 
 #include "common/errors.hpp"
@@ -81,6 +82,51 @@ std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& size, double c
   return out;
 }
 
+// A region corner sharper than this gets its first seeds on both edges at the same
+// distance: the triangle in the corner is then isosceles, the best it can be.
+constexpr double kSharpCorner = 60.0 * std::numbers::pi / 180.0;
+
+// Of a sharp corner's two edges, the one whose first seed lies farther from the corner
+// gets its seeds drawn in until that one lies at the other's distance. Edges on the cell's sides keep their seeds
+// (periodic partners copy them); sharp corners never lie there (the window keeps side
+// crossings wide), nor on holes (a region's corners at a hole are reflex or wide).
+void equal_legs_at_sharp_corners(const Tessellation& t, const std::unordered_map<std::int64_t, int>& index,
+                                 const std::vector<int>& partner, std::vector<std::vector<Vec2>>& seeds) {
+  std::vector<char> on_side(seeds.size(), 0);
+  for (std::size_t e = 0; e < seeds.size(); ++e)
+    if (partner[e] >= 0) on_side[e] = on_side[partner[e]] = 1;
+  auto usable = [&](int e) { return !seeds[e].empty() && !on_side[e]; };
+  // Distance of edge e's seed nearest to its end v.
+  auto first_distance = [&](int e, int v) {
+    return norm((t.edges[e].v0 == v ? seeds[e].front() : seeds[e].back()) - t.vertices[v]);
+  };
+  // Moves edge e's seeds so that the one nearest v lies `d` from it, the others stretched
+  // along (each keeps its share of the rest of the edge): no one gap takes the change.
+  auto pull_in = [&](int e, int v, double d) {
+    const Vec2 at = t.vertices[v], far = t.vertices[t.edges[e].v0 == v ? t.edges[e].v1 : t.edges[e].v0];
+    const double len = norm(far - at), d0 = first_distance(e, v);
+    for (Vec2& p : seeds[e]) {
+      const double u = norm(p - at);
+      p = at + ((d + (u - d0) * (len - d) / (len - d0)) / len) * (far - at);
+    }
+  };
+  for (const Region& region : t.regions) {
+    const auto& ring = region.rings.front();
+    for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+      const int prev = ring[(k + n - 1) % n], v = ring[k], next = ring[(k + 1) % n];
+      const Vec2 at = t.vertices[v], a = t.vertices[prev] - at, b = t.vertices[next] - at;
+      const double angle = std::atan2(std::abs(cross(a, b)), dot(a, b));
+      if (!(angle < kSharpCorner) || cross(b, a) <= 0.0) continue;  // not a sharp convex corner
+      const auto ea = index.find(edge_key(prev, v)), eb = index.find(edge_key(v, next));
+      if (ea == index.end() || eb == index.end()) continue;
+      if (!usable(ea->second) || !usable(eb->second)) continue;
+      const double da = first_distance(ea->second, v), db = first_distance(eb->second, v);
+      if (da > db) pull_in(ea->second, v, db);
+      else if (db > da) pull_in(eb->second, v, da);
+    }
+  }
+}
+
 }  // namespace
 
 FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& o) {
@@ -127,8 +173,10 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] >= 0) continue;
     const Vec2 a = t.vertices[t.edges[e].v0], b = t.vertices[t.edges[e].v1];
+    if (e % 256 == 0) o.distmesh.deadline.check("while seeding grain boundaries");
     seeds[e] = seed_segment(a, b, size, h[e]);
   }
+  equal_legs_at_sharp_corners(t, index, partner, seeds);
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] < 0) continue;
     const TessEdge& low = t.edges[partner[e]];

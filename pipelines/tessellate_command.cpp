@@ -81,8 +81,8 @@ TessellateJob read_tessellate_job(const Config& c) {
   if (c.has("tessellation.grains") && c.has("tessellation.grain_size"))
     c.fail("tessellation.grain_size", "give either tessellation.grains or tessellation.grain_size, not both");
   if (c.has("tessellation.seeds")) {
-    for (const char* other : {"tessellation.grains", "tessellation.grain_size"})
-      if (c.has(other)) c.fail(other, "give tessellation.seeds or " + std::string(other) + ", not both");
+    if (c.has("tessellation.grain_size"))
+      c.fail("tessellation.grain_size", "give tessellation.seeds or tessellation.grain_size, not both");
     for (const auto& text : c.all("tessellation.seeds"))
       for (const Vec2 p : parse_point_list(text, c.source() + ": tessellation.seeds")) {
         if (!(p.x >= 0.0 && p.x <= o.width && p.y >= 0.0 && p.y <= o.height))
@@ -93,6 +93,9 @@ TessellateJob read_tessellate_job(const Config& c) {
     if (o.seeds.empty()) c.fail("tessellation.seeds", "no seed given (x y, x y, ...)");
     if (o.seeds.size() > 10'000'000) c.fail("tessellation.seeds", "more than 10 million seeds");
     o.grains = static_cast<int>(o.seeds.size());
+    if (c.has("tessellation.grains") && c.integer("tessellation.grains", 0) != o.grains)
+      c.fail("tessellation.grains", "is " + c.text("tessellation.grains") + " but tessellation.seeds gives " +
+                                        std::to_string(o.grains) + " seeds: set it to that or leave it out");
   } else if (c.has("tessellation.grain_size")) {
     const double d = positive(c, "tessellation.grain_size");  // mean equivalent-circle diameter
     const double n = std::round(o.width * o.height / (0.25 * std::numbers::pi * d * d));

@@ -47,7 +47,9 @@ void require_meshes_within_bounds(const std::string& ini) {
   INFO(ini);
   test::Realised r;
   REQUIRE_NOTHROW(r = test::realise(ini));
-  CHECK(test::mesh_problem(r).empty());
+  const std::string problem = test::mesh_problem(r);
+  INFO(problem);
+  CHECK(problem.empty());
   CHECK(r.mesh.mesh.triangles.size() > 0);
 }
 

@@ -1,0 +1,221 @@
+// Runs that must end and never lie: the wall-clock limit (limits.seconds) stops a case
+// that cannot converge, and `run` and `sweep` killed by SIGKILL at random moments leave
+// no output that looks complete, while a resumed sweep finishes with the same results as
+// one never interrupted.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <random>
+#include <thread>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+using test::run_grainmesh;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+extern char** environ;
+
+namespace {
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// grainmesh with `args`, its output discarded, not waited for.
+pid_t spawn_grainmesh(const std::vector<std::string>& args) {
+  std::vector<std::string> all{GRAINMESH_BINARY};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t io;
+  posix_spawn_file_actions_init(&io);
+  posix_spawn_file_actions_addopen(&io, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&io, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, GRAINMESH_BINARY, &io, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&io);
+  REQUIRE(rc == 0);
+  return pid;
+}
+
+// Kills `pid` with SIGKILL after `delay` seconds (at once when it has already ended);
+// true when it was still running.
+bool kill_after(pid_t pid, double delay) {
+  const auto t0 = Clock::now();
+  int status = 0;
+  while (seconds_since(t0) < delay) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return true;
+}
+
+// Processes whose command line mentions `text` (children that outlived their parent).
+int processes_mentioning(const std::string& text) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string cmdline = test::read_file(entry.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (cmdline.find(text) != std::string::npos) ++n;
+  }
+  return n;
+}
+
+// The files under `dir`, relative, sorted.
+std::vector<std::string> listing(const fs::path& dir) {
+  std::vector<std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// A report without the figures that differ between identical runs (timings, memory).
+nlohmann::json stable(nlohmann::json report) {
+  report.erase("seconds");
+  report.erase("peak_memory_mib");
+  return report;
+}
+
+}  // namespace
+
+TEST_CASE("limits.seconds: a case that cannot converge ends at its bound with exit 5 and nothing written",
+          "[cli][limits]") {
+  test::ScratchDir dir("limit");
+  {
+    // DistMesh with a convergence tolerance no mesh can meet and no iteration bound to
+    // speak of: only the clock stops it.
+    std::ofstream(dir / "stuck.ini") << "[domain]\nshape = circle(0, 0, 1)\n[size]\nh0 = 0.02\n"
+                                        "[distmesh]\ndptol = 1e-300\nmax_iterations = 100000000\n"
+                                        "[limits]\nseconds = 2\n";
+  }
+  const auto t0 = Clock::now();
+  const auto r = run_grainmesh({"domain", (dir / "stuck.ini").string(), "-o", (dir / "out").string()});
+  const double took = seconds_since(t0);
+  INFO(r.err);
+  CHECK(r.exit_code == 5);
+  CHECK(took < 2.0 + 8.0);  // the limit, the start-up and (sanitized) slowness
+  CHECK(r.err.find("limits.seconds = 2 s reached") != std::string::npos);
+  CHECK(r.err.find("raise it") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(dir / "out"));
+  CHECK(test::entries(dir.path()) == 1);  // no staging directory left either
+
+  // The whole pipeline under one limit: 20,000 grains cannot be meshed in a second.
+  const auto t1 = Clock::now();
+  const auto big = run_grainmesh({"run", "-o", (dir / "big").string(), "--set", "tessellation.grains=20000",
+                                  "--set", "limits.seconds=1"});
+  INFO(big.err);
+  CHECK(big.exit_code == 5);
+  CHECK(seconds_since(t1) < 1.0 + 8.0);
+  CHECK(big.err.find("limits.seconds = 1 s reached") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "big"));
+
+  // A run within its limit reports the limit it ran under.
+  const auto ok = run_grainmesh({"run", "-o", (dir / "ok").string(), "--set", "limits.seconds=600"});
+  REQUIRE(ok.exit_code == 0);
+  CHECK(nlohmann::json::parse(test::read_file(dir / "ok/report.json"))["time_limit_seconds"] == 600.0);
+  const auto bad = run_grainmesh({"run", "-o", (dir / "bad").string(), "--set", "limits.seconds=-1"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err.find("limits.seconds") != std::string::npos);
+}
+
+TEST_CASE("grainmesh run killed at random moments never leaves an output that looks complete", "[cli][kill]") {
+  test::ScratchDir dir("kill-run");
+  const std::vector<std::string> args{"run", "-o", (dir / "out").string(), "--solve", "--set", "tessellation.grains=40"};
+
+  // The uninterrupted run: how long it takes and what it writes.
+  const auto t0 = Clock::now();
+  const auto whole = run_grainmesh(args);
+  const double full = seconds_since(t0);
+  REQUIRE(whole.exit_code == 0);
+  const std::vector<std::string> complete = listing(dir / "out");
+  const nlohmann::json expected = stable(nlohmann::json::parse(test::read_file(dir / "out/report.json")));
+  fs::remove_all(dir / "out");
+
+  std::mt19937_64 rng(8);  // the kill times, reproducible
+  int interrupted = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const double at = std::uniform_real_distribution<double>(0.0, full)(rng);
+    INFO("trial " << trial << ": killed after " << at << " s of " << full);
+    if (kill_after(spawn_grainmesh(args), at)) ++interrupted;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(processes_mentioning((dir / "out").string()) == 0);  // the solver died with it
+    if (fs::exists(dir / "out")) {
+      // Present only as a whole: every file, the same report.
+      CHECK(listing(dir / "out") == complete);
+      CHECK(stable(nlohmann::json::parse(test::read_file(dir / "out/report.json"))) == expected);
+    }
+    // Whatever was staged is marked as such; the next run replaces it all.
+    for (const auto& e : fs::directory_iterator(dir.path()))
+      if (e.path().filename() != "out") CHECK(e.path().filename().string().find(".partial-") != std::string::npos);
+    fs::remove_all(dir / "out");
+  }
+  CHECK(interrupted >= 4);
+}
+
+TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an uninterrupted sweep",
+          "[cli][kill][sweep]") {
+  test::ScratchDir dir("kill-sweep");
+  {
+    std::ofstream out(dir / "sweep.ini");
+    out << test::read_file(test::source_dir() / "data/default.ini")
+        << "\n[sweep]\ntessellation.grains = 20, 30\nphase.matrix.fraction = 0.1, 0.3\nrealisations = 2\n";
+  }
+  auto sweep_args = [&](const std::string& out) {
+    return std::vector<std::string>{"sweep", (dir / "sweep.ini").string(), "-o", (dir / out).string(), "--jobs", "2"};
+  };
+  const auto t0 = Clock::now();
+  REQUIRE(run_grainmesh(sweep_args("reference")).exit_code == 0);
+  const double full = seconds_since(t0);
+
+  std::mt19937_64 rng(9);
+  for (int trial = 0; trial < 4; ++trial) {
+    const double at = std::uniform_real_distribution<double>(0.1 * full, 0.9 * full)(rng);
+    INFO("trial " << trial << ": killed after " << at << " s of " << full);
+    kill_after(spawn_grainmesh(sweep_args("out")), at);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(processes_mentioning((dir / "out").string()) == 0);  // its runs died with it
+    // Every run directory that looks done is done: the reference's files, the same report.
+    if (fs::exists(dir / "out"))
+      for (const auto& e : fs::directory_iterator(dir / "out")) {
+        const std::string name = e.path().filename().string();
+        if (!e.is_directory() || name.front() != 'p') continue;
+        if (!fs::exists(e.path() / "report.json")) continue;
+        CHECK(listing(e.path()) == listing(dir / "reference" / name));
+      }
+  }
+  // Resumed: every run there, each as in the uninterrupted sweep.
+  const auto rest = run_grainmesh(sweep_args("out"));
+  INFO(rest.out << rest.err);
+  REQUIRE(rest.exit_code == 0);
+  int runs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "reference")) {
+    const std::string name = e.path().filename().string();
+    if (!e.is_directory() || name.front() != 'p') continue;
+    ++runs;
+    INFO(name);
+    REQUIRE(fs::exists(dir / "out" / name / "report.json"));
+    CHECK(stable(nlohmann::json::parse(test::read_file(dir / "out" / name / "report.json"))) ==
+          stable(nlohmann::json::parse(test::read_file(e.path() / "report.json"))));
+    CHECK(test::read_file(dir / "out" / name / "mesh.vtu") == test::read_file(e.path() / "mesh.vtu"));
+  }
+  CHECK(runs == 8);
+  for (const auto& e : fs::directory_iterator(dir / "out"))
+    CHECK(e.path().filename().string().find(".partial-") == std::string::npos);
+}
