@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <set>
 
@@ -466,11 +467,38 @@ void validate(const Tessellation& t) {
     if (!(std::abs(grain_area[g] - t.grains[g].area) <= 1e-9 * grain_area[g]))
       throw GeometryError("tessellation: grain " + std::to_string(g) + " records area " + to_text(t.grains[g].area, 12) +
                           " but its regions cover " + to_text(grain_area[g], 12));
-  for (const TessEdge& e : t.edges) {
+  // The edges are exactly the rings' segments, each once, with the regions on its sides.
+  std::map<std::pair<int, int>, std::size_t> edge_of;
+  std::vector<int> uses(t.edges.size(), 0);
+  for (std::size_t k = 0; k < t.edges.size(); ++k) {
+    const TessEdge& e = t.edges[k];
+    if (e.v0 == e.v1) throw GeometryError("tessellation: edge " + std::to_string(k) + " joins a vertex to itself");
     if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
     if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) < 0)
       throw GeometryError("tessellation: an edge with one side lies inside the cell");
+    if (!edge_of.emplace(std::minmax(e.v0, e.v1), k).second)
+      throw GeometryError("tessellation: two edges join vertices " + std::to_string(e.v0) + " and " + std::to_string(e.v1));
   }
+  for (std::size_t r = 0; r < t.regions.size(); ++r)
+    for (std::size_t q = 0; q < t.regions[r].rings.size(); ++q) {
+      const auto& ring = t.regions[r].rings[q];
+      const bool hole = q > 0;  // counter-clockwise too: the region lies on its right
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const int a = ring[k], b = ring[(k + 1) % ring.size()];
+        const auto it = edge_of.find(std::minmax(a, b));
+        if (it == edge_of.end())
+          throw GeometryError("tessellation: region " + std::to_string(r) + " runs from vertex " + std::to_string(a) +
+                              " to " + std::to_string(b) + " along no edge");
+        const TessEdge& e = t.edges[it->second];
+        if (((e.v0 == a) != hole ? e.left : e.right) != static_cast<int>(r))
+          throw GeometryError("tessellation: edge " + std::to_string(it->second) + " does not have region " +
+                              std::to_string(r) + " on the side its ring says");
+        ++uses[it->second];
+      }
+    }
+  for (std::size_t k = 0; k < t.edges.size(); ++k)
+    if (uses[k] != (t.edges[k].left >= 0) + (t.edges[k].right >= 0))
+      throw GeometryError("tessellation: edge " + std::to_string(k) + " is not a segment of the regions it names");
   const double tol = 1e-12 * std::max(W, H);
   for (const auto& [l, r] : t.partners_x)
     if (std::abs(t.vertices[r].x - t.vertices[l].x - W) > tol || std::abs(t.vertices[r].y - t.vertices[l].y) > tol)

@@ -346,7 +346,7 @@ TEST_CASE("tessellation.json reads back bit for bit", "[tessellate]") {
   CHECK_THROWS_WITH(tessellation_from_json("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
 }
 
-TEST_CASE("validate refuses grains out of order and regions of another phase", "[tessellate]") {
+TEST_CASE("validate refuses grains out of order, regions of another phase and stray edges", "[tessellate]") {
   const Tessellation t = make(options(30, 1.0, 1.0), 5);
   REQUIRE_NOTHROW(validate(t));
   Tessellation renumbered = t;
@@ -355,6 +355,17 @@ TEST_CASE("validate refuses grains out of order and regions of another phase", "
   Tessellation recoloured = t;
   recoloured.regions[0].phase = 1 - recoloured.regions[0].phase;
   CHECK_THROWS_WITH(validate(recoloured), Catch::Contains("has phase"));
+  // Edges must be exactly the rings' segments (a stray edge of zero length crashed the
+  // seeding: found by fuzzing).
+  Tessellation looped = t;
+  looped.edges[0].v1 = looped.edges[0].v0;
+  CHECK_THROWS_WITH(validate(looped), Catch::Contains("joins a vertex to itself"));
+  Tessellation missing = t;
+  missing.edges.pop_back();
+  CHECK_THROWS_WITH(validate(missing), Catch::Contains("along no edge"));
+  Tessellation swapped = t;
+  std::swap(swapped.edges[0].left, swapped.edges[0].right);
+  CHECK_THROWS_WITH(validate(swapped), Catch::Contains("on the side its ring says"));
 }
 
 TEST_CASE("given seeds: collinear, coincident, on a lattice or alone, the cell keeps every invariant",
