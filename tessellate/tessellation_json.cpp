@@ -1,5 +1,8 @@
 #include "tessellate/tessellation_json.hpp"
 
+#include <climits>
+#include <cstdint>
+
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
@@ -43,6 +46,35 @@ Json statistics(const TessellationStats& s, const std::vector<Phase>& phases) {
 
 Vec2 read_point(const Json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
 
+// nlohmann turns any number into an int with a plain cast, undefined for 1e80 and silently
+// wrapping 2^32 to 0 (found by fuzzing), so every index and count is read through here.
+int read_int(const Json& j) {
+  if (!j.is_number_integer())
+    throw GeometryError("expected an integer, found " + j.dump());
+  if (j.is_number_unsigned() ? j.get<std::uint64_t>() > std::uint64_t{INT_MAX}
+                             : j.get<std::int64_t>() < INT_MIN || j.get<std::int64_t>() > INT_MAX)
+    throw GeometryError("integer " + j.dump() + " is out of range");
+  return static_cast<int>(j.get<std::int64_t>());
+}
+
+std::vector<int> read_ints(const Json& j) {
+  if (!j.is_array()) throw GeometryError("expected an array of integers, found " + j.dump());
+  std::vector<int> values;
+  for (const Json& v : j) values.push_back(read_int(v));
+  return values;
+}
+
+std::vector<std::pair<int, int>> read_pairs(const Json& j) {
+  if (!j.is_array()) throw GeometryError("expected an array of pairs, found " + j.dump());
+  std::vector<std::pair<int, int>> pairs;
+  for (const Json& p : j) {
+    const std::vector<int> v = read_ints(p);
+    if (v.size() != 2) throw GeometryError("expected a pair, found " + p.dump());
+    pairs.emplace_back(v[0], v[1]);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 std::string tessellation_to_json(const Tessellation& t) {
@@ -79,9 +111,9 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
   try {
     const Json j = Json::parse(text);
     if (j.value("format", "") != "grainmesh-tessellation")
-      throw GeometryError(source + ": not a grainmesh tessellation (format key)");
-    if (j.at("version").get<int>() != 1)
-      throw GeometryError(source + ": tessellation version " + j.at("version").dump() + " is not supported");
+      throw GeometryError("not a grainmesh tessellation (format key)");
+    if (read_int(j.at("version")) != 1)
+      throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
     const Json& d = j.at("domain");
     t.width = d.at("width").get<double>();
     t.height = d.at("height").get<double>();
@@ -90,22 +122,30 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
       t.phases.push_back(Phase{p.at("name").get<std::string>(), p.at("target_fraction").get<double>(),
                                p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>()});
     for (const Json& g : j.at("grains"))
-      t.grains.push_back(Grain{g.at("id").get<int>(), g.at("phase").get<int>(), read_point(g.at("seed")),
-                               g.at("area").get<double>(), g.at("neighbours").get<std::vector<int>>(),
+      t.grains.push_back(Grain{read_int(g.at("id")), read_int(g.at("phase")), read_point(g.at("seed")),
+                               g.at("area").get<double>(), read_ints(g.at("neighbours")),
                                g.at("matrix").get<bool>()});
     for (const Json& v : j.at("vertices")) t.vertices.push_back(read_point(v));
-    for (const Json& e : j.at("edges"))
-      t.edges.push_back({e.at(0).get<int>(), e.at(1).get<int>(), e.at(2).get<int>(), e.at(3).get<int>()});
-    for (const Json& r : j.at("regions"))
-      t.regions.push_back(Region{r.at("grain").get<int>(), r.at("phase").get<int>(),
-                                 r.at("rings").get<std::vector<std::vector<int>>>()});
-    t.partners_x = j.at("partners").at("x").get<std::vector<std::pair<int, int>>>();
-    t.partners_y = j.at("partners").at("y").get<std::vector<std::pair<int, int>>>();
+    for (const Json& e : j.at("edges")) {
+      const std::vector<int> v = read_ints(e);
+      if (v.size() != 4) throw GeometryError("an edge is not [v0, v1, left, right]: " + e.dump());
+      t.edges.push_back({v[0], v[1], v[2], v[3]});
+    }
+    for (const Json& r : j.at("regions")) {
+      Region region{read_int(r.at("grain")), read_int(r.at("phase")), {}};
+      if (!r.at("rings").is_array()) throw GeometryError("a region's rings are not an array: " + r.at("rings").dump());
+      for (const Json& ring : r.at("rings")) region.rings.push_back(read_ints(ring));
+      t.regions.push_back(std::move(region));
+    }
+    t.partners_x = read_pairs(j.at("partners").at("x"));
+    t.partners_y = read_pairs(j.at("partners").at("y"));
     const Json& s = j.at("statistics");
-    t.stats.grains = s.at("grains").get<int>();
+    t.stats.grains = read_int(s.at("grains"));
     t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();
     t.stats.shortest_edge = s.at("shortest_edge").get<double>();
   } catch (const nlohmann::json::exception& e) {
+    throw GeometryError(source + ": " + e.what());
+  } catch (const GeometryError& e) {
     throw GeometryError(source + ": " + e.what());
   }
   const int nv = static_cast<int>(t.vertices.size());

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "common/errors.hpp"
 #include "tessellate/steps.hpp"
 #include "tessellate/tessellation.hpp"
@@ -344,6 +346,23 @@ TEST_CASE("tessellation.json reads back bit for bit", "[tessellate]") {
   CHECK(back.partners_x == t.partners_x);
   CHECK(tessellation_to_json(back).find("\"regions\"") != std::string::npos);
   CHECK_THROWS_WITH(tessellation_from_json("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
+}
+
+TEST_CASE("tessellation.json indices must be integers within int's range", "[tessellate]") {
+  const std::string text = tessellation_to_json(make(options(12, 1.0, 1.0), 3));
+  const auto with_first_edge_end = [&](const nlohmann::json& value) {
+    nlohmann::ordered_json j = nlohmann::ordered_json::parse(text);
+    j["edges"][0][0] = value;
+    return j.dump();
+  };
+  REQUIRE_NOTHROW(tessellation_from_json(with_first_edge_end(0), "t.json"));
+  // 1e80 was undefined behaviour in the cast and 2^32 wrapped to vertex 0 (found by fuzzing).
+  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(-5e80), "t.json"),
+                    Catch::Contains("t.json") && Catch::Contains("expected an integer, found -5e+80"));
+  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(std::uint64_t{1} << 32), "t.json"),
+                    Catch::Contains("integer 4294967296 is out of range"));
+  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(1.5), "t.json"),
+                    Catch::Contains("expected an integer, found 1.5"));
 }
 
 TEST_CASE("validate refuses grains out of order, regions of another phase and stray edges", "[tessellate]") {
