@@ -40,13 +40,13 @@ run: build
 	@echo "make run: everything in $(RUN_OUT)/run: tessellation.{json,png}, mesh.{vtu,png}, case/ (checked and solved: case/log.*; open case/case.foam in ParaView), config.ini, report.json"
 
 # Every test twice: in the release build, then in the sanitizer build, which also runs each
-# fuzz target for a short while (GRAINMESH_FUZZ_SECONDS, 20 s).
+# fuzz target for a fixed number of inputs (GRAINMESH_FUZZ_RUNS, the same on every machine).
 test: build san-build
 	cd $(BUILD_DIR) && ctest -j $(JOBS) --output-on-failure
 	cd $(SAN_DIR) && ctest -j $(JOBS) --output-on-failure
 
-# The long fuzz run: each target for FUZZ_SECONDS (600 s), its corpus kept in
-# $(SAN_DIR)/fuzz-corpus; a failing input lands in $(SAN_DIR)/fuzz-artifacts.
+# The long fuzz run: each target for FUZZ_SECONDS (600 s) from a new libFuzzer seed, its
+# corpus kept in $(SAN_DIR)/fuzz-corpus; a failing input lands in $(SAN_DIR)/fuzz-artifacts.
 fuzz: san-build
 	@for t in config tessellation_json polygon_distance; do \
 	  ./scripts/fuzz.sh $(SAN_DIR) $$t $(FUZZ_SECONDS) || exit 1; \

@@ -18,6 +18,33 @@ namespace grainmesh {
 
 namespace po = boost::program_options;
 
+namespace {
+
+// Where Boost's INI reader stops: the first line that, without its comment, is neither
+// blank, a [section] nor KEY = VALUE.
+std::string describe_bad_line(std::string_view text) {
+  int number = 0;
+  while (!text.empty()) {
+    ++number;
+    const auto end = text.find('\n');
+    std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    line = line.substr(0, line.find('#'));
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+    if (line.empty() || (line.front() == '[' && line.back() == ']') || line.find('=') != std::string_view::npos)
+      continue;
+    std::string shown(line.substr(0, 60));
+    for (char& ch : shown)
+      if (!std::isprint(static_cast<unsigned char>(ch))) ch = '?';
+    return "line " + std::to_string(number) + ": '" + shown + (line.size() > 60 ? "...'" : "'") +
+           " is not KEY = VALUE, a [section] or a # comment";
+  }
+  return "a line is not KEY = VALUE, a [section] or a # comment";
+}
+
+}  // namespace
+
 Config Config::from_file(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   std::ifstream in(file);
   if (!in) throw IoError(file.string() + ": cannot open config file");
@@ -34,6 +61,10 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
     const po::options_description none;
     for (const auto& opt : po::parse_config_file(in, none, /*allow_unregistered=*/true).options)
       c.entries_.emplace_back(opt.string_key, opt.value.empty() ? std::string() : opt.value.front());
+  } catch (const po::invalid_config_file_syntax&) {
+    // Not e.what(): Boost substitutes the line into its message until no placeholder is
+    // left, forever if the line holds one ("%invalid_line%"; found by fuzzing).
+    throw ConfigError(c.source_ + ": " + describe_bad_line(text));
   } catch (const po::error& e) {
     throw ConfigError(c.source_ + ": " + e.what());
   }

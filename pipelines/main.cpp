@@ -3,6 +3,7 @@
 // family to the exit code documented in README.md.
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -69,6 +70,13 @@ std::optional<po::variables_map> parse_options(const std::string& name, po::opti
   po::variables_map vm;
   try {
     po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+  } catch (const po::error_with_option_name& e) {
+    // Boost's what() substitutes the option as typed into its message until no placeholder
+    // is left, forever for an option such as --%option% (found by fuzzing the config reader,
+    // which had the same trouble); with a '%' about, the message is built here.
+    if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a.find('%') != std::string::npos; }))
+      throw ConfigError(name + ": cannot read option '" + e.get_option_name() + "' (see grainmesh " + name + " --help)");
+    throw ConfigError(name + ": " + e.what());
   } catch (const po::error& e) {
     throw ConfigError(name + ": " + e.what());
   }
