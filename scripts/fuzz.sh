@@ -8,8 +8,9 @@
 #
 # The long run draws a new libFuzzer seed each time, keeps the corpus it grows in
 # BUILD_DIR/fuzz-corpus/TARGET and goes on for SECONDS.
-# The repeatable run uses libFuzzer seed 1, an empty corpus and stops after RUNS inputs,
-# so it tries the same inputs on every machine, however fast (SECONDS only bounds it).
+# The repeatable run uses libFuzzer seed 1, an empty corpus, no corpus reloading and stops
+# after RUNS inputs, so it does the same work on every machine however fast (SECONDS only
+# bounds it) and nearly the same inputs (thread scheduling can shift coverage a little).
 #
 # A failing input is written to BUILD_DIR/fuzz-artifacts/TARGET-* and the script exits
 # non-zero: add that file to tests/fuzz/regressions/TARGET once fixed. libFuzzer's
@@ -32,7 +33,7 @@ program=$build/fuzz_$target
 if [[ -n "$runs" ]]; then
   corpus=$build/fuzz-corpus-repeatable/$target
   rm -rf "$corpus"
-  limits=(-seed=1 -runs="$runs" -max_total_time="$seconds")
+  limits=(-seed=1 -runs="$runs" -max_total_time="$seconds" -reload=0)
 else
   corpus=$build/fuzz-corpus/$target
   limits=(-seed=0 -max_total_time="$seconds")
