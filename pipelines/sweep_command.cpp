@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -227,7 +228,11 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
 void collect_sweep(const std::filesystem::path& dir) {
   const Json plan = read_json(dir / "plan.json");
   const auto keys = plan.at("keys").get<std::vector<std::string>>();
-  const int realisations = plan.at("realisations").get<int>();
+  // Checked before the cast: nlohmann's get<int>() of 1e80 is undefined behaviour.
+  const Json& count = plan.at("realisations");
+  if (!count.is_number_integer() || count.get<std::int64_t>() < 1 || count.get<std::int64_t>() > 100000)
+    throw IoError((dir / "plan.json").string() + ": realisations is " + count.dump() + ", not a count from 1 to 100000");
+  const int realisations = static_cast<int>(count.get<std::int64_t>());
   // Student's t at 97.5 % for n - 1 degrees of freedom (n up to 31; 1.96 beyond).
   static const double t975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
                                 2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,

@@ -110,4 +110,10 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   std::ofstream(dir / "plain-file") << "x";
   test::check_refused({{"sweep", (dir / "ok.ini").string()}, 4, "cannot create the sweep's directory"},
                       dir / "plain-file/out");
+  // --collect on a damaged plan: a count nlohmann would cast to int undefined.
+  fs::create_directories(dir / "damaged");
+  std::ofstream(dir / "damaged" / "plan.json") << R"({"keys": [], "realisations": 1e80, "points": []})";
+  const auto collect = test::run_grainmesh({"sweep", "--collect", (dir / "damaged").string()});
+  CHECK(collect.exit_code == 4);
+  CHECK(collect.err.find("plan.json: realisations is 1e+80, not a count from 1 to 100000") != std::string::npos);
 }
