@@ -87,9 +87,10 @@ std::vector<Vec2> seed_segment(Vec2 a, Vec2 b, const FeatureSize& size, double c
 constexpr double kSharpCorner = 60.0 * std::numbers::pi / 180.0;
 
 // Of a sharp corner's two edges, the one whose first seed lies farther from the corner
-// gets its seeds drawn in until that one lies at the other's distance. Edges on the cell's sides keep their seeds
-// (periodic partners copy them); sharp corners never lie there (the window keeps side
-// crossings wide), nor on holes (a region's corners at a hole are reflex or wide).
+// gets its seeds drawn in until that one lies at the other's distance. Edges on the
+// cell's sides keep their seeds (periodic partners copy them); sharp corners never lie
+// there (the window keeps side crossings wide), nor on holes (a region's corners at a
+// hole are reflex or wide).
 void equal_legs_at_sharp_corners(const Tessellation& t, const std::unordered_map<std::int64_t, int>& index,
                                  const std::vector<int>& partner, std::vector<std::vector<Vec2>>& seeds) {
   std::vector<char> on_side(seeds.size(), 0);

@@ -97,12 +97,15 @@ Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, 
   rt.insert(points.begin(), points.end());
 
   Built out;
-  if (rt.dimension() < 2) {
-    // Collinear seeds whose images in the margin are collinear too: widen the margin.
-    if (!periodic) throw GeometryError("power diagram: the seeds and their far points are collinear (internal error)");
+  // Seeds along a line: no image in the margin closes some cell yet (the triangulation is
+  // flat, or a cell unbounded). A periodic cell widens its margin; a plane one has far
+  // points all around, so this cannot happen there.
+  auto too_narrow = [&](const char* what) {
+    if (!periodic) throw GeometryError(std::string("power diagram: ") + what + " (internal error)");
     out.margin_ok = false;
     return out;
-  }
+  };
+  if (rt.dimension() < 2) return too_narrow("the seeds and their far points are collinear");
 
   std::vector<Regular::Vertex_handle> central(n);
   for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
@@ -123,12 +126,7 @@ Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, 
     auto fc = rt.incident_faces(central[s]);
     const auto done = fc;
     do {
-      if (rt.is_infinite(fc)) {
-        // Unbounded: no image closes the cell yet (seeds along a line). Widen the margin.
-        if (!periodic) throw GeometryError("power diagram: a seed's cell is unbounded (internal error)");
-        out.margin_ok = false;
-        return out;
-      }
+      if (rt.is_infinite(fc)) return too_narrow("a seed's cell is unbounded");
       const std::array<Corner, 3> c{fc->vertex(0)->info(), fc->vertex(1)->info(), fc->vertex(2)->info()};
       int r = 0;
       const FaceKey key = face_key(c, &r);

@@ -437,6 +437,36 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
 
 void validate(const Tessellation& t) {
   const double W = t.width, H = t.height;
+  // Every index names something that exists (what follows relies on it).
+  const int nv = static_cast<int>(t.vertices.size()), nr = static_cast<int>(t.regions.size());
+  const auto vertex = [&](int v) { return v >= 0 && v < nv; };
+  for (std::size_t g = 0; g < t.grains.size(); ++g)
+    if (t.grains[g].phase < 0 || t.grains[g].phase >= static_cast<int>(t.phases.size()))
+      throw GeometryError("tessellation: grain " + std::to_string(g) + " names phase " +
+                          std::to_string(t.grains[g].phase) + ", which does not exist");
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    const Region& region = t.regions[r];
+    if (region.grain < 0 || region.grain >= static_cast<int>(t.grains.size()))
+      throw GeometryError("tessellation: region " + std::to_string(r) + " names grain " + std::to_string(region.grain) +
+                          ", which does not exist");
+    if (region.phase < 0 || region.phase >= static_cast<int>(t.phases.size()))
+      throw GeometryError("tessellation: region " + std::to_string(r) + " names phase " + std::to_string(region.phase) +
+                          ", which does not exist");
+    if (region.rings.empty()) throw GeometryError("tessellation: region " + std::to_string(r) + " has no ring");
+    for (const auto& ring : region.rings)
+      for (int v : ring)
+        if (!vertex(v))
+          throw GeometryError("tessellation: region " + std::to_string(r) + " names vertex " + std::to_string(v) +
+                              ", which does not exist");
+  }
+  for (std::size_t k = 0; k < t.edges.size(); ++k) {
+    const TessEdge& e = t.edges[k];
+    if (!vertex(e.v0) || !vertex(e.v1) || e.left < -1 || e.left >= nr || e.right < -1 || e.right >= nr)
+      throw GeometryError("tessellation: edge " + std::to_string(k) + " names a vertex or region that does not exist");
+  }
+  for (const auto* pairs : {&t.partners_x, &t.partners_y})
+    for (const auto& [a, b] : *pairs)
+      if (!vertex(a) || !vertex(b)) throw GeometryError("tessellation: a periodic partner names a vertex that does not exist");
   double total = 0.0;
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     for (const auto& ring : t.regions[r].rings) {
@@ -456,8 +486,6 @@ void validate(const Tessellation& t) {
       throw GeometryError("tessellation: grain " + std::to_string(g) + " has id " + std::to_string(t.grains[g].id));
   std::vector<double> grain_area(t.grains.size(), 0.0);
   for (const Region& r : t.regions) {
-    if (r.grain < 0 || static_cast<std::size_t>(r.grain) >= t.grains.size())
-      throw GeometryError("tessellation: a region names grain " + std::to_string(r.grain) + ", which does not exist");
     if (r.phase != t.grains[r.grain].phase)
       throw GeometryError("tessellation: a region of grain " + std::to_string(r.grain) + " has phase " +
                           std::to_string(r.phase) + ", its grain " + std::to_string(t.grains[r.grain].phase));

@@ -108,10 +108,10 @@ struct Tessellation {
   TessellationStats stats;
 };
 
-// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) power diagram, relaxes, regularises,
-// assigns phases, chooses the window and cuts it. Throws ConfigError for options that
-// cannot be met (fractions, unreachable matrix fraction), TimeLimitError when the
-// deadline passes, GeometryError otherwise.
+// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) power
+// diagram, relaxes, regularises, assigns phases, chooses the window and cuts it. Throws
+// ConfigError for options that cannot be met (fractions, unreachable matrix fraction),
+// TimeLimitError when the deadline passes, GeometryError otherwise.
 Tessellation tessellate(const TessellationOptions& options, Rng& rng);
 
 // Invariants a bug could break: areas, ring orientation and simplicity, edge sides,

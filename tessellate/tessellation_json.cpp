@@ -143,29 +143,9 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
     t.stats.grains = read_int(s.at("grains"));
     t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();
     t.stats.shortest_edge = s.at("shortest_edge").get<double>();
+    validate(t);
   } catch (const nlohmann::json::exception& e) {
     throw GeometryError(source + ": " + e.what());
-  } catch (const GeometryError& e) {
-    throw GeometryError(source + ": " + e.what());
-  }
-  const int nv = static_cast<int>(t.vertices.size());
-  const int nr = static_cast<int>(t.regions.size());
-  for (const Region& r : t.regions) {
-    if (r.grain < 0 || r.grain >= static_cast<int>(t.grains.size()) || r.phase < 0 ||
-        r.phase >= static_cast<int>(t.phases.size()) || r.rings.empty())
-      throw GeometryError(source + ": a region names a grain or phase that does not exist");
-    for (const auto& ring : r.rings)
-      for (int v : ring)
-        if (v < 0 || v >= nv) throw GeometryError(source + ": a ring names vertex " + std::to_string(v) + " that does not exist");
-  }
-  for (const TessEdge& e : t.edges)
-    if (e.v0 < 0 || e.v0 >= nv || e.v1 < 0 || e.v1 >= nv || e.left >= nr || e.right >= nr)
-      throw GeometryError(source + ": an edge names a vertex or region that does not exist");
-  for (const auto* pairs : {&t.partners_x, &t.partners_y})
-    for (const auto& [a, b] : *pairs)
-      if (a < 0 || a >= nv || b < 0 || b >= nv) throw GeometryError(source + ": a partner names a vertex that does not exist");
-  try {
-    validate(t);
   } catch (const GeometryError& e) {
     throw GeometryError(source + ": " + e.what());
   }

@@ -54,6 +54,17 @@ inline std::size_t entries(const std::filesystem::path& dir) {
       std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}));
 }
 
+// The regular files under `dir`, recursively, relative to it and sorted (none when it
+// does not exist).
+inline std::vector<std::filesystem::path> files_under(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> files;
+  if (std::filesystem::exists(dir))
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+      if (e.is_regular_file()) files.push_back(std::filesystem::relative(e.path(), dir));
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 inline std::string read_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::stringstream s;

@@ -13,22 +13,13 @@ using namespace grainmesh;
 
 namespace {
 
-// Every file under the directories (recursively), in a fixed order.
-std::vector<fs::path> inputs(const std::vector<fs::path>& dirs) {
-  std::vector<fs::path> files;
-  for (const fs::path& dir : dirs)
-    if (fs::exists(dir))
-      for (const auto& entry : fs::recursive_directory_iterator(dir))
-        if (entry.is_regular_file()) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 void replay(const std::string& target, const std::vector<fs::path>& seeds,
             const std::function<void(std::span<const std::uint8_t>)>& check) {
   std::vector<fs::path> dirs = seeds;
   dirs.push_back(test::source_dir() / "tests" / "fuzz" / "regressions" / target);
-  const std::vector<fs::path> files = inputs(dirs);
+  std::vector<fs::path> files;
+  for (const fs::path& dir : dirs)
+    for (const fs::path& rel : test::files_under(dir)) files.push_back(dir / rel);
   REQUIRE(!files.empty());
   for (const fs::path& file : files) {
     INFO(file.string());

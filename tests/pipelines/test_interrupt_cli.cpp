@@ -76,15 +76,6 @@ int processes_mentioning(const std::string& text) {
   return n;
 }
 
-// The files under `dir`, relative, sorted.
-std::vector<std::string> listing(const fs::path& dir) {
-  std::vector<std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 // A report without the figures that differ between identical runs (timings, memory).
 nlohmann::json stable(nlohmann::json report) {
   report.erase("seconds");
@@ -144,7 +135,7 @@ TEST_CASE("grainmesh run killed at random moments never leaves an output that lo
   const auto whole = run_grainmesh(args);
   const double full = seconds_since(t0);
   REQUIRE(whole.exit_code == 0);
-  const std::vector<std::string> complete = listing(dir / "out");
+  const std::vector<fs::path> complete = test::files_under(dir / "out");
   const nlohmann::json expected = stable(nlohmann::json::parse(test::read_file(dir / "out/report.json")));
   fs::remove_all(dir / "out");
 
@@ -158,7 +149,7 @@ TEST_CASE("grainmesh run killed at random moments never leaves an output that lo
     CHECK(processes_mentioning((dir / "out").string()) == 0);  // the solver died with it
     if (fs::exists(dir / "out")) {
       // Present only as a whole: every file, the same report.
-      CHECK(listing(dir / "out") == complete);
+      CHECK(test::files_under(dir / "out") == complete);
       CHECK(stable(nlohmann::json::parse(test::read_file(dir / "out/report.json"))) == expected);
     }
     // Whatever was staged is marked as such; the next run replaces it all.
@@ -197,7 +188,7 @@ TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an
         const std::string name = e.path().filename().string();
         if (!e.is_directory() || name.front() != 'p') continue;
         if (!fs::exists(e.path() / "report.json")) continue;
-        CHECK(listing(e.path()) == listing(dir / "reference" / name));
+        CHECK(test::files_under(e.path()) == test::files_under(dir / "reference" / name));
       }
   }
   // Resumed: every run there, each as in the uninterrupted sweep.

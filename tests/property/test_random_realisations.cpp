@@ -30,7 +30,10 @@ constexpr int kPerCase = 12;
 #else
 constexpr int kPerCase = 90;
 #endif
-constexpr int kCases = 6;
+constexpr int kCases = 6;  // the test cases at the end
+#ifndef GRAINMESH_SANITIZED
+static_assert(kCases * kPerCase >= 500, "the issue asks for at least 500 realisations");
+#endif
 // The corner bound's value away from sharp corners on these cells (0.6 on the hostile
 // and Poisson-Voronoi cases): among 540 cells, unregularised Laguerre ones with edges a
 // millionth of the cell long, the worst triangle away from a sharp corner has q 0.598.
@@ -92,6 +95,7 @@ std::string check_realisation(const std::string& ini) {
 }
 
 void check_cases(int which) {
+  REQUIRE(which < kCases);
   int failures = 0;
   for (int k = 0; k < kPerCase; ++k) {
     const int index = which * kPerCase + k;

@@ -385,6 +385,20 @@ TEST_CASE("validate refuses grains out of order, regions of another phase and st
   Tessellation swapped = t;
   std::swap(swapped.edges[0].left, swapped.edges[0].right);
   CHECK_THROWS_WITH(validate(swapped), Catch::Contains("on the side its ring says"));
+  // Indices that name nothing are refused before anything is looked up by them (the
+  // tessellation reader relies on this).
+  Tessellation far_vertex = t;
+  far_vertex.regions[0].rings[0][0] = static_cast<int>(t.vertices.size());
+  CHECK_THROWS_WITH(validate(far_vertex), Catch::Contains("region 0 names vertex") && Catch::Contains("does not exist"));
+  Tessellation far_phase = t;
+  far_phase.grains[0].phase = 7;
+  CHECK_THROWS_WITH(validate(far_phase), Catch::Contains("grain 0 names phase 7"));
+  Tessellation below_outside = t;
+  below_outside.edges[0].right = -5;
+  CHECK_THROWS_WITH(validate(below_outside), Catch::Contains("edge 0 names a vertex or region that does not exist"));
+  Tessellation far_partner = t;
+  far_partner.partners_x.push_back({0, -1});
+  CHECK_THROWS_WITH(validate(far_partner), Catch::Contains("periodic partner names a vertex"));
 }
 
 TEST_CASE("given seeds: collinear, coincident, on a lattice or alone, the cell keeps every invariant",
