@@ -14,11 +14,6 @@
 
 namespace grainmesh {
 
-// Thrown when a run's time limit passes; the message says where the work stood.
-struct TimeLimitError : Error {
-  using Error::Error;
-};
-
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;

@@ -14,6 +14,17 @@
 
 namespace grainmesh {
 
+// How the written case solves: pseudo-time steps of one correction each, stopped when the
+// displacement equation's initial residual falls below kSolverTolerance (OpenFOAM's own
+// measure, in the case; grainmesh's solve judges a scale-aware one, see solve_monitor.hpp),
+// or at kMaxCorrections; signal kStopSignal (SIGUSR2) makes the solver write and stop.
+inline constexpr double kSolverTolerance = 1e-8;
+inline constexpr int kMaxCorrections = 20000;
+inline constexpr int kStopSignal = 12;
+// The field every solved case holds the stress in, however it stopped: solidDisplacementFoam's
+// sigmaD (the stress over rho, and rho is 1), written by the case's writeObjects.
+inline constexpr const char* kStressField = "sigmaD";
+
 struct FoamPhase {
   std::string name;
   double youngs_modulus = 0.0;  // E, Pa
@@ -83,8 +94,21 @@ struct PolyMesh {
 // A grain mesh with its tessellation's cell and phases.
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
 
-// Builds the polyMesh. Throws GeometryError when a cyclic side's faces do not pair, or a
-// boundary edge lies on no side while the mesh is to be cyclic.
+// The ratio of the stiffest phase's 2 mu + lambda to the softest's, and whether the case
+// interpolates the stiffness harmonically (see FoamOptions::interpolation).
+double stiffness_contrast(const ExportMesh& m, const FoamOptions& options);
+bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& options);
+
+// Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
+// on a periodic cell (and with a displacement load), a cell of at least 1 nm in metres, a
+// mean strain (displacement / width, or traction / the softest E) of at most 1 %, and a
+// non-zero load. Throws ConfigError naming the key. Returns warnings: a cell above 1 m.
+std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
+                                    const FoamOptions& options);
+
+// Builds the polyMesh. Throws ConfigError naming a patch the load needs that has no face
+// (right, left, bottom, and top unless uniaxial), GeometryError when a cyclic side's faces
+// do not pair, or a boundary edge lies on no side while the mesh is to be cyclic.
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
 
 // Writes a complete case into `dir` (which must exist and be empty): constant/polyMesh

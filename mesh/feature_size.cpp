@@ -294,19 +294,23 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
 }
 
 std::vector<SizeSource> grading_sources(const Tessellation& t, double boundary_size, double junction_size,
-                                        double max_size, double gradient) {
+                                        const std::vector<double>& phase_size, double max_size, double gradient) {
   std::vector<SizeSource> out;
   const bool boundary = boundary_size > 0.0 && boundary_size < max_size;
   const bool junction = junction_size > 0.0 && junction_size < max_size;
+  // Sources half a size apart along a segment: between two, the field rises by at most a
+  // quarter size times the gradient.
+  auto along = [&](Vec2 a, Vec2 b, double h) {
+    const int n = std::max(1, static_cast<int>(std::ceil(2.0 * norm(b - a) / h)));
+    for (int k = 0; k <= n; ++k) out.push_back({a + (static_cast<double>(k) / n) * (b - a), h});
+  };
   for (const TessEdge& e : t.edges) {
     if (e.left < 0 || e.right < 0) continue;  // a cell side is no grain boundary
     const Vec2 a = t.vertices[e.v0], b = t.vertices[e.v1];
-    // Sources half a size apart: between two, the field rises by at most a quarter size
-    // times the gradient.
-    if (boundary) {
-      const int n = std::max(1, static_cast<int>(std::ceil(2.0 * norm(b - a) / boundary_size)));
-      for (int k = 0; k <= n; ++k) out.push_back({a + (static_cast<double>(k) / n) * (b - a), boundary_size});
-    }
+    if (boundary) along(a, b, boundary_size);
+    // Where phases of different sizes meet, the coarser grows from the finer's size.
+    const double left = phase_size[t.regions[e.left].phase], right = phase_size[t.regions[e.right].phase];
+    if (left != right && std::min(left, right) < max_size) along(a, b, std::min(left, right));
     if (junction)
       for (const Vec2 v : {a, b}) out.push_back({v, junction_size});
   }

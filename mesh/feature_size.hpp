@@ -55,10 +55,11 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
                                         double gradient);
 
 // Grading on purpose: sources along every grain boundary (cell sides excluded) wanting
-// `boundary_size`, and at every vertex of one wanting `junction_size` (0, or not below
-// max_size, = none), with periodic images as above. The field grows away from them by
-// the gradient.
+// `boundary_size`, at every vertex of one wanting `junction_size` (0, or not below
+// max_size, = none), and along every boundary between phases of different sizes
+// (`phase_size`, one per phase) wanting the finer, with periodic images as above. The
+// field grows away from them by the gradient, so no size jumps at a phase interface.
 std::vector<SizeSource> grading_sources(const Tessellation& t, double boundary_size, double junction_size,
-                                        double max_size, double gradient);
+                                        const std::vector<double>& phase_size, double max_size, double gradient);
 
 }  // namespace grainmesh

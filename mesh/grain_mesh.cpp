@@ -132,13 +132,15 @@ void equal_legs_at_sharp_corners(const Tessellation& t, const std::unordered_map
 
 FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& o) {
   double largest = o.size, finest = o.size;
+  std::vector<double> phase_size;
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
-    largest = std::max(largest, region_size(o, static_cast<int>(p)));
-    finest = std::min(finest, region_size(o, static_cast<int>(p)));
+    phase_size.push_back(region_size(o, static_cast<int>(p)));
+    largest = std::max(largest, phase_size.back());
+    finest = std::min(finest, phase_size.back());
   }
   std::vector<SizeSource> sources;
   if (o.feature_size) sources = feature_sources(t, 0.5 * finest, largest, o.feature_fraction, o.gradient);
-  const auto graded = grading_sources(t, o.boundary_size, o.junction_size, largest, o.gradient);
+  const auto graded = grading_sources(t, o.boundary_size, o.junction_size, phase_size, largest, o.gradient);
   sources.insert(sources.end(), graded.begin(), graded.end());
   return FeatureSize(std::move(sources), largest, o.gradient);
 }

@@ -56,6 +56,8 @@ Config Config::from_file(const std::filesystem::path& file, const std::vector<st
 Config Config::from_text(std::string_view text, std::string source, const std::vector<std::string>& overrides) {
   Config c;
   c.source_ = std::move(source);
+  // Editors on Windows start UTF-8 files with a byte order mark.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::istringstream in{std::string(text)};
   try {
     const po::options_description none;
@@ -82,15 +84,16 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
     trim(value);
     set.emplace_back(key, value);
   }
-  std::set<std::string> replaced;
-  for (const auto& kv : set) replaced.insert(kv.first);
-  std::erase_if(c.entries_, [&](const auto& kv) { return replaced.count(kv.first) > 0; });
+  for (const auto& kv : set) c.set_.insert(kv.first);
+  std::erase_if(c.entries_, [&](const auto& kv) { return c.set_.count(kv.first) > 0; });
+  // KEY= (nothing) removes KEY: its default applies, or another key can take its place.
+  std::erase_if(set, [](const auto& kv) { return kv.second.empty(); });
   c.entries_.insert(c.entries_.end(), set.begin(), set.end());
   return c;
 }
 
 void Config::fail(const std::string& key, const std::string& message) const {
-  throw ConfigError(source_ + ": " + key + ": " + message);
+  throw ConfigError((set_.count(key) ? std::string("--set") : source_) + ": " + key + ": " + message);
 }
 
 namespace {
@@ -118,7 +121,8 @@ void Config::check_keys(const std::vector<std::string>& known) const {
       std::string hint;
       for (const auto& k : known)
         if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
-      throw ConfigError(source_ + ": unknown key '" + key + "'" + (hint.empty() ? "" : " (known here: " + hint + ")"));
+      throw ConfigError((set_.count(key) ? std::string("--set") : source_) + ": unknown key '" + key + "'" +
+                        (hint.empty() ? "" : " (known here: " + hint + ")"));
     }
   }
 }
@@ -126,6 +130,7 @@ void Config::check_keys(const std::vector<std::string>& known) const {
 Config Config::subset(const std::vector<std::string>& known) const {
   Config c;
   c.source_ = source_;
+  c.set_ = set_;
   for (const auto& entry : entries_)
     if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, entry.first); }))
       c.entries_.push_back(entry);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,7 +17,8 @@ namespace grainmesh {
 class Config {
  public:
   // Reads `file`; each override "KEY=VALUE" replaces every value the file gives KEY (give
-  // the same KEY several times to set several values). Throws ConfigError or IoError.
+  // the same KEY several times to set several values), "KEY=" removes KEY. Errors about a
+  // key set so name "--set", not the file. Throws ConfigError or IoError.
   static Config from_file(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
   // The same from text; `source` names it in messages.
   static Config from_text(std::string_view text, std::string source, const std::vector<std::string>& overrides = {});
@@ -42,7 +44,8 @@ class Config {
   std::vector<std::string> names_in(const std::string& section) const;
 
   const std::string& source() const { return source_; }
-  // "source: key: message", the form of every config error.
+  // "source: key: message", the form of every config error ("--set: key: message" for a
+  // key given with --set).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
   // The entries whose keys match `known` (patterns as in check_keys): the part of a
@@ -55,6 +58,7 @@ class Config {
  private:
   std::string source_;
   std::vector<std::pair<std::string, std::string>> entries_;
+  std::set<std::string> set_;  // keys given by --set
 };
 
 // The run's wall-clock guard: key limits.seconds, seconds > 0 or "none"; 6 hours unless

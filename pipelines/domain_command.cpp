@@ -5,11 +5,13 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/shape_parser.hpp"
 #include "pipelines/export_command.hpp"
+#include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 
@@ -149,7 +151,7 @@ DistMeshResult mesh_domain(const DomainJob& job) {
 namespace {
 
 Json run_and_write(const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out);
+  check_output_replaceable(out, "domain");
   const DomainJob job = read_domain_job(c);
   const DistMeshResult result = mesh_domain(job);
   const TriMesh& mesh = result.mesh;
@@ -169,7 +171,14 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   std::vector<double> region_fraction;
   for (double a : region_area) region_fraction.push_back(a / area);
 
-  StagedOutput staged(out);
+  Warnings warnings;
+  if (quality.q_min < kPoorQuality)
+    warnings.add("mesh: q_min " + to_text(quality.q_min, 3) + " is below " + to_text(kPoorQuality) +
+                 ": look at mesh.png; a size function that jumps (size.gradient) or a sharp corner causes it");
+  if (!result.stats.converged)
+    warnings.add("mesh: the force iterations stopped (" + result.stats.stop_reason +
+                 ") before the points settled (the mesh is valid; see distmesh.max_iterations)");
+  StagedOutput staged(out, "domain");
   write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
   write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width});
   // For the export: the bounding box is the cell; inside the interface is the second phase.
@@ -181,7 +190,6 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
 
   const DistMeshStats& s = result.stats;
   Json report;
-  report["command"] = "domain";
   report["config"] = c.source();
   report["points"] = mesh.points.size();
   report["triangles"] = mesh.triangles.size();
@@ -212,7 +220,7 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   report["finish_seconds"] = s.finish_seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
-  write_json(staged.dir() / "report.json", report);
+  write_report(staged, report, warnings);
   staged.commit();
   return report;
 }

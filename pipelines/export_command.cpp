@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/json_error.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/report.hpp"
@@ -53,7 +54,7 @@ MeshDescription read_mesh_description(const std::filesystem::path& file) {
       d.phases.push_back(info);
     }
   } catch (const Json::exception& e) {
-    throw GeometryError(file.string() + ": " + e.what());
+    throw GeometryError(file.string() + ": not a mesh.json of grainmesh mesh or domain: " + json_error_text(e));
   }
   if (d.cell.empty() || d.phases.empty()) throw GeometryError(file.string() + ": no cell or no phases");
   return d;
@@ -144,13 +145,14 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
   return m;
 }
 
-void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out,
-                        Replace policy) {
-  check_output_replaceable(out, policy);
+void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out) {
+  check_output_replaceable(out, "export");
   const FoamOptions o = read_foam_options(c);
   const ExportMesh m = read_export_mesh(mesh_file, c);
+  Warnings warnings;
+  for (const std::string& w : check_load(m.cell, m.periodic, m.phases, o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();
-  StagedOutput staged(out, policy);
+  StagedOutput staged(out, "export");
   write_foam_case(staged.dir(), m, o);
   // The same cells for VTK readers: cell k of the case is triangle k.
   write_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
@@ -163,8 +165,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
                       {"E", m.phases[p].youngs_modulus},
                       {"nu", m.phases[p].poisson_ratio},
                       {"cells", cells_per_phase[p]}});
-  Json report{{"command", "export"},
-              {"mesh", mesh_file.string()},
+  Json report{{"mesh", mesh_file.string()},
               {"cells", m.mesh.triangles.size()},
               {"points", 2 * m.mesh.points.size()},
               {"phases", phases},
@@ -178,7 +179,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
                 {"plane_stress", o.plane_stress}}},
               {"seconds", seconds},
               {"peak_memory_mib", peak_memory_mib()}};
-  write_json(staged.dir() / "report.json", report);
+  write_report(staged, report, warnings);
   staged.commit();
   std::printf("grainmesh export: %zu cells in %zu phases (%.3f s)\n  wrote the case %s (Allrun runs checkMesh and "
               "solidDisplacementFoam; open case.foam in ParaView)\n",

@@ -37,7 +37,6 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
 FoamOptions read_foam_options(const Config& config);
 
 // The whole command: the case in a staging directory renamed into place, report.json last.
-void run_export_command(const std::filesystem::path& mesh_file, const Config& config, const std::filesystem::path& out,
-                        Replace policy);
+void run_export_command(const std::filesystem::path& mesh_file, const Config& config, const std::filesystem::path& out);
 
 }  // namespace grainmesh

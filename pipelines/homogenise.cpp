@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <regex>
+#include <csignal>
 #include <sstream>
 #include <string>
 
@@ -10,6 +10,7 @@
 #include "common/format.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/process.hpp"
+#include "pipelines/solve_monitor.hpp"
 
 namespace grainmesh {
 
@@ -103,35 +104,84 @@ std::vector<double> read_cell_displacement(const std::filesystem::path& d_file) 
   return out;
 }
 
+std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir) {
+  std::filesystem::path best;
+  double latest = 0.0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(case_dir, ec)) {
+    if (!entry.is_directory()) continue;
+    const std::string name = entry.path().filename().string();
+    char* end = nullptr;
+    const double t = std::strtod(name.c_str(), &end);
+    if (end == name.c_str() || *end != '\0' || !(t > latest)) continue;
+    latest = t;
+    best = entry.path();
+  }
+  if (best.empty()) throw SolveError(case_dir.string() + ": the solver wrote no result (no time directory after 0)");
+  return best;
+}
+
 Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
-                                 const Deadline& deadline) {
+                                 const Deadline& deadline, const std::filesystem::path& case_shown_as) {
   if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
     throw IoError("--solve: solidDisplacementFoam is not installed (Debian package openfoam; scripts/install-deps.sh)");
   const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
+  const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
   setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // OpenFOAM's programs need it
-  const int status = run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam");
+
+  // A thousand times the displacement the load can give is divergence, not an answer.
+  double softest = 1e300;
+  for (const FoamPhase& p : m.phases) softest = std::min(softest, p.youngs_modulus);
+  const double size = std::max(m.cell.width(), m.cell.height());
+  const double load_scale = o.traction != 0.0 ? std::abs(o.traction) / softest * size : std::abs(o.displacement);
+  SolveMonitor monitor({.tolerance = kSolverTolerance, .stall_corrections = 500,
+                        .diverged_range = 1e3 * load_scale * o.convert_to_meters});
+  bool stop_sent = false;
+  const int status =
+      run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam", [&](std::string_view text) {
+        switch (monitor.feed(text)) {
+          case SolveMonitor::State::converged:  // write and stop at the end of this correction
+            return stop_sent ? 0 : (stop_sent = true, kStopSignal);
+          case SolveMonitor::State::running: return 0;
+          default: return SIGKILL;
+        }
+      });
+
+  // What to do about a solve that goes nowhere.
+  const std::string advice =
+      harmonic_stiffness(m, o) && stiffness_contrast(m, o) > 3.0
+          ? ": the stiffness contrast " + to_text(stiffness_contrast(m, o), 3) +
+                " is too high for export.stiffness_interpolation = harmonic; use auto or linear"
+          : ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
+  const SolveMonitor::State state = monitor.state();
+  if (state == SolveMonitor::State::diverging || state == SolveMonitor::State::stalled)
+    throw SolveError(std::string("D: solidDisplacementFoam ") +
+                     (state == SolveMonitor::State::diverging ? "diverges: " : "stalls: ") + monitor.diagnosis() +
+                     advice + see);
   const std::string text = read_text_file(log, "the solver's log");
-  if (status != 0 || text.find("\nEnd") == std::string::npos)
-    throw GeometryError("--solve: solidDisplacementFoam failed; see " + log.string());
+  if (status == 128 + SIGFPE || text.find("sigFpe") != std::string::npos)
+    throw SolveError("D: solidDisplacementFoam diverges: floating-point overflow after " +
+                     std::to_string(monitor.corrections()) + " corrections" + advice + see);
+  // The stop may reach a solver that already stopped on its own (runTimeControl) after it
+  // finished ("End") and gave the signal back its default action, ending it.
+  const bool stopped_after_end = stop_sent && status == 128 + kStopSignal;
+  if ((status != 0 && !stopped_after_end) || text.find("\nEnd") == std::string::npos)
+    throw SolveError("--solve: solidDisplacementFoam failed (exit code " + std::to_string(status) + ")" + see);
+  if (state != SolveMonitor::State::converged)
+    throw SolveError("D: solidDisplacementFoam did not converge in " + std::to_string(monitor.corrections()) +
+                     " corrections (residual " + to_text(monitor.measure(), 3) + ", above " +
+                     to_text(kSolverTolerance) + ")" + advice + see);
 
   Homogenised h;
-  const std::regex residual(R"(Solving for D([xy]), Initial residual = ([0-9.eE+-]+))");
-  double last[2] = {0.0, 0.0};
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), residual); it != std::sregex_iterator(); ++it) {
-    const int c = (*it)[1] == "x" ? 0 : 1;
-    last[c] = std::stod((*it)[2]);
-    h.corrections += c == 0 ? 1 : 0;
-  }
-  h.final_residual = std::max(last[0], last[1]);
-  if (!(h.final_residual < 1e-8))
-    throw GeometryError("--solve: solidDisplacementFoam stopped at residual " + to_text(h.final_residual) +
-                        " after " + std::to_string(h.corrections) + " corrections, above 1e-8; see " + log.string());
-
+  h.corrections = monitor.corrections();
+  h.final_residual = monitor.measure();
+  h.component_residuals = monitor.residuals();
+  h.result_dir = latest_time_dir(case_dir);
   // Cell k is triangle k.
-  const std::vector<CellStress> sigma = read_cell_stress(case_dir / "1" / "sigma");
+  const std::vector<CellStress> sigma = read_cell_stress(h.result_dir / kStressField);
   if (sigma.size() != m.mesh.triangles.size())
-    throw GeometryError((case_dir / "1/sigma").string() + ": " + std::to_string(sigma.size()) + " cells, the mesh has " +
-                        std::to_string(m.mesh.triangles.size()));
+    throw GeometryError((h.result_dir / kStressField).string() + ": " + std::to_string(sigma.size()) +
+                        " cells, the mesh has " + std::to_string(m.mesh.triangles.size()));
   double area = 0.0;
   for (std::size_t k = 0; k < sigma.size(); ++k) {
     const double a = triangle_area(m.mesh, static_cast<int>(k));

@@ -39,7 +39,7 @@ constexpr const char* kUsage =
     "      periodic Voronoi/Laguerre grains with phases (see data/examples/grains_*.ini)\n"
     "  mesh TESSELLATION.json -o OUT [--config MESH.ini] [--set KEY=VALUE ...]\n"
     "      mesh every grain of a tessellation, conforming and periodic\n"
-    "  export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]\n"
+    "  export MESH.vtu -o CASE [--config EXPORT.ini] [--set KEY=VALUE ...]\n"
     "      an OpenFOAM case for solidDisplacementFoam from a mesh of grainmesh mesh or domain\n"
     "  check TESSELLATION.json MESH.vtu\n"
     "      check that a mesh conforms to its tessellation (exit 0) or name the violation (exit 3)\n"
@@ -48,7 +48,7 @@ constexpr const char* kUsage =
     "\n"
     "grainmesh <command> --help shows the options of a command.\n";
 
-enum Exit { kOk = 0, kInternal = 1, kConfig = 2, kGeometry = 3, kIo = 4, kTimeLimit = 5 };
+constexpr int kOk = kExitOk;
 
 using Runner = void (*)(const Config&, const std::filesystem::path&);
 
@@ -56,7 +56,7 @@ using Runner = void (*)(const Config&, const std::filesystem::path&);
 template <typename E>
 E naming_source(const E& e, const Config& c) {
   const std::string msg = e.what();
-  return E(msg.rfind(c.source(), 0) == 0 ? msg : c.source() + ": " + msg);
+  return E(msg.rfind(c.source(), 0) == 0 || msg.rfind("--set", 0) == 0 ? msg : c.source() + ": " + msg);
 }
 
 // Parses a command's arguments against `desc` (which gets --help) with the positional
@@ -99,7 +99,7 @@ std::optional<po::variables_map> parse_command(const std::string& name, po::opti
                                                const std::string& input, const std::string& input_help,
                                                const std::vector<std::string>& args) {
   desc.add_options()(input.c_str(), po::value<std::string>(), input_help.c_str());
-  add_output_options(desc, "output directory (replaced when it holds an earlier output)");
+  add_output_options(desc, "output directory (replaced only when it holds an earlier output of this command)");
   const auto parsed = parse_options(name, desc, {input}, args);
   if (!parsed) return std::nullopt;
   const po::variables_map& vm = *parsed;
@@ -154,16 +154,14 @@ int mesh_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
-// `grainmesh export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]`.
+// `grainmesh export MESH.vtu -o CASE [--config EXPORT.ini] [--set KEY=VALUE ...]`.
 int export_main(const std::vector<std::string>& args) {
-  po::options_description desc("grainmesh export MESH.vtu -o CASE [--force] [--config EXPORT.ini] [--set KEY=VALUE ...]");
-  desc.add_options()("config", po::value<std::string>(), "export config file (INI) with export.*, load.* and phase.NAME.E/nu keys")(
-      "force", "replace CASE even when it is a non-empty directory");
+  po::options_description desc("grainmesh export MESH.vtu -o CASE [--config EXPORT.ini] [--set KEY=VALUE ...]");
+  desc.add_options()("config", po::value<std::string>(), "export config file (INI) with export.*, load.* and phase.NAME.E/nu keys");
   const auto vm = parse_command("export", desc, "mesh", "mesh.vtu written by grainmesh mesh or domain", args);
   if (!vm) return kOk;
   const Config config = optional_config(*vm);
-  run_export_command((*vm)["mesh"].as<std::string>(), config, (*vm)["output"].as<std::string>(),
-                     vm->count("force") ? Replace::anything : Replace::empty_only);
+  run_export_command((*vm)["mesh"].as<std::string>(), config, (*vm)["output"].as<std::string>());
   return kOk;
 }
 
@@ -173,7 +171,7 @@ int run_main(const std::vector<std::string>& args) {
   desc.add_options()("config", po::value<std::string>(), "config file (INI); none = the embedded default (data/default.ini)")(
       "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)")(
       "quiet,q", "no stage and progress display on the terminal");
-  add_output_options(desc, "output directory (replaced when it holds an earlier output)");
+  add_output_options(desc, "output directory (replaced only when it holds an earlier output of this command)");
   const auto parsed = parse_options("run", desc, {"config"}, args);
   if (!parsed) return kOk;
   const po::variables_map& vm = *parsed;
@@ -240,7 +238,7 @@ int main(int argc, char** argv) {
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
       std::cout << kUsage;
-      return args.empty() ? kConfig : kOk;
+      return args.empty() ? kExitConfig : kOk;
     }
     if (args[0] == "--version") {
       std::cout << "grainmesh 0.1.0\n";
@@ -255,20 +253,11 @@ int main(int argc, char** argv) {
     if (args[0] == "export") return export_main(rest);
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
-  } catch (const ConfigError& e) {
+  } catch (const Error& e) {
     std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
-    return kConfig;
-  } catch (const GeometryError& e) {
-    std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
-    return kGeometry;
-  } catch (const IoError& e) {
-    std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
-    return kIo;
-  } catch (const TimeLimitError& e) {
-    std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
-    return kTimeLimit;
+    return exit_code_of(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "grainmesh: internal error: %s\n", e.what());
-    return kInternal;
+    return kExitInternal;
   }
 }

@@ -57,7 +57,11 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
     const std::string key = "phase." + name + ".size";
     std::size_t p = 0;
     while (p < t.phases.size() && t.phases[p].name != name) ++p;
-    if (p == t.phases.size()) c.fail(key, "the tessellation has no phase named '" + name + "'");
+    if (p == t.phases.size()) {
+      std::string names;
+      for (const Phase& ph : t.phases) names += (names.empty() ? "" : ", ") + ph.name;
+      c.fail(key, "unknown phase '" + name + "' (the tessellation's phases: " + names + ")");
+    }
     o.phase_size[p] = c.number(key);
     if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + c.text(key));
   }
@@ -96,6 +100,20 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   return job;
 }
 
+std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q, const GrainMeshOptions& o) {
+  std::vector<std::string> warnings;
+  if (q.q_min < kPoorQuality)
+    warnings.push_back("mesh: q_min " + to_text(q.q_min, 3) + " is below " + to_text(kPoorQuality) + " (" +
+                       std::to_string(std::lround(q.q_below_half * static_cast<double>(m.mesh.triangles.size()))) +
+                       " triangles below 0.5): look at mesh.png; sharp grain corners (tessellation.lloyd_iterations >= 3) or "
+                       "size jumps (mesh.gradient) cause it");
+  if (m.unconverged_regions > 0)
+    warnings.push_back("mesh: " + std::to_string(m.unconverged_regions) +
+                       (m.unconverged_regions == 1 ? " region" : " regions") + " stopped at mesh.max_iterations = " +
+                       std::to_string(o.distmesh.max_iterations) + " before their points settled (the mesh is valid)");
+  return warnings;
+}
+
 void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width) {
   write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
   MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
@@ -112,17 +130,18 @@ void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, c
 }
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out);
+  check_output_replaceable(out, "mesh");
   const Tessellation t = read_tessellation_file(tessellation);
   const MeshJob job = read_mesh_job(c, t);
   const GrainMesh m = mesh_tessellation(t, job.options);
   const Conformity conformity = check_conformity(t, m);
   const MeshQuality q = measure_quality(m.mesh);
+  Warnings warnings;
+  for (const std::string& w : mesh_warnings(m, q, job.options)) warnings.add(w);
 
-  StagedOutput staged(out);
+  StagedOutput staged(out, "mesh");
   write_mesh_files(staged.dir(), t, m, job.picture_width);
   Json report;
-  report["command"] = "mesh";
   report["tessellation"] = tessellation.string();
   report["points"] = m.mesh.points.size();
   report["triangles"] = m.mesh.triangles.size();
@@ -143,7 +162,7 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   report["seconds"] = m.seconds;
   add_time_limit(report, job.options.distmesh.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
-  write_json(staged.dir() / "report.json", report);
+  write_report(staged, report, warnings);
   staged.commit();
   std::printf("grainmesh mesh: %zu points, %zu triangles (%.0f per grain), q_min %.3f, q_mean %.3f, conforming "
               "(%.3f s)\n  wrote %s/{mesh.vtu, mesh.json, mesh.png, mesh_detail.png, report.json}\n",

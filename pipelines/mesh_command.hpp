@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mesh/grain_mesh.hpp"
+#include "mesh/quality.hpp"
 #include "pipelines/config.hpp"
 
 namespace grainmesh {
@@ -24,6 +25,13 @@ MeshJob read_mesh_job(const Config& config, const Tessellation& t);
 
 // Reads and validates tessellation.json. Throws IoError or GeometryError naming the file.
 Tessellation read_tessellation_file(const std::filesystem::path& file);
+
+// Below this worst triangle quality a mesh is reported as poor (q = 1 equilateral).
+inline constexpr double kPoorQuality = 0.5;
+
+// What a mesh should tell its user: q_min below kPoorQuality, regions that stopped at the
+// iteration limit.
+std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q, const GrainMeshOptions& o);
 
 // Writes a grain mesh's files into `dir`: mesh.vtu (cell data grain, phase, quality),
 // mesh.json (the cell and phases, for the export), mesh.png and mesh_detail.png.

@@ -2,10 +2,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <system_error>
+
+#include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
 
@@ -21,24 +26,77 @@ fs::path hidden_sibling(const fs::path& dir, const char* tag) {
   name.append(dir.filename().string()).append(".").append(tag).append("-").append(std::to_string(::getpid()));
   return dir.parent_path() / name;
 }
-}  // namespace
 
-void check_output_replaceable(const fs::path& final_dir, Replace policy) {
-  std::error_code ec;
-  if (!fs::exists(final_dir, ec)) return;
-  if (!fs::is_directory(final_dir, ec))
-    throw IoError(final_dir.string() + ": exists and is not a directory");
-  if (policy == Replace::anything || fs::is_empty(final_dir, ec)) return;
-  if (policy == Replace::empty_only)
-    throw IoError(final_dir.string() + ": exists and is not empty; use --force to replace it");
-  if (!fs::exists(final_dir / "report.json", ec))
-    throw IoError(final_dir.string() + ": exists and is not a grainmesh output (no report.json); refusing to replace it");
+// What OpenFOAM's programs add to a case they run in: logs, time directories, function
+// object output, decomposed parts.
+bool openfoam_output(const std::string& name) {
+  if (name.rfind("log.", 0) == 0 || name == "postProcessing" || name.rfind("processor", 0) == 0) return true;
+  char* end = nullptr;
+  std::strtod(name.c_str(), &end);
+  return !name.empty() && std::isdigit(static_cast<unsigned char>(name[0])) && *end == '\0';
 }
 
-StagedOutput::StagedOutput(fs::path final_dir, Replace policy)
-    : final_(fs::absolute(std::move(final_dir)).lexically_normal()), policy_(policy) {
-  if (final_.filename().empty()) final_ = final_.parent_path();
-  check_output_replaceable(final_, policy_);
+fs::path absolute_path(fs::path p) {
+  std::error_code ec;
+  fs::path a = fs::weakly_canonical(fs::absolute(p), ec);
+  if (ec) a = fs::absolute(p).lexically_normal();
+  if (a.filename().empty()) a = a.parent_path();
+  return a;
+}
+
+}  // namespace
+
+bool holds_current_directory(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  if (ec) return false;
+  const fs::path d = absolute_path(dir), here = absolute_path(cwd);
+  const auto [d_end, h_end] = std::mismatch(d.begin(), d.end(), here.begin(), here.end());
+  return d_end == d.end();  // every part of dir begins the current directory
+}
+
+std::vector<std::string> entry_names(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void check_output_replaceable(const fs::path& final_dir, const std::string& kind) {
+  std::error_code ec;
+  if (!fs::exists(final_dir, ec)) return;
+  const std::string where = absolute_path(final_dir).string();
+  if (!fs::is_directory(final_dir, ec)) throw IoError(where + ": exists and is not a directory");
+  if (holds_current_directory(final_dir))
+    throw IoError(where + ": is the current directory or holds it; refusing to replace it (give a new directory)");
+  if (fs::is_empty(final_dir, ec)) return;
+  if (!fs::exists(final_dir / "report.json", ec))
+    throw IoError(where + ": exists and is not a grainmesh output (no report.json); refusing to replace it");
+  nlohmann::json report;
+  try {
+    report = nlohmann::json::parse(read_text_file(final_dir / "report.json"));
+  } catch (const nlohmann::json::exception&) {
+    throw IoError(where + ": its report.json is damaged; refusing to replace it");
+  }
+  const auto command = report.is_object() ? report.find("command") : report.end();
+  if (command == report.end() || !command->is_string() || *command != kind)
+    throw IoError(where + ": is not the output of grainmesh " + kind +
+                  (command != report.end() && command->is_string() ? " but of grainmesh " + command->get<std::string>()
+                                                                   : std::string()) +
+                  "; refusing to replace it");
+  std::set<std::string> written;
+  if (const auto files = report.find("files"); files != report.end() && files->is_array())
+    for (const auto& f : *files)
+      if (f.is_string()) written.insert(f.get<std::string>());
+  for (const std::string& name : entry_names(final_dir))
+    if (!written.count(name) && !(kind == "export" && openfoam_output(name)))
+      throw IoError(where + ": holds '" + name + "', which grainmesh " + kind +
+                    " did not write; refusing to replace it (move it away, or give a new directory)");
+}
+
+StagedOutput::StagedOutput(fs::path final_dir, std::string kind) : final_(absolute_path(final_dir)), kind_(std::move(kind)) {
+  check_output_replaceable(final_, kind_);
   const fs::path parent = final_.parent_path();
   std::error_code ec;
   fs::create_directories(parent, ec);
@@ -50,28 +108,44 @@ StagedOutput::StagedOutput(fs::path final_dir, Replace policy)
 }
 
 StagedOutput::~StagedOutput() {
-  if (committed_) return;
+  if (done_) return;
   std::error_code ec;
   fs::remove_all(staging_, ec);
 }
 
-void StagedOutput::commit() {
+namespace {
+// Renames `from` to `to`, replacing `to` (which check_output_replaceable allowed).
+void move_into_place(const fs::path& from, const fs::path& to, const std::string& kind) {
   std::error_code ec;
   fs::path old;
-  if (fs::exists(final_, ec)) {
-    check_output_replaceable(final_, policy_);
-    old = hidden_sibling(final_, "old");
+  if (fs::exists(to, ec)) {
+    check_output_replaceable(to, kind);
+    old = hidden_sibling(to, "old");
     fs::remove_all(old, ec);
-    fs::rename(final_, old, ec);
-    if (ec) throw IoError(final_.string() + ": cannot move the earlier output aside: " + ec.message());
+    fs::rename(to, old, ec);
+    if (ec) throw IoError(to.string() + ": cannot move the earlier output aside: " + ec.message());
   }
-  fs::rename(staging_, final_, ec);
-  if (ec) throw IoError(final_.string() + ": cannot move the output into place: " + ec.message());
-  committed_ = true;
+  fs::rename(from, to, ec);
+  if (ec) throw IoError(to.string() + ": cannot move the output into place: " + ec.message());
   if (!old.empty()) fs::remove_all(old, ec);
+}
+}  // namespace
+
+void StagedOutput::commit() {
+  move_into_place(staging_, final_, kind_);
+  done_ = true;
+}
+
+fs::path StagedOutput::failed_dir() const { return final_.parent_path() / (final_.filename().string() + ".failed"); }
+
+void StagedOutput::keep_as_failed() {
+  move_into_place(staging_, failed_dir(), kind_);
+  done_ = true;
 }
 
 std::string read_text_file(const fs::path& file, const std::string& what) {
+  std::error_code ec;
+  if (fs::is_directory(file, ec)) throw IoError(file.string() + ": is a directory (expected the " + what + ")");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw IoError(file.string() + ": cannot open " + what);
   std::stringstream text;

@@ -1,42 +1,59 @@
-// Output directories that never look complete when they are not: everything is written
-// into a staging directory beside the final one, which commit() renames into place.
+// Output directories that never look complete when they are not, and never replace what
+// is not theirs. Everything is written into a staging directory beside the final one,
+// which commit() renames into place. The report.json written last (write_report in
+// report.hpp) names the command that wrote the directory and every entry it holds, so a
+// later run replaces a directory only when it is recognisably that command's own earlier
+// output: never the current directory, one holding anything else, or another command's.
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace grainmesh {
 
-// Which existing output directory may be replaced.
-enum class Replace {
-  earlier_output,  // an empty one, or one holding a report.json (an earlier grainmesh output)
-  empty_only,      // an empty one only
-  anything,        // any directory (--force)
-};
-
 class StagedOutput {
  public:
-  // Creates the staging directory (and the parents of `final_dir`). Refuses, with
-  // IoError, to later replace an existing `final_dir` that is not a directory, or that
-  // the policy does not allow to replace.
-  explicit StagedOutput(std::filesystem::path final_dir, Replace policy = Replace::earlier_output);
-  ~StagedOutput();  // removes the staging directory unless committed
+  // Creates the staging directory (and the parents of `final_dir`). `kind` is the command
+  // writing it ("run", "mesh", ...). Refuses, with IoError, to later replace an existing
+  // `final_dir` that check_output_replaceable refuses.
+  StagedOutput(std::filesystem::path final_dir, std::string kind);
+  ~StagedOutput();  // removes the staging directory unless committed or kept
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
   // Where to write.
   const std::filesystem::path& dir() const { return staging_; }
+  const std::filesystem::path& final_dir() const { return final_; }
+  const std::string& kind() const { return kind_; }
   // Renames the staging directory to the final one, replacing an earlier output.
   void commit();
+  // Where a failed run's directory is kept: FINAL.failed.
+  std::filesystem::path failed_dir() const;
+  // Renames the staging directory (whose report.json says it failed) to failed_dir(),
+  // replacing an earlier failed output of the same kind; FINAL itself is left alone.
+  void keep_as_failed();
 
  private:
   std::filesystem::path final_, staging_;
-  Replace policy_;
-  bool committed_ = false;
+  std::string kind_;
+  bool done_ = false;
 };
 
-// Checks, before any work is done, that `final_dir` could be replaced (see above).
-void check_output_replaceable(const std::filesystem::path& final_dir, Replace policy = Replace::earlier_output);
+// Checks, before any work is done, that `final_dir` could be written as an output of
+// `kind`: it does not exist, or is an empty directory, or an earlier output of `kind`
+// (its report.json says so) holding nothing but what that report lists — and, for an
+// exported case, what OpenFOAM writes into it (log.*, time directories, postProcessing,
+// processor*). Never the current directory or one that holds it. Throws IoError naming
+// the directory and why.
+void check_output_replaceable(const std::filesystem::path& final_dir, const std::string& kind);
+
+// Whether `dir` is the current directory or holds it (replacing it would pull the
+// ground from under the shell that started us).
+bool holds_current_directory(const std::filesystem::path& dir);
+
+// The names directly inside `dir`, sorted.
+std::vector<std::string> entry_names(const std::filesystem::path& dir);
 
 // The whole of `file`; IoError "FILE: cannot open WHAT" when it cannot be read.
 std::string read_text_file(const std::filesystem::path& file, const std::string& what = "file");

@@ -20,38 +20,67 @@ void die_with_parent(pid_t parent) {
 }
 
 int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
-              const std::filesystem::path& log, const Deadline& deadline, const std::string& what) {
+              const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
+              const LogWatcher& watch) {
   deadline.check("before " + what + " started");
+  // The log is made here, so that it can be followed from its first byte.
+  const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (out < 0) throw IoError(log.string() + ": cannot write the log of " + what);
+  const int in = open(log.c_str(), O_RDONLY | O_CLOEXEC);
   std::fflush(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
-  if (pid < 0) throw IoError(what + ": cannot start it (fork failed)");
+  if (pid < 0) {
+    close(out);
+    if (in >= 0) close(in);
+    throw IoError(what + ": cannot start it (fork failed)");
+  }
   if (pid == 0) {
     die_with_parent(parent);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0 || chdir(dir.c_str()) != 0) _exit(127);
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    close(fd);
+    if (chdir(dir.c_str()) != 0) _exit(127);
+    dup2(out, STDOUT_FILENO);  // dup2 clears close-on-exec on the copies
+    dup2(out, STDERR_FILENO);
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
     execvp(args[0], args.data());
     _exit(127);
   }
+  close(out);
+  // Everything the child has written since the last look, to the watcher.
+  std::string chunk(1 << 16, '\0');
+  auto follow = [&]() -> int {
+    if (!watch || in < 0) return 0;
+    int signal = 0;
+    ssize_t n;
+    while ((n = read(in, chunk.data(), chunk.size())) > 0)
+      if (const int s = watch(std::string_view(chunk.data(), static_cast<std::size_t>(n))); s != 0) signal = s;
+    return signal;
+  };
   int status = 0;
+  bool killed = false;
   // Polled, so the deadline is noticed within a tenth of a second.
   while (true) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
-    if (done < 0) throw IoError(what + ": lost track of it (waitpid failed)");
+    if (done < 0) {
+      if (in >= 0) close(in);
+      throw IoError(what + ": lost track of it (waitpid failed)");
+    }
     if (deadline.passed()) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
+      if (in >= 0) close(in);
       deadline.check("while " + what + " ran (it was stopped)");
+    }
+    if (const int s = follow(); s != 0 && !killed) {
+      kill(pid, s);
+      killed = s == SIGKILL;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  follow();  // what it wrote last
+  if (in >= 0) close(in);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 

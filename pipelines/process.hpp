@@ -5,7 +5,9 @@
 #include <sys/types.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/deadline.hpp"
@@ -17,11 +19,16 @@ namespace grainmesh {
 // already gone.
 void die_with_parent(pid_t parent);
 
+// Reads what a child has added to its log since the last call (a few times a second) and
+// returns a signal to send it (SIGKILL ends it), or 0.
+using LogWatcher = std::function<int(std::string_view appended)>;
+
 // Runs `argv` (looked up in PATH) in directory `dir`, stdout and stderr into `log`, and
-// waits for it. Kills it when `deadline` passes and throws TimeLimitError saying `what`
-// was running. Returns its exit code (128 + the signal when a signal ended it; 127 when
-// it could not be started).
+// waits for it; `watch`, when given, follows the log as it grows. Kills it when
+// `deadline` passes and throws TimeLimitError saying `what` was running. Returns its exit
+// code (128 + the signal when a signal ended it; 127 when it could not be started).
 int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
-              const std::filesystem::path& log, const Deadline& deadline, const std::string& what);
+              const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
+              const LogWatcher& watch = {});
 
 }  // namespace grainmesh

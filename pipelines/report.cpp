@@ -2,7 +2,9 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "pipelines/output_dir.hpp"
 
@@ -26,6 +28,23 @@ void add_quality(Json& report, const MeshQuality& q) {
 }
 
 void write_json(const std::filesystem::path& file, const Json& json) { write_text_file(file, json.dump(2) + "\n"); }
+
+void Warnings::add(const std::string& warning) {
+  std::fprintf(stderr, "grainmesh: warning: %s\n", warning.c_str());
+  lines_.push_back(warning);
+}
+
+void write_report(const StagedOutput& out, Json report, const Warnings& warnings) {
+  Json ordered{{"command", out.kind()}};
+  for (auto& [key, value] : report.items())
+    if (key != "command") ordered[key] = std::move(value);
+  ordered["warnings"] = warnings.all();
+  std::vector<std::string> files = entry_names(out.dir());
+  files.push_back("report.json");
+  std::sort(files.begin(), files.end());
+  ordered["files"] = files;
+  write_json(out.dir() / "report.json", ordered);
+}
 
 void add_time_limit(Json& report, const Deadline& deadline) {
   const double limit = deadline.limit_seconds();

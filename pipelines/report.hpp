@@ -2,11 +2,14 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "common/deadline.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/output_dir.hpp"
 
 namespace grainmesh {
 
@@ -24,5 +27,21 @@ void add_time_limit(Json& report, const Deadline& deadline);
 
 // Pretty-printed JSON, written through a temporary file. Throws IoError.
 void write_json(const std::filesystem::path& file, const Json& json);
+
+// What a command found doubtful but not wrong (a poor mesh, a missed target, a bound
+// crossed): each printed to stderr at once, one line "grainmesh: warning: ...", and kept
+// for report.json's "warnings".
+class Warnings {
+ public:
+  void add(const std::string& warning);
+  const std::vector<std::string>& all() const { return lines_; }
+
+ private:
+  std::vector<std::string> lines_;
+};
+
+// Writes `report` as the staged output's report.json, last: with "command" (the output's
+// kind) first, then "warnings" and "files" (every entry of the directory) at the end.
+void write_report(const StagedOutput& out, Json report, const Warnings& warnings = {});
 
 }  // namespace grainmesh

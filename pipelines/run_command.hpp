@@ -27,6 +27,11 @@ std::string config_ini(const Config& config);
 // A terminal shows the stage and the meshing's progress on stderr unless `quiet`.
 void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false);
 
+// A fingerprint of what a resolved run config asks for (16 hex digits): equal for runs
+// that give the same results. Keys that change how a run goes but not its results
+// (mesh.threads, limits.seconds) are left out.
+std::string config_fingerprint(const Config& config);
+
 // Checks a run config's keys and the values that can be checked before tessellating (all
 // but the mesh keys that depend on the tessellation). Throws ConfigError naming the key.
 void check_run_config(const Config& config);

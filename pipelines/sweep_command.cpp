@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -55,16 +56,61 @@ Json read_json(const std::filesystem::path& file) {
   }
 }
 
-// A run is done when its report (written last) parses and, if solved, holds the result.
-bool run_done(const std::filesystem::path& run_dir, bool solve) {
+// Where a run of the plan stands: its report (written last) is missing or unreadable, was
+// made from another config than the plan now asks for (its fingerprint), lacks the
+// solution a --solve sweep needs, or is done.
+enum class RunStatus { missing, stale, unsolved, done };
+RunStatus run_status(const std::filesystem::path& run_dir, bool solve, const std::string& fingerprint) {
   std::error_code ec;
-  if (!std::filesystem::exists(run_dir / "report.json", ec)) return false;
+  if (!std::filesystem::exists(run_dir / "report.json", ec)) return RunStatus::missing;
   try {
     const Json r = read_json(run_dir / "report.json");
-    return r.value("command", "") == "run" && (!solve || r.contains("effective"));
+    if (r.value("command", "") != "run") return RunStatus::missing;
+    if (r.value("config_fingerprint", "") != fingerprint) return RunStatus::stale;
+    return solve && !r.contains("effective") ? RunStatus::unsolved : RunStatus::done;
   } catch (const IoError&) {
-    return false;
+    return RunStatus::missing;
   }
+}
+
+// The names a sweep directory holds: plan.json, logs/, summary.{csv,png}, one directory per
+// run (pPPP-rRR), a failed run's pPPP-rRR.failed, and while they run, hidden staging
+// directories and temporary files.
+bool sweep_entry(const std::string& name) {
+  if (name == "plan.json" || name == "logs" || name == "summary.csv" || name == "summary.png") return true;
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) return sweep_entry(name.substr(0, name.size() - 4));
+  std::string run = name;
+  if (!run.empty() && run[0] == '.') {  // .pPPP-rRR.partial-PID, .pPPP-rRR.old-PID
+    const auto dot = run.find('.', 1);
+    if (dot == std::string::npos) return false;
+    run = run.substr(1, dot - 1);
+  } else if (run.size() > 7 && run.compare(run.size() - 7, 7, ".failed") == 0) {
+    run.resize(run.size() - 7);
+  }
+  unsigned p = 0, r = 0;
+  char tail = 0;
+  return std::sscanf(run.c_str(), "p%u-r%u%c", &p, &r, &tail) == 2 && run[0] == 'p';
+}
+
+// A sweep writes into DIR only when DIR is new, empty, or an earlier sweep's directory
+// holding nothing else; never the current directory. Throws IoError naming why.
+void check_sweep_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(dir, ec)) return;
+  const std::string where = std::filesystem::absolute(dir).lexically_normal().string();
+  if (!std::filesystem::is_directory(dir, ec)) throw IoError(where + ": exists and is not a directory");
+  if (holds_current_directory(dir))
+    throw IoError(where + ": is the current directory or holds it; give the sweep a directory of its own");
+  if (std::filesystem::is_empty(dir, ec)) return;
+  bool ours = false;
+  try {
+    ours = read_json(dir / "plan.json").value("format", "") == "grainmesh-sweep";
+  } catch (const IoError&) {
+  }
+  if (!ours) throw IoError(where + ": exists and is not a grainmesh sweep (no plan.json); refusing to write into it");
+  for (const std::string& name : entry_names(dir))
+    if (!sweep_entry(name))
+      throw IoError(where + ": holds '" + name + "', which grainmesh sweep did not write; refusing to write into it");
 }
 
 }  // namespace
@@ -112,6 +158,7 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
     std::size_t point;
     int realisation;
     std::vector<std::string> overrides;
+    std::string fingerprint;  // of its resolved config: a changed sweep reruns what changed
   };
   std::vector<Run> runs;
   Json plan_points = Json::array();
@@ -133,14 +180,27 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
       o2.push_back("mesh.seed=" + std::to_string(seed));
       // Runs side by side mesh on one thread each (the mesh is the same either way).
       if (o.jobs > 1 && !base.has("mesh.threads")) o2.push_back("mesh.threads=1");
-      runs.push_back({run_name(p, r), p, r, o2});
+      runs.push_back({run_name(p, r), p, r, o2, {}});
     }
   }
   // Every run's config is checked before any is started (the mesh keys that need the
   // tessellation excepted).
   const std::string base_text = config_ini(base);
-  for (const Run& r : runs) check_run_config(Config::from_text(base_text, c.source(), r.overrides));
+  Json plan_runs = Json::array();
+  for (Run& r : runs) {
+    const Config run_config = Config::from_text(base_text, c.source(), r.overrides);
+    try {
+      check_run_config(run_config);
+    } catch (const ConfigError& e) {
+      std::string point;
+      for (std::size_t k = 0; k < keys.size(); ++k) point += (k ? ", " : "") + r.overrides[k];
+      throw ConfigError(c.source() + ": the sweep's point " + point + ": " + e.what());
+    }
+    r.fingerprint = config_fingerprint(run_config);
+    plan_runs.push_back({{"name", r.name}, {"fingerprint", r.fingerprint}});
+  }
 
+  check_sweep_dir(dir);
   std::error_code ec;
   std::filesystem::create_directories(dir / "logs", ec);
   if (ec) throw IoError(dir.string() + ": cannot create the sweep's directory: " + ec.message());
@@ -149,29 +209,36 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
                                      {"points", plan_points},
                                      {"realisations", realisations},
                                      {"solve", o.solve},
-                                     {"runs", runs.size()}});
+                                     {"runs", plan_runs}});
 
-  // This shard's runs that are not done. What an interrupted sweep left of them — a run
-  // directory without a complete report, the staging directory of a killed run — is
-  // removed: the sweep owns them (other shards' runs, which may be running, are not touched).
+  // This shard's runs that are not done, or were made from another config. What an
+  // interrupted or changed sweep left of them — a run directory without a complete report
+  // or of an old config, a failed run's directory, the staging directory of a killed run —
+  // is removed: the sweep owns them (other shards' runs, which may be running, are not
+  // touched). So are runs the plan no longer has (a list was shortened).
   std::vector<const Run*> todo;
-  std::set<std::string> mine;
+  std::set<std::string> mine, planned;
+  std::size_t changed = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
+    planned.insert(runs[i].name);
     if (static_cast<int>(i % static_cast<std::size_t>(o.shards)) != o.shard - 1) continue;
-    if (run_done(dir / runs[i].name, o.solve)) continue;
-    std::filesystem::remove_all(dir / runs[i].name);
+    const RunStatus status = run_status(dir / runs[i].name, o.solve, runs[i].fingerprint);
+    if (status == RunStatus::done) continue;
+    changed += status == RunStatus::stale ? 1 : 0;
     todo.push_back(&runs[i]);
     mine.insert(runs[i].name);
   }
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();  // ".NAME.partial-PID"
-    const auto cut = name.find(".partial-");
-    if (name.size() > 1 && name[0] == '.' && cut != std::string::npos && mine.count(name.substr(1, cut - 1)))
-      std::filesystem::remove_all(entry.path());
+  for (const std::string& name : entry_names(dir)) {
+    // NAME, NAME.failed, .NAME.partial-PID, .NAME.old-PID
+    std::string run = name[0] == '.' ? name.substr(1, name.find('.', 1) - 1) : name.substr(0, name.find('.'));
+    if (run == name && !sweep_entry(name)) continue;
+    if (run[0] != 'p' || !sweep_entry(run)) continue;
+    if (mine.count(run) || !planned.count(run)) std::filesystem::remove_all(dir / name, ec);
   }
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
-  std::size_t done = 0, failed = 0, next = 0;
+  std::size_t done = 0, next = 0;
+  std::map<std::string, int> failed;  // run -> its exit code
   std::map<pid_t, const Run*> running;
   auto progress = [&] {
     if (!terminal) return;
@@ -199,7 +266,7 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
           run_run_command(Config::from_text(base_text, c.source(), r->overrides), dir / r->name, o.solve, true);
         } catch (const std::exception& e) {
           std::printf("grainmesh: error: %s\n", e.what());
-          code = 3;
+          code = exit_code_of(e);
         }
         std::fflush(stdout);
         _exit(code);
@@ -210,19 +277,27 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
     int status = 0;
     const pid_t pid = wait(&status);
     if (pid < 0) break;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      failed[running[pid]->name] = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
     running.erase(pid);
     ++done;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) ++failed;
   }
   progress();
   if (terminal) std::fprintf(stderr, "\n");
-  std::printf("grainmesh sweep: %zu points x %d realisations = %zu runs; this shard (%d/%d) ran %zu, %zu were done "
-              "already\n  in %s (plan.json, one directory per run, logs/)\n",
-              points, realisations, runs.size(), o.shard, o.shards, todo.size(),
+  std::printf("grainmesh sweep: %zu points x %d realisations = %zu runs; this shard (%d/%d) ran %zu (%zu of them "
+              "again, their config changed), %zu were done already\n  in %s (plan.json, one directory per run, logs/)\n",
+              points, realisations, runs.size(), o.shard, o.shards, todo.size(), changed,
               (runs.size() + o.shards - o.shard) / o.shards - todo.size(), dir.string().c_str());
-  if (failed > 0)
-    throw GeometryError("sweep: " + std::to_string(failed) + " of " + std::to_string(todo.size()) +
-                        " runs failed; their logs are in " + (dir / "logs").string() + " (run the sweep again to retry)");
+  if (!failed.empty()) {
+    std::string names;
+    for (const auto& [name, code] : failed)
+      if (names.size() < 80) names += (names.empty() ? "" : ", ") + name;
+    if (names.size() >= 80) names += ", ...";
+    // The exit code of the first failed run: its log says more.
+    throw_error(failed.begin()->second, "sweep: " + std::to_string(failed.size()) + " of " +
+                                             std::to_string(todo.size()) + " runs failed (" + names + "); their logs are in " +
+                                             (dir / "logs").string() + " (run the sweep again to retry them)");
+  }
 }
 
 void collect_sweep(const std::filesystem::path& dir) {
@@ -233,6 +308,14 @@ void collect_sweep(const std::filesystem::path& dir) {
   if (!count.is_number_integer() || count.get<std::int64_t>() < 1 || count.get<std::int64_t>() > 100000)
     throw IoError((dir / "plan.json").string() + ": realisations is " + count.dump() + ", not a count from 1 to 100000");
   const int realisations = static_cast<int>(count.get<std::int64_t>());
+  // Each run's fingerprint, by name: a run made from another config is not counted.
+  std::map<std::string, std::string> fingerprint;
+  const Json& listed = plan.contains("runs") ? plan["runs"] : Json();
+  if (!listed.is_array())
+    throw IoError((dir / "plan.json").string() + ": no list of runs (an older grainmesh wrote it); run the sweep again");
+  for (const Json& r : listed) fingerprint[r.at("name").get<std::string>()] = r.at("fingerprint").get<std::string>();
+  const bool solve = plan.value("solve", false);
+  std::vector<std::string> missing, failed, stale;
   // Student's t at 97.5 % for n - 1 degrees of freedom (n up to 31; 1.96 beyond).
   static const double t975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
                                 2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
@@ -254,9 +337,17 @@ void collect_sweep(const std::filesystem::path& dir) {
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
     int found = 0;
     for (int r = 0; r < realisations; ++r) {
-      const std::filesystem::path report = dir / run_name(p, r) / "report.json";
-      if (!std::filesystem::exists(report)) continue;
-      const Json j = read_json(report);
+      const std::string name = run_name(p, r);
+      const RunStatus status = run_status(dir / name, solve, fingerprint[name]);
+      if (status != RunStatus::done) {
+        std::error_code ec;
+        (std::filesystem::exists(dir / (name + ".failed"), ec) ? failed
+         : status == RunStatus::stale                          ? stale
+                                                               : missing)
+            .push_back(name);
+        continue;
+      }
+      const Json j = read_json(dir / name / "report.json");
       ++found;
       cells += j["mesh"]["cells"].get<double>();
       q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
@@ -302,6 +393,26 @@ void collect_sweep(const std::filesystem::path& dir) {
            num(reuss) + "," + num(hs_lo) + "," + num(hs_hi) + "," + num(cells / found) + "," + num(q_min) + "\n";
     ++rows;
   }
+  // Said before the summary is written, so nobody mistakes a partial summary for a whole one.
+  Warnings warnings;
+  auto list = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t k = 0; k < names.size() && k < 8; ++k) text += (k ? ", " : "") + names[k];
+    return text + (names.size() > 8 ? ", ..." : "");
+  };
+  const std::size_t total = points.size() * static_cast<std::size_t>(realisations);
+  if (!failed.empty())
+    warnings.add("sweep --collect: " + std::to_string(failed.size()) + " of " + std::to_string(total) +
+                 " runs failed and are left out: " + list(failed) + " (each kept as NAME.failed/, its log in " +
+                 (dir / "logs").string() + ")");
+  if (!stale.empty())
+    warnings.add("sweep --collect: " + std::to_string(stale.size()) + " of " + std::to_string(total) +
+                 " runs were made from another config than plan.json's and are left out: " + list(stale) +
+                 " (run the sweep again)");
+  if (!missing.empty())
+    warnings.add("sweep --collect: " + std::to_string(missing.size()) + " of " + std::to_string(total) +
+                 " runs are missing" + (solve ? " or unsolved" : "") + " and are left out: " + list(missing) +
+                 " (not run yet or interrupted: run the sweep again)");
   write_text_file(dir / "summary.csv", csv);
   if (!by_series.empty()) {
     Plot plot{.x_label = keys[x_key], .y_label = "effective modulus (Pa)", .series = {}};
@@ -315,7 +426,8 @@ void collect_sweep(const std::filesystem::path& dir) {
     if (!bounds.empty()) plot.series.insert(plot.series.end(), {voigt_line, reuss_line});
     write_plot_png(dir / "summary.png", plot);
   }
-  std::printf("grainmesh sweep --collect: %zu points in %s%s\n", rows, (dir / "summary.csv").string().c_str(),
+  std::printf("grainmesh sweep --collect: %zu points (%zu of %zu runs) in %s%s\n", rows,
+              total - failed.size() - stale.size() - missing.size(), total, (dir / "summary.csv").string().c_str(),
               by_series.empty() ? "" : " and summary.png");
 }
 

@@ -39,13 +39,23 @@ double positive(const Config& c, const std::string& key) {
 std::vector<Phase> read_phases(const Config& c) {
   const std::vector<std::string> names = c.names_in("phase");
   if (names.empty()) c.fail("phase.*.fraction", "no phase given: add a section [phase.NAME] with fraction, E and nu");
+  // A section without a fraction is most often a misspelt phase ([phase.Matrix]).
+  std::string defined;
+  for (const auto& name : names)
+    if (c.has("phase." + name + ".fraction")) defined += (defined.empty() ? "" : ", ") + name;
   std::vector<Phase> phases;
   double sum = 0.0;
   int rests = 0;
   for (const auto& name : names) {
     const std::string key = "phase." + name + ".";
     Phase p{.name = name};
-    if (!c.has(key + "fraction")) c.fail(key + "fraction", "missing (a number in (0, 1], or rest)");
+    if (!c.has(key + "fraction")) {
+      std::string given;  // the key that brought the name in
+      for (const auto& [k, v] : c.entries())
+        if (given.empty() && k.rfind(key, 0) == 0) given = k;
+      c.fail(given, "unknown phase '" + name + "' (" + (defined.empty() ? "no phase has a fraction" : "phases: " + defined) +
+                        "); a new phase needs " + key + "fraction, " + key + "E and " + key + "nu");
+    }
     if (c.text(key + "fraction") == "rest") {
       p.rest = true;
       ++rests;
@@ -148,14 +158,40 @@ TessellateJob read_tessellate_job(const Config& c) {
 
 Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
   Rng rng(job.seed);
+  Tessellation t;
   try {
-    return tessellate(job.options, rng);
+    t = tessellate(job.options, rng);
   } catch (const ConfigError& e) {
     // The only option tessellate() can find unreachable is the binder fraction.
     const TessellationOptions& o = job.options;
     const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
     c.fail(key, e.what());
   }
+  // A phase without a grain is not in the microstructure at all: its properties would
+  // never reach the solver. A grain has about 1 / N of the cell, so 1 / fraction grains
+  // give every phase one.
+  for (std::size_t p = 0; p < t.phases.size(); ++p) {
+    const PhaseStats& s = t.stats.phases[p];
+    if (s.grains > 0 || static_cast<int>(p) == job.options.matrix_phase) continue;
+    const double needed = std::ceil(1.0 / s.target_fraction - 1e-9);
+    c.fail("phase." + t.phases[p].name + ".fraction",
+           "a fraction of " + to_text(s.target_fraction) + " gives the phase none of the " +
+               std::to_string(t.stats.grains) + " grains: use at least " + to_text(needed) +
+               " grains (tessellation.grains), about 50 for fractions within 1 %");
+  }
+  return t;
+}
+
+std::vector<std::string> tessellation_warnings(const Tessellation& t) {
+  std::vector<std::string> warnings;
+  for (std::size_t p = 0; p < t.phases.size(); ++p) {
+    const PhaseStats& s = t.stats.phases[p];
+    if (std::abs(s.achieved_fraction - s.target_fraction) > 0.01)
+      warnings.push_back("phase." + t.phases[p].name + ".fraction: " + to_text(s.achieved_fraction, 4) +
+                         " achieved for a target of " + to_text(s.target_fraction, 4) + " with " +
+                         std::to_string(t.stats.grains) + " grains (about 50 or more meet targets within 0.01)");
+  }
+  return warnings;
 }
 
 namespace {
@@ -173,19 +209,20 @@ Json phases_json(const Tessellation& t) {
 }  // namespace
 
 void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out);
+  check_output_replaceable(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();
   const Tessellation t = run_tessellate_job(job, c);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Warnings warnings;
+  for (const std::string& w : tessellation_warnings(t)) warnings.add(w);
 
-  StagedOutput staged(out);
+  StagedOutput staged(out, "tessellate");
   write_text_file(staged.dir() / "tessellation.json", tessellation_to_json(t));
   write_tessellation_vtp(staged.dir() / "tessellation.vtp", t);
   write_tessellation_png(staged.dir() / "tessellation.png", t, {.width_px = job.picture_width});
   const TessellationStats& s = t.stats;
   Json report;
-  report["command"] = "tessellate";
   report["config"] = c.source();
   report["seed"] = job.seed;
   report["width"] = t.width;
@@ -214,7 +251,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   report["seconds"] = seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
-  write_json(staged.dir() / "report.json", report);
+  write_report(staged, report, warnings);
   staged.commit();
 
   std::printf("grainmesh tessellate: %d grains, %zu regions, sharpest corner %.1f deg, shortest edge %.3g (%.3f s)\n",

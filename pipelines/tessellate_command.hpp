@@ -25,8 +25,13 @@ const std::vector<std::string>& tessellate_config_keys();
 // Reads and checks a tessellation config. Throws ConfigError naming the key.
 TessellateJob read_tessellate_job(const Config& config);
 
-// Tessellates with randomness from the job's seed alone. Errors name the config key.
+// Tessellates with randomness from the job's seed alone. Errors name the config key; a
+// phase left without a grain is refused with the grain count that would give it one.
 Tessellation run_tessellate_job(const TessellateJob& job, const Config& config);
+
+// What a tessellation should tell its user: phase fractions that missed their target by
+// more than 0.01.
+std::vector<std::string> tessellation_warnings(const Tessellation& t);
 
 void run_tessellate_command(const Config& config, const std::filesystem::path& out);
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
+#include "common/json_error.hpp"
 
 namespace grainmesh {
 
@@ -145,7 +146,7 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
     t.stats.shortest_edge = s.at("shortest_edge").get<double>();
     validate(t);
   } catch (const nlohmann::json::exception& e) {
-    throw GeometryError(source + ": " + e.what());
+    throw GeometryError(source + ": not a tessellation.json of grainmesh tessellate: " + json_error_text(e));
   } catch (const GeometryError& e) {
     throw GeometryError(source + ": " + e.what());
   }

@@ -45,7 +45,9 @@ TEST_CASE("domain configs are checked before any meshing", "[config]") {
   CHECK(job.problem.bbox.lo == Vec2{-1, -1});  // from the shape when not given
   CHECK(job.problem.curvature_angle > 0.0);
   CHECK(job_of(ok, {"size.curvature_segments=0"}).problem.curvature_angle == 0.0);
-  CHECK_THROWS_WITH(job_of(ok, {"size.h0=0"}), Contains("d.ini: size.h0: must be positive"));
+  // A key given with --set is blamed on --set, not on the file.
+  CHECK_THROWS_WITH(job_of(ok, {"size.h0=0"}), Contains("--set: size.h0: must be positive"));
+  CHECK_THROWS_WITH(job_of(ok + "h0 = 0\n"), Contains("d.ini: size.h0: given 2 times"));
   CHECK_THROWS_WITH(job_of(ok, {"size.h0=-1"}), Contains("size.h0"));
   CHECK_THROWS_WITH(job_of(ok, {"size.hh=1"}), Contains("unknown key 'size.hh'"));
   CHECK_THROWS_WITH(job_of("[size]\nh0 = 1\n"), Contains("domain.shape: missing"));

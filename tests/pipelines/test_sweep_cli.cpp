@@ -24,7 +24,7 @@ void write_sweep(const fs::path& file, const std::string& sweep_section) {
 // "this shard (I/N) ran R" from a sweep's output.
 int ran(const std::string& out) {
   std::smatch m;
-  REQUIRE(std::regex_search(out, m, std::regex(R"(ran (\d+), )")));
+  REQUIRE(std::regex_search(out, m, std::regex(R"(ran (\d+) )")));
   return std::stoi(m[1]);
 }
 

@@ -153,7 +153,7 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
       {{"mesh", tess, "--set", "mesh.size=0"}, 2, "mesh.size: must be positive"},
       {{"mesh", tess, "--set", "mesh.size=-1"}, 2, "mesh.size: must be positive"},
       {{"mesh", (dir / "invalid.json").string()}, 3, "invalid.json: "},
-      {{"mesh", tess, "--set", "phase.Ni.size=0.01"}, 2, "phase.Ni.size: the tessellation has no phase named 'Ni'"},
+      {{"mesh", tess, "--set", "phase.Ni.size=0.01"}, 2, "phase.Ni.size: unknown phase 'Ni' (the tessellation's phases: WC, Co)"},
       {{"mesh", tess, "--set", "mesh.boundary_size=-1e-9"}, 2, "mesh.boundary_size: must be positive (or 0 for none)"},
       {{"mesh", tess, "--set", "mesh.gradient=0"}, 2, "mesh.gradient: must lie between 0.05 and 10"},
       {{"mesh", tess, "--set", "mesh.triangles_per_grain=1"}, 2, "mesh.triangles_per_grain: must lie between"},

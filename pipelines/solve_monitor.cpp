@@ -1,0 +1,107 @@
+#include "pipelines/solve_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "common/format.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+constexpr std::array<const char*, 2> kComponent{"x", "y"};
+
+// The number after `key` in `l`, or NaN when `key` is not there.
+double number_after(std::string_view l, std::string_view key) {
+  const auto at = l.find(key);
+  if (at == std::string_view::npos) return NAN;
+  const std::string rest(l.substr(at + key.size()));
+  return std::strtod(rest.c_str(), nullptr);  // also reads "nan" and "inf"
+}
+
+// "(a b c)" after `key`: its first two numbers.
+bool vector_after(std::string_view l, std::string_view key, std::array<double, 2>& v) {
+  const auto at = l.find(key);
+  if (at == std::string_view::npos) return false;
+  const std::string rest(l.substr(at + key.size()));
+  const char* p = rest.c_str();
+  while (*p == ' ' || *p == '(') ++p;
+  char* end = nullptr;
+  v[0] = std::strtod(p, &end);
+  v[1] = std::strtod(end, nullptr);
+  return true;
+}
+
+}  // namespace
+
+SolveMonitor::State SolveMonitor::feed(std::string_view text) {
+  while (!text.empty()) {
+    const auto nl = text.find('\n');
+    if (nl == std::string_view::npos) {
+      partial_.append(text);
+      break;
+    }
+    partial_.append(text.substr(0, nl));
+    text.remove_prefix(nl + 1);
+    line(partial_);
+    partial_.clear();
+  }
+  return state_;
+}
+
+void SolveMonitor::line(std::string_view l) {
+  if (l.find("Solving for D") != std::string_view::npos) {
+    const auto at = l.find("Solving for D") + 13;
+    const int c = at < l.size() && l[at] == 'y' ? 1 : (at < l.size() && l[at] == 'x' ? 0 : -1);
+    if (c < 0) return;  // Dz is never solved in 2D
+    residual_[c] = number_after(l, "Initial residual = ");
+    if (c == 0) ++corrections_;
+    if (!std::isfinite(residual_[c]) && state_ == State::running) state_ = State::diverging;
+  } else if (vector_after(l, "min(region0) of D =", low_)) {
+  } else if (vector_after(l, "max(region0) of D =", high_)) {
+    judge();  // the last of a correction's lines that the measure needs
+  }
+}
+
+void SolveMonitor::judge() {
+  if (state_ != State::running && state_ != State::converged) return;  // stopped: kept as it was
+  std::array<double, 2> range{high_[0] - low_[0], high_[1] - low_[1]};
+  const double scale = std::max(range[0], range[1]);
+  measure_ = 0.0;
+  for (int c = 0; c < 2; ++c) {
+    const double w = scale > 0.0 ? residual_[c] * range[c] / scale : residual_[c];
+    if (!(w <= measure_)) {  // NaN wins
+      measure_ = w;
+      worst_component_ = c;
+    }
+  }
+  if (state_ == State::converged) return;  // the corrections after the stop was asked for
+  if (!std::isfinite(measure_) || !std::isfinite(scale) || (o_.diverged_range > 0.0 && scale > o_.diverged_range)) {
+    state_ = State::diverging;
+  } else if (measure_ < o_.tolerance) {
+    state_ = State::converged;
+  } else if (measure_ < 0.5 * best_) {
+    best_ = measure_;
+    best_at_ = corrections_;
+  } else if (corrections_ - best_at_ >= o_.stall_corrections) {
+    state_ = State::stalled;
+  }
+}
+
+std::string SolveMonitor::diagnosis() const {
+  const std::string after = " after " + std::to_string(corrections_) + " corrections";
+  if (state_ == State::diverging) {
+    if (!std::isfinite(measure_)) return "the displacement's residual became " + to_text(measure_) + after;
+    return "the displacement grew to a range of " + to_text(std::max(high_[0] - low_[0], high_[1] - low_[1])) +
+           " m, a thousand times what the load can give," + after;
+  }
+  if (state_ == State::stalled)
+    return std::string("the ") + kComponent[worst_component_] + " displacement's residual has not fallen for " +
+           std::to_string(o_.stall_corrections) + " corrections (OpenFOAM's " + to_text(residual_[worst_component_], 3) +
+           ", against the whole field " + to_text(measure_, 3) + ", above " + to_text(o_.tolerance, 3) + ")";
+  return {};
+}
+
+}  // namespace grainmesh

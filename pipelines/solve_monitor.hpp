@@ -1,0 +1,60 @@
+// Judging a running solidDisplacementFoam from its log: converged, stalled or diverging.
+//
+// OpenFOAM normalises each component's residual by that component's own magnitude, so a
+// component whose exact solution is zero (y under the default load on one material) has
+// a residual of rounding noise that never falls: the solve would wait for ever. The
+// measure here weighs each component's residual by its share of the displacement: the
+// residual of component c times range(D_c) / max over c' of range(D_c'), range being the
+// largest minus the smallest cell value. That is the residual against the scale of the
+// whole displacement field; for the component that carries the load it is OpenFOAM's own.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace grainmesh {
+
+class SolveMonitor {
+ public:
+  struct Options {
+    double tolerance = 1e-8;  // converged once the measure falls below it
+    // Stalled: the measure has not halved for this many corrections. A converging solve
+    // halves it every few (the default cell: 50 corrections from 1 to 1e-8).
+    int stall_corrections = 500;
+    // Diverging: a displacement range above this (metres), a thousand times what the load
+    // can produce; 0 = not checked.
+    double diverged_range = 0.0;
+  };
+  enum class State { running, converged, stalled, diverging };
+
+  explicit SolveMonitor(Options options) : o_(options) {}
+
+  // Reads the next piece of the log (any split: partial lines wait for their end).
+  State feed(std::string_view text);
+  State state() const { return state_; }
+
+  // Corrections so far (a converged solve goes on for a few until it stops), the measure
+  // at the last, and OpenFOAM's residuals of x and y there.
+  int corrections() const { return corrections_; }
+  double measure() const { return measure_; }
+  const std::array<double, 2>& residuals() const { return residual_; }
+  // What went wrong, for a stalled or diverging solve: "the y displacement's residual ..."
+  std::string diagnosis() const;
+
+ private:
+  void line(std::string_view l);
+  void judge();
+
+  Options o_;
+  State state_ = State::running;
+  std::string partial_;
+  int corrections_ = 0;
+  std::array<double, 2> residual_{1.0, 1.0}, low_{0.0, 0.0}, high_{0.0, 0.0};
+  double measure_ = 1.0;
+  double best_ = 1e300;  // the measure when it last halved, and the correction it did
+  int best_at_ = 0;
+  int worst_component_ = 0;
+};
+
+}  // namespace grainmesh
