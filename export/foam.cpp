@@ -394,28 +394,13 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
   if (!f) throw IoError(file.string() + ": cannot write");
 }
 
-// Whether the exact y displacement is zero: one material (every phase alike) under a load
-// that keeps the mean transverse strain zero. Its normalised residual is then rounding noise.
-bool y_displacement_vanishes(const ExportMesh& m, const FoamOptions& o) {
-  for (const FoamPhase& p : m.phases)
-    if (p.youngs_modulus != m.phases.front().youngs_modulus || p.poisson_ratio != m.phases.front().poisson_ratio)
-      return false;
-  return !o.uniaxial;
-}
-
-// Pseudo-time steps of one correction each (d2dt2 is steadyState), so that the run can be
-// stopped between any two: by runTimeControl once OpenFOAM's own residual is below the
-// tolerance, or by grainmesh's solve (SIGUSR2, which writes and stops), whose criterion
-// also holds for a component that is zero. The range of every displacement component is
-// logged each step for that criterion.
-std::string control_dict(const ExportMesh& m, const FoamOptions& o) {
-  const std::string steps = std::to_string(kMaxCorrections);
-  // One material: y's residual is noise, but its error follows x's (y's range stays about
-  // ten times x's residual, measured), so x alone at a hundredth of the tolerance also
-  // meets grainmesh's criterion.
-  const bool x_alone = y_displacement_vanishes(m, o);
-  const std::string watched = x_alone ? "D.component(0)" : "D";
-  const double value = x_alone ? 0.01 * kSolverTolerance : kSolverTolerance;
+// Pseudo-time steps of one correction each (d2dt2 is steadyState), stopped by
+// runTimeControl once OpenFOAM's own residual is below the tolerance (case_stop), or at
+// `end_step`. The range of every displacement component is logged each step, for the
+// scale-aware criterion of grainmesh's solve (solve_monitor.hpp).
+std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step) {
+  const std::string steps = std::to_string(end_step);
+  const CaseStop stop = case_stop(m, o);
   std::string range;
   for (const char* op : {"min", "max"})
     range += std::string("    displacement_") + op + "\n    {\n        type            volFieldValue;\n"
@@ -425,22 +410,22 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o) {
   return dictionary_header("system", "controlDict") +
          "application     solidDisplacementFoam;\n\nstartFrom       startTime;\nstartTime       0;\n"
          "stopAt          endTime;\n// Each step is one correction of the displacement (d2dt2 steadyState): at most " +
-         steps + ".\nendTime         " + steps + ";\ndeltaT          1;\n\n"
+         steps + (end_step == kMaxCorrections ? "" : ", where grainmesh's criterion was met") +
+         ".\nendTime         " + steps + ";\ndeltaT          1;\n\n"
          "// Written once, when the run stops. Results in ASCII whatever the mesh's format:\n"
          "// they are what users (and grainmesh run --solve) read.\n"
          "writeControl    timeStep;\nwriteInterval   " + steps + ";\npurgeWrite      0;\nwriteFormat     ascii"
          ";\nwritePrecision  12;\nwriteCompression off;\ntimeFormat      general;\ntimePrecision   6;\n"
          "runTimeModifiable false;\n\n"
-         "// Signal " + std::to_string(kStopSignal) + " (SIGUSR2) writes the fields and stops after the current step.\n"
-         "OptimisationSwitches\n{\n    stopAtWriteNowSignal " + std::to_string(kStopSignal) + ";\n}\n\n"
          "functions\n{\n" + range +
          "    // Stop once the displacement equation's initial residual is below the tolerance" +
-         (x_alone ? ";\n    // x alone (at a hundredth of it): one material keeps y exactly zero, and y's residual is noise"
-                  : "") +
+         (stop.x_alone ? ";\n    // x alone (at a hundredth of it): one material keeps y exactly zero, and y's residual is noise"
+                       : "") +
          ".\n    converged\n    {\n        type            runTimeControl;\n        libs            (utilityFunctionObjects);\n"
          "        conditions\n        {\n            residual\n            {\n"
-         "                type    equationInitialResidual;\n                fields  (" + watched + ");\n"
-         "                value   " + number_text(value) + ";\n                mode    minimum;\n"
+         "                type    equationInitialResidual;\n                fields  (" +
+         (stop.x_alone ? "D.component(0)" : "D") + ");\n"
+         "                value   " + number_text(stop.tolerance) + ";\n                mode    minimum;\n"
          "            }\n        }\n    }\n" +
          "    // The stress (sigmaD; rho is 1, so it is sigma) whenever the fields are written, also\n"
          "    // when runTimeControl stops the run, where the solver itself writes no sigma.\n"
@@ -449,6 +434,23 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o) {
 }
 
 }  // namespace
+
+CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
+  // One material under a load that keeps the mean transverse strain zero: y is exactly
+  // zero and its residual noise. Its error follows x's (y's range stays about ten times
+  // x's residual, measured), so x alone at a hundredth of the tolerance also meets the
+  // scale-aware criterion.
+  bool one_material = true;
+  for (const FoamPhase& p : m.phases)
+    one_material = one_material && p.youngs_modulus == m.phases.front().youngs_modulus &&
+                   p.poisson_ratio == m.phases.front().poisson_ratio;
+  if (one_material && !o.uniaxial) return {.x_alone = true, .tolerance = 0.01 * kSolverTolerance};
+  return {.x_alone = false, .tolerance = kSolverTolerance};
+}
+
+void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o, int end_step) {
+  write_text(dir / "system/controlDict", control_dict(m, o, end_step));
+}
 
 std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
                                     const FoamOptions& o) {
@@ -466,8 +468,8 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
   // A cell below a nanometre is a unit slip (lengths in metres read as micrometres):
   // continuum elasticity means nothing there.
   const double size = std::max(cell.width(), cell.height()), metres = size * o.convert_to_meters;
-  const std::string in_metres = to_text(size) + " mesh units x export.convert_to_meters = " +
-                                to_text(o.convert_to_meters) + " m, so " + to_text(metres) + " m";
+  const std::string in_metres = to_text(size) + " mesh units across, times export.convert_to_meters = " +
+                                to_text(o.convert_to_meters) + ": " + to_text(metres) + " m";
   if (metres < 1e-9)
     throw ConfigError("export.convert_to_meters: the cell is " + in_metres +
                       ", below 1 nm: are the lengths in metres? then set export.convert_to_meters = 1");
@@ -489,7 +491,7 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
   std::vector<std::string> warnings;
   if (metres > 1.0)
     warnings.push_back("the cell is " + in_metres +
-                       " across, above 1 m: grainmesh is made for microstructures; check export.convert_to_meters");
+                       ", above 1 m: grainmesh is made for microstructures; check export.convert_to_meters");
   return warnings;
 }
 
@@ -557,7 +559,7 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
                  "planeStress     " + std::string(o.plane_stress ? "yes" : "no") + ";\n");
   write_text(dir / "constant/thermalProperties",
              dictionary_header("constant", "thermalProperties") + "thermalStress   no;\n");
-  write_text(dir / "system/controlDict", control_dict(m, o));
+  write_control_dict(dir, m, o, kMaxCorrections);
   const std::string stiffness = harmonic
       ? "    // The stiffness interpolated harmonically across faces: exact at phase interfaces.\n"
         "    laplacian(DD,D) Gauss harmonic corrected;\n"

@@ -17,10 +17,9 @@ namespace grainmesh {
 // How the written case solves: pseudo-time steps of one correction each, stopped when the
 // displacement equation's initial residual falls below kSolverTolerance (OpenFOAM's own
 // measure, in the case; grainmesh's solve judges a scale-aware one, see solve_monitor.hpp),
-// or at kMaxCorrections; signal kStopSignal (SIGUSR2) makes the solver write and stop.
+// or at kMaxCorrections.
 inline constexpr double kSolverTolerance = 1e-8;
 inline constexpr int kMaxCorrections = 20000;
-inline constexpr int kStopSignal = 12;
 // The field every solved case holds the stress in, however it stopped: solidDisplacementFoam's
 // sigmaD (the stress over rho, and rho is 1), written by the case's writeObjects.
 inline constexpr const char* kStressField = "sigmaD";
@@ -105,6 +104,20 @@ bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& options);
 // non-zero load. Throws ConfigError naming the key. Returns warnings: a cell above 1 m.
 std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
                                     const FoamOptions& options);
+
+// The case's own stop (runTimeControl): OpenFOAM's initial residual of D below
+// `tolerance`, of its x component alone when the exact y displacement is zero (one
+// material under a load that keeps the mean transverse strain zero).
+struct CaseStop {
+  bool x_alone = false;
+  double tolerance = kSolverTolerance;
+};
+CaseStop case_stop(const ExportMesh& m, const FoamOptions& options);
+
+// Writes DIR/system/controlDict of the case write_foam_case writes, its run bounded at
+// `end_step` corrections (where it is written if it gets there).
+void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options,
+                        int end_step);
 
 // Builds the polyMesh. Throws ConfigError naming a patch the load needs that has no face
 // (right, left, bottom, and top unless uniaxial), GeometryError when a cyclic side's faces

@@ -86,9 +86,12 @@ void check_output_replaceable(const fs::path& final_dir, const std::string& kind
                                                                    : std::string()) +
                   "; refusing to replace it");
   std::set<std::string> written;
-  if (const auto files = report.find("files"); files != report.end() && files->is_array())
-    for (const auto& f : *files)
-      if (f.is_string()) written.insert(f.get<std::string>());
+  const auto files = report.find("files");
+  if (files == report.end() || !files->is_array())
+    throw IoError(where + ": was written by an earlier grainmesh, whose report.json lists no files; remove it yourself "
+                          "to replace it");
+  for (const auto& f : *files)
+    if (f.is_string()) written.insert(f.get<std::string>());
   for (const std::string& name : entry_names(final_dir))
     if (!written.count(name) && !(kind == "export" && openfoam_output(name)))
       throw IoError(where + ": holds '" + name + "', which grainmesh " + kind +

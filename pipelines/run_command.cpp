@@ -164,6 +164,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   auto clock = std::chrono::steady_clock::now();
   stage("tessellating");
   const Tessellation t = run_tessellate_job(tess_job, tess_config);
+  check_phases_have_grains(t, tess_job, tess_config);
   const double tessellate_seconds = since(clock);
   end_stage_line();
   for (const std::string& w : tessellation_warnings(t)) warnings.add(w);

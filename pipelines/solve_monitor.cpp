@@ -58,7 +58,11 @@ void SolveMonitor::line(std::string_view l) {
     if (c < 0) return;  // Dz is never solved in 2D
     residual_[c] = number_after(l, "Initial residual = ");
     if (c == 0) ++corrections_;
-    if (!std::isfinite(residual_[c]) && state_ == State::running) state_ = State::diverging;
+    if (!std::isfinite(residual_[c]) && (state_ == State::running || state_ == State::converged)) {
+      state_ = State::diverging;
+      measure_ = residual_[c];
+      worst_component_ = c;
+    }
   } else if (vector_after(l, "min(region0) of D =", low_)) {
   } else if (vector_after(l, "max(region0) of D =", high_)) {
     judge();  // the last of a correction's lines that the measure needs
@@ -77,11 +81,30 @@ void SolveMonitor::judge() {
       worst_component_ = c;
     }
   }
-  if (state_ == State::converged) return;  // the corrections after the stop was asked for
   if (!std::isfinite(measure_) || !std::isfinite(scale) || (o_.diverged_range > 0.0 && scale > o_.diverged_range)) {
     state_ = State::diverging;
-  } else if (measure_ < o_.tolerance) {
+    return;
+  }
+  if (state_ == State::converged) {
+    // Will the case's own stop come? Its residual must keep halving until below its tolerance.
+    double own = 0.0;
+    for (int c = 0; c < 2; ++c)
+      if (o_.case_watches[c]) own = std::max(own, residual_[c]);
+    if (own < o_.case_tolerance) return;
+    if (own < 0.5 * best_) {
+      best_ = own;
+      best_at_ = corrections_;
+    } else if (corrections_ - best_at_ >= o_.case_patience) {
+      state_ = State::case_stuck;
+    }
+    return;
+  }
+  if (measure_ < o_.tolerance) {
     state_ = State::converged;
+    converged_at_ = corrections_;
+    best_ = 1e300;
+    best_at_ = corrections_;
+    judge();  // the case's residual at this correction
   } else if (measure_ < 0.5 * best_) {
     best_ = measure_;
     best_at_ = corrections_;

@@ -25,8 +25,20 @@ class SolveMonitor {
     // Diverging: a displacement range above this (metres), a thousand times what the load
     // can produce; 0 = not checked.
     double diverged_range = 0.0;
+    // The case's own stop (export/foam.hpp, CaseStop): OpenFOAM's residual of the watched
+    // components below case_tolerance. After the measure converged, the case gets
+    // case_patience corrections to halve its own; else it is stuck (a component near zero).
+    std::array<bool, 2> case_watches{true, true};
+    double case_tolerance = 1e-8;
+    int case_patience = 50;
   };
-  enum class State { running, converged, stalled, diverging };
+  enum class State {
+    running,     // not yet converged
+    converged,   // the measure is below the tolerance; the case will stop on its own
+    case_stuck,  // converged, but the case's own stop will not come: stop it at converged_at()
+    stalled,
+    diverging,
+  };
 
   explicit SolveMonitor(Options options) : o_(options) {}
 
@@ -34,9 +46,10 @@ class SolveMonitor {
   State feed(std::string_view text);
   State state() const { return state_; }
 
-  // Corrections so far (a converged solve goes on for a few until it stops), the measure
-  // at the last, and OpenFOAM's residuals of x and y there.
+  // Corrections so far; the one at which the measure first fell below the tolerance (0
+  // before); the measure at the last, and OpenFOAM's residuals of x and y there.
   int corrections() const { return corrections_; }
+  int converged_at() const { return converged_at_; }
   double measure() const { return measure_; }
   const std::array<double, 2>& residuals() const { return residual_; }
   // What went wrong, for a stalled or diverging solve: "the y displacement's residual ..."
@@ -49,10 +62,10 @@ class SolveMonitor {
   Options o_;
   State state_ = State::running;
   std::string partial_;
-  int corrections_ = 0;
+  int corrections_ = 0, converged_at_ = 0;
   std::array<double, 2> residual_{1.0, 1.0}, low_{0.0, 0.0}, high_{0.0, 0.0};
   double measure_ = 1.0;
-  double best_ = 1e300;  // the measure when it last halved, and the correction it did
+  double best_ = 1e300;  // the measure (after convergence: the case's) when it last halved, and the correction it did
   int best_at_ = 0;
   int worst_component_ = 0;
 };

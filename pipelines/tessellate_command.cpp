@@ -158,15 +158,17 @@ TessellateJob read_tessellate_job(const Config& c) {
 
 Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
   Rng rng(job.seed);
-  Tessellation t;
   try {
-    t = tessellate(job.options, rng);
+    return tessellate(job.options, rng);
   } catch (const ConfigError& e) {
     // The only option tessellate() can find unreachable is the binder fraction.
     const TessellationOptions& o = job.options;
     const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
     c.fail(key, e.what());
   }
+}
+
+void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& c) {
   // A phase without a grain is not in the microstructure at all: its properties would
   // never reach the solver. A grain has about 1 / N of the cell, so 1 / fraction grains
   // give every phase one.
@@ -179,7 +181,6 @@ Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
                std::to_string(t.stats.grains) + " grains: use at least " + to_text(needed) +
                " grains (tessellation.grains), about 50 for fractions within 1 %");
   }
-  return t;
 }
 
 std::vector<std::string> tessellation_warnings(const Tessellation& t) {
@@ -213,6 +214,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();
   const Tessellation t = run_tessellate_job(job, c);
+  check_phases_have_grains(t, job, c);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Warnings warnings;
   for (const std::string& w : tessellation_warnings(t)) warnings.add(w);

@@ -25,9 +25,12 @@ const std::vector<std::string>& tessellate_config_keys();
 // Reads and checks a tessellation config. Throws ConfigError naming the key.
 TessellateJob read_tessellate_job(const Config& config);
 
-// Tessellates with randomness from the job's seed alone. Errors name the config key; a
-// phase left without a grain is refused with the grain count that would give it one.
+// Tessellates with randomness from the job's seed alone. Errors name the config key.
 Tessellation run_tessellate_job(const TessellateJob& job, const Config& config);
+
+// Refuses (ConfigError naming its fraction) a tessellation in which a phase got no grain,
+// with the grain count that would give it one: the commands' check before meshing.
+void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& config);
 
 // What a tessellation should tell its user: phase fractions that missed their target by
 // more than 0.01.

@@ -83,10 +83,13 @@ struct CommandResult {
   std::string out, err;
 };
 
-// Runs build/grainmesh with the arguments; captures stdout and stderr.
-inline CommandResult run_grainmesh(const std::vector<std::string>& args) {
+// Runs build/grainmesh with the arguments; captures stdout and stderr. `in` (when given)
+// is the directory it runs in; `env` is put before the command (e.g. "PATH=/x:$PATH").
+inline CommandResult run_grainmesh(const std::vector<std::string>& args, const std::filesystem::path& in = {},
+                                   const std::string& env = {}) {
   ScratchDir io("io");
-  std::string cmd = shell_quote(GRAINMESH_BINARY);
+  std::string cmd = (in.empty() ? std::string() : "cd " + shell_quote(in.string()) + " && ") + env + " " +
+                    shell_quote(GRAINMESH_BINARY);
   for (const auto& a : args) cmd.append(" ").append(shell_quote(a));
   cmd.append(" >").append(shell_quote((io / "out").string())).append(" 2>").append(shell_quote((io / "err").string()));
   const int status = std::system(cmd.c_str());
