@@ -75,10 +75,10 @@ void check_run_config(const Config& c) {
 namespace {
 
 // The solved case's answer in report.json, the pictures of its fields, and warnings for a
-// modulus outside the bounds that hold for the same load.
+// modulus outside the bounds that hold for the same load (added to `warnings`).
 Json solve_run(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t, const GrainMesh& m,
                const ExportMesh& e, const FoamOptions& foam, const Deadline& deadline, int picture_width,
-               Warnings& warnings) {
+               std::vector<std::string>& warnings) {
   const Homogenised h = solve_and_homogenise(dir / "case", e, foam, deadline, staged.failed_dir() / "case");
   Json effective{{"modulus", h.modulus},
                  {"sigma_xx", h.sigma_xx},
@@ -112,7 +112,7 @@ Json solve_run(const std::filesystem::path& dir, const StagedOutput& staged, con
   auto outside = [&](double bound, const std::string& name, bool above) {
     constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
     if (above ? h.modulus <= bound * (1 + kRounding) : h.modulus >= bound * (1 - kRounding)) return;
-    warnings.add("effective.modulus " + to_text(h.modulus, 4) + " Pa lies " + (above ? "above" : "below") + " " + name +
+    warnings.push_back("effective.modulus " + to_text(h.modulus, 4) + " Pa lies " + (above ? "above" : "below") + " " + name +
                  " " + to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(h.modulus / bound - 1.0), 2) +
                  " %: a finite cell is not isotropic, and the area average of cell stresses is biased next to "
                  "phase interfaces (see README)");
@@ -228,20 +228,26 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   if (solve) {
     clock = std::chrono::steady_clock::now();
     stage("solving with solidDisplacementFoam");
+    std::vector<std::string> solve_warnings;
     try {
       report["effective"] = solve_run(dir, staged, t, m, e, foam, tess_job.options.deadline, mesh_job.picture_width,
-                                      warnings);
+                                      solve_warnings);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.
       end_stage_line();
       report["failed"] = err.what();
       report["peak_memory_mib"] = peak_memory_mib();
-      write_report(staged, report, warnings);
-      staged.keep_as_failed();
+      try {
+        write_report(staged, report, warnings);
+        staged.keep_as_failed();
+      } catch (const IoError& io) {
+        throw SolveError(std::string(err.what()) + " (but it could not be kept: " + io.what() + ")");
+      }
       throw;
     }
     solve_seconds = since(clock);
     end_stage_line();
+    for (const std::string& w : solve_warnings) warnings.add(w);
   }
   report["seconds"]["solve"] = solve_seconds;
   report["seconds"]["total"] = since(start);
