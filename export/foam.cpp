@@ -57,7 +57,7 @@ bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& o) {
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
   ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = Box{{0.0, 0.0}, {t.width, t.height}},
                .periodic = t.periodic};
-  for (const Phase& p : t.phases) e.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  e.phases = foam_phases(t.phases);
   return e;
 }
 
@@ -452,6 +452,19 @@ void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, c
   write_text(dir / "system/controlDict", control_dict(m, o, end_step));
 }
 
+double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& o) {
+  if (o.traction == 0.0) return std::abs(o.displacement) / cell.width();
+  double softest = 1e300;
+  for (const FoamPhase& p : phases) softest = std::min(softest, p.youngs_modulus);
+  return std::abs(o.traction) / softest;
+}
+
+std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases) {
+  std::vector<FoamPhase> out;
+  for (const Phase& p : phases) out.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  return out;
+}
+
 std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
                                     const FoamOptions& o) {
   if (!(o.convert_to_meters > 0.0) || !std::isfinite(o.convert_to_meters))
@@ -474,20 +487,15 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
     throw ConfigError("export.convert_to_meters: the cell is " + in_metres +
                       ", below 1 nm: are the lengths in metres? then set export.convert_to_meters = 1");
   // Linear elasticity is a small-strain theory: a mean strain above 1 % is a slip too.
-  if (o.traction == 0.0) {
-    if (o.displacement == 0.0) throw ConfigError("load.displacement: is 0, which loads nothing");
-    const double strain = std::abs(o.displacement) / cell.width();
-    if (strain > 0.01)
-      throw ConfigError("load.displacement: " + to_text(o.displacement) + " over a cell " + to_text(cell.width()) +
-                        " wide is a mean strain of " + to_text(strain, 3) +
-                        ", above 1 % (linear elasticity is for small strains): give it in the mesh's units, like the cell");
-  } else {
-    double softest = 1e300;
-    for (const FoamPhase& p : phases) softest = std::min(softest, p.youngs_modulus);
-    if (std::abs(o.traction) > 0.01 * softest)
-      throw ConfigError("load.traction: " + to_text(o.traction) + " Pa is above 1 % of the softest phase's E (" +
-                        to_text(softest) + " Pa): strains beyond linear elasticity");
-  }
+  if (o.traction == 0.0 && o.displacement == 0.0) throw ConfigError("load.displacement: is 0, which loads nothing");
+  const double strain = load_strain(cell, phases, o);
+  if (strain > 0.01 && o.traction == 0.0)
+    throw ConfigError("load.displacement: " + to_text(o.displacement) + " over a cell " + to_text(cell.width()) +
+                      " wide is a mean strain of " + to_text(strain, 3) +
+                      ", above 1 % (linear elasticity is for small strains): give it in the mesh's units, like the cell");
+  if (strain > 0.01)
+    throw ConfigError("load.traction: " + to_text(o.traction) + " Pa is above 1 % of the softest phase's E (" +
+                      to_text(std::abs(o.traction) / strain) + " Pa): strains beyond linear elasticity");
   std::vector<std::string> warnings;
   if (metres > 1.0)
     warnings.push_back("the cell is " + in_metres +

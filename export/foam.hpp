@@ -98,6 +98,13 @@ ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
 double stiffness_contrast(const ExportMesh& m, const FoamOptions& options);
 bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& options);
 
+// The phases' elastic constants as the case carries them.
+std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);
+
+// The mean strain a load gives the cell, at most: |displacement| / width, or |traction|
+// over the softest phase's E.
+double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& options);
+
 // Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
 // on a periodic cell (and with a displacement load), a cell of at least 1 nm in metres, a
 // mean strain (displacement / width, or traction / the softest E) of at most 1 %, and a

@@ -130,10 +130,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // OpenFOAM's programs need it
 
   // A thousand times the displacement the load can give is divergence, not an answer.
-  double softest = 1e300;
-  for (const FoamPhase& p : m.phases) softest = std::min(softest, p.youngs_modulus);
-  const double size = std::max(m.cell.width(), m.cell.height());
-  const double load_scale = o.traction != 0.0 ? std::abs(o.traction) / softest * size : std::abs(o.displacement);
+  const double load_scale = load_strain(m.cell, m.phases, o) * std::max(m.cell.width(), m.cell.height());
   const CaseStop stop = case_stop(m, o);
   const SolveMonitor::Options watch{.tolerance = kSolverTolerance,
                                     .stall_corrections = 500,

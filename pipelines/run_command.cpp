@@ -138,13 +138,10 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   if (solve && foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   Warnings warnings;
-  {
-    const TessellationOptions& to = tess_job.options;
-    std::vector<FoamPhase> phases;
-    for (const Phase& p : to.phases) phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
-    for (const std::string& w : check_load(Box{{0.0, 0.0}, {to.width, to.height}}, to.periodic, phases, foam))
-      warnings.add(w);
-  }
+  const TessellationOptions& to = tess_job.options;
+  for (const std::string& w :
+       check_load(Box{{0.0, 0.0}, {to.width, to.height}}, to.periodic, foam_phases(to.phases), foam))
+    warnings.add(w);
   const auto start = std::chrono::steady_clock::now();
   // The stage on one line of a terminal, rewritten in place (at most ten times a second).
   const bool show = !quiet && isatty(STDERR_FILENO) != 0;
