@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "common/errors.hpp"
-#include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
@@ -172,9 +171,9 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
   for (double a : region_area) region_fraction.push_back(a / area);
 
   Warnings warnings;
-  if (quality.q_min < kPoorQuality)
-    warnings.add("mesh: q_min " + to_text(quality.q_min, 3) + " is below " + to_text(kPoorQuality) +
-                 ": look at mesh.png; a size function that jumps (size.gradient) or a sharp corner causes it");
+  if (const auto w = poor_quality_warning(quality, mesh.triangles.size(),
+                                          "a size function that jumps (size.gradient) or sharp corners"))
+    warnings.add(*w);
   if (!result.stats.converged)
     warnings.add("mesh: the force iterations stopped (" + result.stats.stop_reason +
                  ") before the points settled (the mesh is valid; see distmesh.max_iterations)");

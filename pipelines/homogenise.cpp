@@ -144,7 +144,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
     return run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam",
                      [&](std::string_view text) {
                        const SolveMonitor::State s = monitor.feed(text);
-                       return s == SolveMonitor::State::running || s == SolveMonitor::State::converged ? 0 : SIGKILL;
+                       return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
                      });
   };
   SolveMonitor monitor(watch);

@@ -100,13 +100,19 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   return job;
 }
 
+std::optional<std::string> poor_quality_warning(const MeshQuality& q, std::size_t triangles, const std::string& causes) {
+  if (!(q.q_min < kPoorQuality)) return std::nullopt;
+  return "mesh: q_min " + to_text(q.q_min, 3) + " is below " + to_text(kPoorQuality) + " (" +
+         std::to_string(std::lround(q.q_below_half * static_cast<double>(triangles))) +
+         " triangles below 0.5): look at mesh.png; " + causes + " cause it";
+}
+
 std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q, const GrainMeshOptions& o) {
   std::vector<std::string> warnings;
-  if (q.q_min < kPoorQuality)
-    warnings.push_back("mesh: q_min " + to_text(q.q_min, 3) + " is below " + to_text(kPoorQuality) + " (" +
-                       std::to_string(std::lround(q.q_below_half * static_cast<double>(m.mesh.triangles.size()))) +
-                       " triangles below 0.5): look at mesh.png; sharp grain corners (tessellation.lloyd_iterations >= 3) or "
-                       "size jumps (mesh.gradient) cause it");
+  if (const auto w = poor_quality_warning(q, m.mesh.triangles.size(),
+                                          "sharp grain corners (tessellation.lloyd_iterations >= 3) or size jumps "
+                                          "(mesh.gradient)"))
+    warnings.push_back(*w);
   if (m.unconverged_regions > 0)
     warnings.push_back("mesh: " + std::to_string(m.unconverged_regions) +
                        (m.unconverged_regions == 1 ? " region" : " regions") + " stopped at mesh.max_iterations = " +

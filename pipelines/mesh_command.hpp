@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ Tessellation read_tessellation_file(const std::filesystem::path& file);
 
 // Below this worst triangle quality a mesh is reported as poor (q = 1 equilateral).
 inline constexpr double kPoorQuality = 0.5;
+
+// "mesh: q_min ... is below 0.5 (N triangles below 0.5): look at mesh.png; CAUSES cause
+// it" when the worst triangle is poor; any mesh's (domain's too).
+std::optional<std::string> poor_quality_warning(const MeshQuality& q, std::size_t triangles, const std::string& causes);
 
 // What a mesh should tell its user: q_min below kPoorQuality, regions that stopped at the
 // iteration limit.

@@ -63,14 +63,20 @@ std::vector<std::string> entry_names(const fs::path& dir) {
   return names;
 }
 
-void check_output_replaceable(const fs::path& final_dir, const std::string& kind) {
+bool occupied_directory(const fs::path& dir) {
   std::error_code ec;
-  if (!fs::exists(final_dir, ec)) return;
+  if (!fs::exists(dir, ec)) return false;
+  const std::string where = absolute_path(dir).string();
+  if (!fs::is_directory(dir, ec)) throw IoError(where + ": exists and is not a directory");
+  if (holds_current_directory(dir))
+    throw IoError(where + ": is the current directory or holds it; refusing to write into it (give a new directory)");
+  return !fs::is_empty(dir, ec);
+}
+
+void check_output_replaceable(const fs::path& final_dir, const std::string& kind) {
+  if (!occupied_directory(final_dir)) return;
+  std::error_code ec;
   const std::string where = absolute_path(final_dir).string();
-  if (!fs::is_directory(final_dir, ec)) throw IoError(where + ": exists and is not a directory");
-  if (holds_current_directory(final_dir))
-    throw IoError(where + ": is the current directory or holds it; refusing to replace it (give a new directory)");
-  if (fs::is_empty(final_dir, ec)) return;
   if (!fs::exists(final_dir / "report.json", ec))
     throw IoError(where + ": exists and is not a grainmesh output (no report.json); refusing to replace it");
   nlohmann::json report;
@@ -79,14 +85,14 @@ void check_output_replaceable(const fs::path& final_dir, const std::string& kind
   } catch (const nlohmann::json::exception&) {
     throw IoError(where + ": its report.json is damaged; refusing to replace it");
   }
-  const auto command = report.is_object() ? report.find("command") : report.end();
+  const auto command = report.is_object() ? report.find(kReportCommand) : report.end();
   if (command == report.end() || !command->is_string() || *command != kind)
     throw IoError(where + ": is not the output of grainmesh " + kind +
                   (command != report.end() && command->is_string() ? " but of grainmesh " + command->get<std::string>()
                                                                    : std::string()) +
                   "; refusing to replace it");
   std::set<std::string> written;
-  const auto files = report.find("files");
+  const auto files = report.find(kReportFiles);
   if (files == report.end() || !files->is_array())
     throw IoError(where + ": was written by an earlier grainmesh, whose report.json lists no files; remove it yourself "
                           "to replace it");

@@ -49,13 +49,12 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   close(out);
   // Everything the child has written since the last look, to the watcher.
   std::string chunk(1 << 16, '\0');
-  auto follow = [&]() -> int {
-    if (!watch || in < 0) return 0;
-    int signal = 0;
+  auto follow = [&] {
+    bool stop = false;
     ssize_t n;
-    while ((n = read(in, chunk.data(), chunk.size())) > 0)
-      if (const int s = watch(std::string_view(chunk.data(), static_cast<std::size_t>(n))); s != 0) signal = s;
-    return signal;
+    while (watch && in >= 0 && (n = read(in, chunk.data(), chunk.size())) > 0)
+      stop = watch(std::string_view(chunk.data(), static_cast<std::size_t>(n))) || stop;
+    return stop;
   };
   int status = 0;
   bool killed = false;
@@ -73,9 +72,9 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
       if (in >= 0) close(in);
       deadline.check("while " + what + " ran (it was stopped)");
     }
-    if (const int s = follow(); s != 0 && !killed) {
-      kill(pid, s);
-      killed = s == SIGKILL;
+    if (follow() && !killed) {
+      kill(pid, SIGKILL);
+      killed = true;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

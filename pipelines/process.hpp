@@ -19,9 +19,9 @@ namespace grainmesh {
 // already gone.
 void die_with_parent(pid_t parent);
 
-// Reads what a child has added to its log since the last call (a few times a second) and
-// returns a signal to send it (SIGKILL ends it), or 0.
-using LogWatcher = std::function<int(std::string_view appended)>;
+// Reads what a child has added to its log since the last call (a few times a second);
+// true ends the child (SIGKILL).
+using LogWatcher = std::function<bool(std::string_view appended)>;
 
 // Runs `argv` (looked up in PATH) in directory `dir`, stdout and stderr into `log`, and
 // waits for it; `watch`, when given, follows the log as it grows. Kills it when

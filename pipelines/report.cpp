@@ -35,14 +35,14 @@ void Warnings::add(const std::string& warning) {
 }
 
 void write_report(const StagedOutput& out, Json report, const Warnings& warnings) {
-  Json ordered{{"command", out.kind()}};
+  Json ordered{{kReportCommand, out.kind()}};
   for (auto& [key, value] : report.items())
-    if (key != "command") ordered[key] = std::move(value);
+    if (key != kReportCommand) ordered[key] = std::move(value);
   ordered["warnings"] = warnings.all();
   std::vector<std::string> files = entry_names(out.dir());
   files.push_back("report.json");
   std::sort(files.begin(), files.end());
-  ordered["files"] = files;
+  ordered[kReportFiles] = files;
   write_json(out.dir() / "report.json", ordered);
 }
 

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <map>
 
+#include "common/errors.hpp"
+#include "common/format.hpp"
 #include "export/foam.hpp"
 #include "export/picture.hpp"
 #include "mesh/quality.hpp"
@@ -17,8 +19,6 @@
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/tessellate_command.hpp"
-#include "common/errors.hpp"
-#include "common/format.hpp"
 #include "tessellate/tessellation_json.hpp"
 
 namespace grainmesh {

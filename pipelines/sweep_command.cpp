@@ -95,13 +95,8 @@ bool sweep_entry(const std::string& name) {
 // A sweep writes into DIR only when DIR is new, empty, or an earlier sweep's directory
 // holding nothing else; never the current directory. Throws IoError naming why.
 void check_sweep_dir(const std::filesystem::path& dir) {
-  std::error_code ec;
-  if (!std::filesystem::exists(dir, ec)) return;
+  if (!occupied_directory(dir)) return;
   const std::string where = std::filesystem::absolute(dir).lexically_normal().string();
-  if (!std::filesystem::is_directory(dir, ec)) throw IoError(where + ": exists and is not a directory");
-  if (holds_current_directory(dir))
-    throw IoError(where + ": is the current directory or holds it; give the sweep a directory of its own");
-  if (std::filesystem::is_empty(dir, ec)) return;
   bool ours = false;
   try {
     ours = read_json(dir / "plan.json").value("format", "") == "grainmesh-sweep";
