@@ -16,7 +16,7 @@
 #include "export/foam.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/export_command.hpp"
-#include "pipelines/homogenise.hpp"
+#include "analysis/homogenise.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"
 #include "pipelines/tessellate_command.hpp"

@@ -419,33 +419,48 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step
          "runTimeModifiable false;\n\n"
          "functions\n{\n" + range +
          "    // Stop once the displacement equation's initial residual is below the tolerance" +
-         (stop.x_alone ? ";\n    // x alone (at a hundredth of it): one material keeps y exactly zero, and y's residual is noise"
-                       : "") +
+         (stop.alone >= 0 ? ";\n    // the loaded component alone (at a hundredth of it): one material keeps the other exactly\n"
+                            "    // zero, and its residual is noise"
+                          : "") +
          ".\n    converged\n    {\n        type            runTimeControl;\n        libs            (utilityFunctionObjects);\n"
          "        conditions\n        {\n            residual\n            {\n"
          "                type    equationInitialResidual;\n                fields  (" +
-         (stop.x_alone ? "D.component(0)" : "D") + ");\n"
+         (stop.alone >= 0 ? "D.component(" + std::to_string(stop.alone) + ")" : std::string("D")) + ");\n"
          "                value   " + number_text(stop.tolerance) + ";\n                mode    minimum;\n"
          "            }\n        }\n    }\n" +
          "    // The stress (sigmaD; rho is 1, so it is sigma) whenever the fields are written, also\n"
          "    // when runTimeControl stops the run, where the solver itself writes no sigma.\n"
          "    stress\n    {\n        type            writeObjects;\n        libs            (utilityFunctionObjects);\n"
-         "        objects         (" + std::string(kStressField) + ");\n        writeOption     anyWrite;\n        writeControl    writeTime;\n    }\n}\n";
+         "        objects         (" + std::string(kStressField) + ");\n        writeOption     anyWrite;\n        writeControl    writeTime;\n    }\n" +
+         (o.cyclic ? "    // grad(D) where the fields are written: with D and sigmaD it gives the force through the\n"
+                     "    // cyclic faces, where OpenFOAM writes no face values (grainmesh's homogenisation).\n"
+                     "    gradient\n    {\n        type            grad;\n        libs            (fieldFunctionObjects);\n"
+                     "        field           D;\n        executeControl  writeTime;\n        writeControl    writeTime;\n    }\n"
+                   : "") +
+         "}\n";
 }
 
 }  // namespace
 
+std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& o) {
+  if (o.strain != std::array<double, 3>{}) return o.strain;
+  return {o.displacement / m.cell.width(), 0.0, 0.0};
+}
+
 CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
-  // One material under a load that keeps the mean transverse strain zero: y is exactly
-  // zero and its residual noise. Its error follows x's (y's range stays about ten times
-  // x's residual, measured), so x alone at a hundredth of the tolerance also meets the
-  // scale-aware criterion.
+  // One material under a load that moves it along one axis only: the other component is
+  // exactly zero and its residual noise. Its error follows the loaded one's (its range
+  // stays about ten times that one's residual, measured), so the loaded one alone at a
+  // hundredth of the tolerance also meets the scale-aware criterion.
   bool one_material = true;
   for (const FoamPhase& p : m.phases)
     one_material = one_material && p.youngs_modulus == m.phases.front().youngs_modulus &&
                    p.poisson_ratio == m.phases.front().poisson_ratio;
-  if (one_material && !o.uniaxial) return {.x_alone = true, .tolerance = 0.01 * kSolverTolerance};
-  return {.x_alone = false, .tolerance = kSolverTolerance};
+  if (!one_material) return {};
+  if (!o.cyclic) return o.uniaxial ? CaseStop{} : CaseStop{.alone = 0, .tolerance = 0.01 * kSolverTolerance};
+  const std::array<double, 3> e = cyclic_strain(m, o);
+  if (e[2] != 0.0 || (e[0] != 0.0 && e[1] != 0.0)) return {};
+  return {.alone = e[0] != 0.0 ? 0 : 1, .tolerance = 0.01 * kSolverTolerance};
 }
 
 void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o, int end_step) {
@@ -453,6 +468,8 @@ void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, c
 }
 
 double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& o) {
+  if (o.cyclic && o.strain != std::array<double, 3>{})
+    return std::max({std::abs(o.strain[0]), std::abs(o.strain[1]), std::abs(o.strain[2])});
   if (o.traction == 0.0) return std::abs(o.displacement) / cell.width();
   double softest = 1e300;
   for (const FoamPhase& p : phases) softest = std::min(softest, p.youngs_modulus);
@@ -503,7 +520,7 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
   return warnings;
 }
 
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
   for (const FoamPhase& p : m.phases) {
     if (!(p.youngs_modulus > 0.0) || !std::isfinite(p.youngs_modulus))
       throw ConfigError("phase." + p.name + ".E: must be positive, got " + to_text(p.youngs_modulus));
@@ -537,11 +554,17 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
   D += "dimensions      [0 1 0 0 0 0 0];\n\ninternalField   uniform (0 0 0);\n\nboundaryField\n{\n";
   for (const PolyMesh::Patch& p : pm.patches) {
     std::string entry = constraint_entry(p);
-    if (p.type == "cyclic" && (p.name == "left" || p.name == "right")) {
-      // Periodic: the displacement jumps by the load across the left/right pair (given on
-      // the first patch of the pair), so the mean strain is displacement / width.
+    const std::array<double, 3> e = o.cyclic ? cyclic_strain(m, o) : std::array<double, 3>{};
+    const bool x_pair = p.name == "left" || p.name == "right";
+    const double L = (x_pair ? m.cell.width() : m.cell.height()) * o.convert_to_meters;
+    const double jump_x = (x_pair ? e[0] : e[2]) * L, jump_y = (x_pair ? e[2] : e[1]) * L;
+    if (p.type == "cyclic" && (jump_x != 0.0 || jump_y != 0.0)) {
+      // Periodic: D jumps across the pair by the macroscopic strain times the separation
+      // (given on the low patch of the pair), so the mean strain is the one imposed.
+      const bool low = p.name == "left" || p.name == "bottom";
       entry = "type            fixedJump;\n        patchType       cyclic;\n" +
-              (p.name == "left" ? "        jump            uniform (" + d + " 0 0);\n" : std::string()) +
+              (low ? "        jump            uniform (" + number_text(jump_x) + " " + number_text(jump_y) + " 0);\n"
+                   : std::string()) +
               "        value           uniform (0 0 0);";
     } else if (entry.empty() && p.name == "right" && o.traction != 0.0) {
       entry = "type            tractionDisplacement;\n        traction        uniform (" + number_text(o.traction) +
@@ -598,6 +621,7 @@ void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, cons
                                                    std::filesystem::perms::others_exec,
                                std::filesystem::perm_options::add);
   write_text(dir / "case.foam", "");
+  return pm;
 }
 
 }  // namespace grainmesh

@@ -3,6 +3,7 @@
 // solidDisplacementFoam (OpenFOAM v1912) runs as it is: two-phase linear elasticity.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ inline constexpr int kMaxCorrections = 20000;
 // The field every solved case holds the stress in, however it stopped: solidDisplacementFoam's
 // sigmaD (the stress over rho, and rho is 1), written by the case's writeObjects.
 inline constexpr const char* kStressField = "sigmaD";
+// The displacement gradient a cyclic case writes beside it (grad(D), by a grad function object).
+inline constexpr const char* kGradientField = "grad(D)";
 
 struct FoamPhase {
   std::string name;
@@ -45,7 +48,11 @@ struct FoamOptions {
   double thickness = 0.0;          // extrusion, mesh units; 0 = the mean edge length
   double convert_to_meters = 1e-6; // mesh units to metres (config lengths in micrometres)
   bool cyclic = false;             // periodic meshes: left/right and bottom/top as cyclic pairs,
-                                   // the load a displacement jump across left/right
+                                   // the load a displacement jump across them (cyclic_strain)
+  // A cyclic case's macroscopic strain (xx, yy, xy: tensor components), imposed as the
+  // jump of D across each pair, strain times the pair's separation; all zero: the load's
+  // displacement / width along x alone.
+  std::array<double, 3> strain{};
   bool binary = false;             // binary polyMesh and fields instead of ASCII
   bool grain_zones = false;        // a cellZone per grain besides one per phase
   // The load: a normal displacement of `right` (mesh units; the thesis' 0.001 um) or a
@@ -101,8 +108,8 @@ bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& options);
 // The phases' elastic constants as the case carries them.
 std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);
 
-// The mean strain a load gives the cell, at most: |displacement| / width, or |traction|
-// over the softest phase's E.
+// The mean strain a load gives the cell, at most: |displacement| / width, |traction|
+// over the softest phase's E, or the largest component of a cyclic case's strain.
 double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& options);
 
 // Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
@@ -112,11 +119,15 @@ double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const 
 std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
                                     const FoamOptions& options);
 
+// The macroscopic strain (xx, yy, xy) a cyclic case imposes (FoamOptions::strain).
+std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& options);
+
 // The case's own stop (runTimeControl): OpenFOAM's initial residual of D below
-// `tolerance`, of its x component alone when the exact y displacement is zero (one
-// material under a load that keeps the mean transverse strain zero).
+// `tolerance`, of one component alone when the other's exact solution is zero (one
+// material under a load that moves it along one axis only: the default load, or a cyclic
+// case's normal strain).
 struct CaseStop {
-  bool x_alone = false;
+  int alone = -1;  // the component watched alone (0 x, 1 y); -1 both
   double tolerance = kSolverTolerance;
 };
 CaseStop case_stop(const ExportMesh& m, const FoamOptions& options);
@@ -135,7 +146,7 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
 // (points, faces, owner, neighbour, boundary, cellZones, faceZones), 0/D, 0/E, 0/nu,
 // constant/mechanicalProperties and thermalProperties, system/controlDict, fvSchemes,
 // fvSolution, Allrun and an empty case.foam. Throws ConfigError for a phase without a
-// usable E or nu, IoError when a file cannot be written.
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options);
+// usable E or nu, IoError when a file cannot be written. Returns the mesh it wrote.
+PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options);
 
 }  // namespace grainmesh

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "common/text_file.hpp"
+
 namespace grainmesh {
 
 class StagedOutput {
@@ -64,11 +66,5 @@ bool occupied_directory(const std::filesystem::path& dir);
 
 // The names directly inside `dir`, sorted.
 std::vector<std::string> entry_names(const std::filesystem::path& dir);
-
-// The whole of `file`; IoError "FILE: cannot open WHAT" when it cannot be read.
-std::string read_text_file(const std::filesystem::path& file, const std::string& what = "file");
-
-// Writes `text` to `file` through a temporary file and a rename. Throws IoError.
-void write_text_file(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace grainmesh

@@ -6,7 +6,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <thread>
 
+#include "analysis/foam_fields.hpp"
+#include "analysis/homogenise.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam.hpp"
@@ -14,7 +18,6 @@
 #include "mesh/quality.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
-#include "pipelines/homogenise.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
@@ -31,8 +34,21 @@ double since(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
+const std::vector<std::string>& homogenise_config_keys() {
+  static const std::vector<std::string> keys{"homogenise.boundary"};
+  return keys;
+}
+
+Boundary read_boundary(const Config& c) {
+  const std::string b = c.has("homogenise.boundary") ? c.text("homogenise.boundary") : "mixed";
+  if (b == "mixed") return Boundary::mixed;
+  if (b == "periodic") return Boundary::periodic;
+  c.fail("homogenise.boundary", "must be mixed or periodic, got '" + b + "'");
+}
+
 std::vector<std::string> run_config_keys() {
   std::vector<std::string> keys = tessellate_config_keys();
+  for (const auto& k : homogenise_config_keys()) keys.push_back(k);
   for (const auto& k : mesh_config_keys()) keys.push_back(k);
   for (const auto& k : export_config_keys()) keys.push_back(k);
   return keys;
@@ -66,62 +82,175 @@ std::string config_fingerprint(const Config& c) {
   return hex;
 }
 
+FoamOptions read_run_foam_options(const Config& c) {
+  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  if (read_boundary(c) != Boundary::periodic) return o;
+  if (!c.flag("domain.periodic", false))
+    c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+  for (const char* key : {"load.traction", "load.uniaxial"})
+    if (c.has(key))
+      c.fail(key, "not with homogenise.boundary = periodic, whose load cases are macroscopic strains (of "
+                  "load.displacement / width)");
+  if (c.has("export.cyclic") && !o.cyclic)
+    c.fail("export.cyclic", "homogenise.boundary = periodic needs the cyclic pairs; remove export.cyclic = false");
+  o.cyclic = true;
+  return o;
+}
+
 void check_run_config(const Config& c) {
   c.check_keys(run_config_keys());
   read_tessellate_job(c.subset(tessellate_config_keys()));
-  read_foam_options(c.subset(export_config_keys()));
+  read_run_foam_options(c);
 }
 
 namespace {
 
-// The solved case's answer in report.json, the pictures of its fields, and warnings for a
-// modulus outside the bounds that hold for the same load (added to `warnings`).
-Json solve_run(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t, const GrainMesh& m,
-               const ExportMesh& e, const FoamOptions& foam, const Deadline& deadline, int picture_width,
-               std::vector<std::string>& warnings) {
-  const Homogenised h = solve_and_homogenise(dir / "case", e, foam, deadline, staged.failed_dir() / "case");
-  Json effective{{"modulus", h.modulus},
-                 {"sigma_xx", h.sigma_xx},
-                 {"sigma_yy", h.sigma_yy},
-                 {"sigma_xy", h.sigma_xy},
-                 {"strain_xx", h.strain_xx},
-                 {"corrections", h.corrections},
-                 {"final_residual", h.final_residual},
-                 {"component_residuals", h.component_residuals},
-                 {"result", std::filesystem::relative(h.result_dir, dir).string()}};
-  // Pictures of the solution over the cells, grain boundaries drawn (the thesis' 3.14-3.15).
-  const std::vector<CellStress> sigma = read_cell_stress(h.result_dir / kStressField);
+// Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
+// 3.14-3.15).
+void write_field_pictures(const std::filesystem::path& dir, const std::filesystem::path& result_dir, const GrainMesh& m,
+                          int picture_width) {
+  const std::size_t cells = m.mesh.triangles.size();
+  const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, cells);
   std::vector<double> sxx, syy, sxy;
   for (const CellStress& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
   const std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
       {"stress_xx.png", {sxx, "sigma_xx (Pa)"}},
       {"stress_yy.png", {syy, "sigma_yy (Pa)"}},
       {"stress_xy.png", {sxy, "tau_xy (Pa)"}},
-      {"displacement.png", {read_cell_displacement(h.result_dir / "D"), "|D| (m)"}}};
+      {"displacement.png", {read_cell_displacement(result_dir / "D", cells), "|D| (m)"}}};
   for (const auto& [name, field] : pictures)
     write_mesh_png(dir / name, m.mesh,
                    {.width_px = picture_width, .outline_by = {}, .view = {}, .field = field.first,
                     .field_name = field.second});
-  if (foam.uniaxial) return effective;  // the bounds are for the default load (mean eps_yy zero)
+}
+
+Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
+  return {{"corrections", r.corrections},
+          {"final_residual", r.final_residual},
+          {"component_residuals", r.component_residuals},
+          {"result", std::filesystem::relative(r.result_dir, dir).string()}};
+}
+
+// A bound broken by `value`, as a warning (nothing when it holds, to rounding).
+constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
+std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
+                                   bool above) {
+  if (above ? value <= bound * (1 + kRounding) : value >= bound * (1 - kRounding)) return std::nullopt;
+  return what + " " + to_text(value, 4) + " Pa lies " + (above ? "above" : "below") + " " + name + " " +
+         to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(value / bound - 1.0), 2) + " %";
+}
+
+std::vector<double> achieved_fractions(const Tessellation& t) {
   std::vector<double> fractions;
   for (const PhaseStats& p : t.stats.phases) fractions.push_back(p.achieved_fraction);
-  const ElasticBounds b = elastic_bounds(e.phases, fractions, foam.plane_stress);
+  return fractions;
+}
+
+// The mixed (thesis) load's answer in report.json, with the bounds that hold for it;
+// a broken bound is added to `warnings`.
+// The case directory of a periodic load case: case_xx, case_yy, case_xy.
+std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
+
+Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
+                      const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
+                      const Deadline& deadline, int picture_width, std::vector<std::string>& warnings) {
+  const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
+  Json effective = solve_json(h.run, dir);
+  effective["boundary"] = "mixed";
+  effective["modulus"] = h.modulus;
+  effective["sigma_xx"] = h.sigma_xx;
+  effective["strain_xx"] = h.strain_xx;
+  effective["volume_average"] = {{"modulus", h.volume_average_modulus},
+                                 {"sigma_xx", h.volume_average.xx},
+                                 {"sigma_yy", h.volume_average.yy},
+                                 {"sigma_xy", h.volume_average.xy}};
+  write_field_pictures(dir, h.run.result_dir, m, picture_width);
+  if (foam.uniaxial) return effective;  // the bounds are for the default load (mean eps_yy zero)
+  const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
   effective["reuss"] = b.reuss;
   if (b.hs_lower) effective["hashin_shtrikman"] = {{"lower", *b.hs_lower}, {"upper", *b.hs_upper}};
-  auto outside = [&](double bound, const std::string& name, bool above) {
-    constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
-    if (above ? h.modulus <= bound * (1 + kRounding) : h.modulus >= bound * (1 - kRounding)) return;
-    warnings.push_back("effective.modulus " + to_text(h.modulus, 4) + " Pa lies " + (above ? "above" : "below") + " " + name +
-                 " " + to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(h.modulus / bound - 1.0), 2) +
-                 " %: a finite cell is not isotropic, and the area average of cell stresses is biased next to "
-                 "phase interfaces (see README)");
-  };
-  // Voigt and Reuss hold for every microstructure; Hashin-Shtrikman for isotropic ones.
-  outside(b.voigt, "the Voigt bound", true);
-  outside(b.reuss, "the Reuss bound", false);
-  if (b.hs_upper && h.modulus <= b.voigt) outside(*b.hs_upper, "the Hashin-Shtrikman upper bound", true);
-  if (b.hs_lower && h.modulus >= b.reuss) outside(*b.hs_lower, "the Hashin-Shtrikman lower bound", false);
+  // Voigt and Reuss hold for every microstructure; Hashin-Shtrikman for isotropic ones
+  // (a finite cell is not quite).
+  std::vector<std::optional<std::string>> broken{outside("effective.modulus", h.modulus, b.voigt, "the Voigt bound", true),
+                                                 outside("effective.modulus", h.modulus, b.reuss, "the Reuss bound", false)};
+  effective["inside_bounds"]["voigt_reuss"] = !broken[0] && !broken[1];
+  if (b.hs_upper) {
+    broken.push_back(outside("effective.modulus", h.modulus, *b.hs_upper, "the Hashin-Shtrikman upper bound", true));
+    broken.push_back(outside("effective.modulus", h.modulus, *b.hs_lower, "the Hashin-Shtrikman lower bound", false));
+    effective["inside_bounds"]["hashin_shtrikman"] = !broken[2] && !broken[3];
+  }
+  for (const auto& w : broken)
+    if (w) warnings.push_back(*w + " (a finite cell is not isotropic; see README, Homogenisation)");
+  return effective;
+}
+
+Json stiffness_json(const Stiffness& c) {
+  return {{"C11", c[0][0]}, {"C22", c[1][1]}, {"C12", c[0][1]}, {"C21", c[1][0]}, {"C66", c[2][2]},
+          {"C16", c[0][2]}, {"C26", c[1][2]}, {"C61", c[2][0]}, {"C62", c[2][1]}};
+}
+
+// The periodic load cases' answer in report.json: the stiffness tensor, its engineering
+// constants, and the bounds; a broken bound is added to `warnings`.
+Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
+                         const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
+                         const Deadline& deadline, int picture_width, std::vector<std::string>& warnings) {
+  std::array<std::filesystem::path, 3> dirs, shown;
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = periodic_case_dir(periodic_load_cases(1.0)[k]);
+    dirs[k] = dir / name;
+    shown[k] = staged.failed_dir() / name;
+  }
+  const int parallel = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
+  const Stiffness& C = h.stiffness;
+  const EngineeringConstants ec = engineering_constants(C);
+  Json effective{{"boundary", "periodic"},
+                 {"stiffness", stiffness_json(C)},
+                 {"engineering", {{"E_x", ec.E_x}, {"E_y", ec.E_y}, {"nu_xy", ec.nu_xy}, {"nu_yx", ec.nu_yx}, {"G_xy", ec.G_xy}}},
+                 {"anisotropy", {{"normal", ec.anisotropy_normal}, {"shear", ec.anisotropy_shear}}},
+                 {"symmetry_error", std::abs(C[0][1] - C[1][0]) / C[0][0]},
+                 {"bulk_modulus", bulk_modulus(C)},
+                 {"shear_modulus", shear_modulus(C)},
+                 {"volume_average", {{"stiffness", stiffness_json(h.volume_average_stiffness)}}}};
+  Json cases = Json::array();
+  int corrections = 0;
+  for (const LoadCaseResult& r : h.cases) {
+    Json c = solve_json(r.run, dir);
+    c["name"] = r.load.name;
+    c["strain"] = {{"xx", r.load.strain[0]}, {"yy", r.load.strain[1]}, {"xy", r.load.strain[2]}};
+    c["stress"] = {{"xx", r.stress.xx}, {"yy", r.stress.yy}, {"xy", r.stress.xy}};
+    cases.push_back(c);
+    corrections = std::max(corrections, r.run.corrections);
+  }
+  effective["load_cases"] = cases;
+  effective["corrections"] = corrections;
+  write_field_pictures(dir, h.cases[0].run.result_dir, m, picture_width);
+
+  const TensorBounds b = tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
+  effective["voigt"] = stiffness_json(b.voigt);
+  effective["reuss"] = stiffness_json(b.reuss);
+  const bool voigt_reuss = semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt);
+  effective["inside_bounds"]["voigt_reuss"] = voigt_reuss;
+  if (!voigt_reuss)
+    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
+                       "order): check the solve (see README, Homogenisation)");
+  if (b.bulk_upper) {
+    effective["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower}, {"bulk_upper", *b.bulk_upper},
+                                     {"shear_lower", *b.shear_lower}, {"shear_upper", *b.shear_upper}};
+    const std::vector<std::optional<std::string>> broken{
+        outside("effective.bulk_modulus", bulk_modulus(C), *b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
+        outside("effective.bulk_modulus", bulk_modulus(C), *b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
+        outside("effective.shear_modulus", shear_modulus(C), *b.shear_upper, "the Hashin-Shtrikman upper bound", true),
+        outside("effective.shear_modulus", shear_modulus(C), *b.shear_lower, "the Hashin-Shtrikman lower bound", false)};
+    bool inside = true;
+    for (const auto& w : broken)
+      if (w) {
+        inside = false;
+        warnings.push_back(*w + " (a finite cell is not isotropic; see README, Homogenisation)");
+      }
+    effective["inside_bounds"]["hashin_shtrikman"] = inside;
+  }
   return effective;
 }
 
@@ -134,7 +263,8 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const Config tess_config = c.subset(tessellate_config_keys());
   const Config mesh_config = c.subset(mesh_config_keys());
   const TessellateJob tess_job = read_tessellate_job(tess_config);
-  const FoamOptions foam = read_foam_options(c.subset(export_config_keys()));
+  const FoamOptions foam = read_run_foam_options(c);
+  const Boundary boundary = read_boundary(c);
   if (solve && foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   Warnings warnings;
@@ -190,8 +320,22 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   clock = std::chrono::steady_clock::now();
   stage("exporting");
   const ExportMesh e = grain_export_mesh(t, m);
-  std::filesystem::create_directories(dir / "case");
-  write_foam_case(dir / "case", e, foam);
+  // The mixed load in case/; the periodic load cases each in their own case_NAME/.
+  std::vector<std::string> case_dirs;
+  PolyMesh pm;
+  if (boundary == Boundary::mixed) {
+    case_dirs.push_back("case");
+    std::filesystem::create_directories(dir / "case");
+    pm = write_foam_case(dir / "case", e, foam);
+  } else {
+    for (const LoadCase& lc : periodic_load_cases(load_strain(e.cell, e.phases, foam))) {
+      FoamOptions o = foam;
+      o.strain = lc.strain;
+      case_dirs.push_back(periodic_case_dir(lc));
+      std::filesystem::create_directories(dir / case_dirs.back());
+      pm = write_foam_case(dir / case_dirs.back(), e, o);
+    }
+  }
   const double export_seconds = since(clock);
   write_text_file(dir / "config.ini", config_ini(c));
 
@@ -217,7 +361,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                 {"unconverged_regions", m.unconverged_regions}}},
               {"seconds",
                {{"tessellate", tessellate_seconds}, {"mesh", mesh_seconds}, {"export", export_seconds}}},
-              {"case", "case"},
+              {"case", case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs)},
               {"solved", solve}};
   add_time_limit(report, tess_job.options.deadline);
 
@@ -227,8 +371,12 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     stage("solving with solidDisplacementFoam");
     std::vector<std::string> solve_warnings;
     try {
-      report["effective"] = solve_run(dir, staged, t, m, e, foam, tess_job.options.deadline, mesh_job.picture_width,
-                                      solve_warnings);
+      report["effective"] =
+          boundary == Boundary::mixed
+              ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, mesh_job.picture_width,
+                                 solve_warnings)
+              : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, mesh_job.picture_width,
+                                    solve_warnings);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.
       end_stage_line();
@@ -253,17 +401,25 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   staged.commit();
   end_stage_line();
 
+  std::string cases;
+  for (const std::string& d : case_dirs) cases += (cases.empty() ? "" : ", ") + d + "/";
   std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "
-              "tessellation.png, mesh.vtu, mesh.png, case/, config.ini, report.json}\n  the case: %s/case/Allrun runs "
+              "tessellation.png, mesh.vtu, mesh.png, %s, config.ini, report.json}\n  each case's Allrun runs "
               "checkMesh and solidDisplacementFoam\n",
               t.stats.grains, m.mesh.triangles.size(), q.q_min, q.q_mean, since(start), out.string().c_str(),
-              out.string().c_str());
-  if (solve) {
+              cases.c_str());
+  if (solve && boundary == Boundary::mixed) {
     const Json& eff = report["effective"];
     std::printf("  solved: effective modulus %.4g Pa", eff["modulus"].get<double>());
     if (eff.contains("reuss"))
       std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
     std::printf(", %d corrections\n", eff["corrections"].get<int>());
+  } else if (solve) {
+    const Json& C = report["effective"]["stiffness"];
+    std::printf("  solved: effective stiffness C11 %.4g, C22 %.4g, C12 %.4g, C66 %.4g Pa (3 load cases, at most %d "
+                "corrections)\n",
+                C["C11"].get<double>(), C["C22"].get<double>(), C["C12"].get<double>(), C["C66"].get<double>(),
+                report["effective"]["corrections"].get<int>());
   }
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");

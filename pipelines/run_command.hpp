@@ -9,9 +9,18 @@
 #include <string>
 #include <vector>
 
+#include "export/foam.hpp"
 #include "pipelines/config.hpp"
 
 namespace grainmesh {
+
+// The keys of the homogenisation: homogenise.boundary (mixed | periodic).
+const std::vector<std::string>& homogenise_config_keys();
+
+// The export's options for a run: with homogenise.boundary = periodic the case is cyclic
+// (refused, naming the key, on a cell that is not periodic or with a traction or
+// uniaxial load).
+FoamOptions read_run_foam_options(const Config& config);
 
 // Every key a run config may use: the stages' keys.
 std::vector<std::string> run_config_keys();

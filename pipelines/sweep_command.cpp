@@ -18,7 +18,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "pipelines/output_dir.hpp"
-#include "pipelines/process.hpp"
+#include "common/process.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_command.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "export/foam.hpp"
 #include "helpers.hpp"
-#include "pipelines/homogenise.hpp"
+#include "analysis/foam_fields.hpp"
 
 using namespace grainmesh;
 using test::run_grainmesh;

@@ -1,4 +1,4 @@
-#include "pipelines/process.hpp"
+#include "common/process.hpp"
 
 #include <fcntl.h>
 #include <signal.h>

@@ -1,7 +1,7 @@
 // Elastic bounds for the export's default load.
 #include <catch2/catch.hpp>
 
-#include "pipelines/homogenise.hpp"
+#include "analysis/bounds.hpp"
 
 using namespace grainmesh;
 

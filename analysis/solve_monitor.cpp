@@ -1,4 +1,4 @@
-#include "pipelines/solve_monitor.hpp"
+#include "analysis/solve_monitor.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/format.hpp"
-#include "pipelines/solve_monitor.hpp"
+#include "analysis/solve_monitor.hpp"
 
 using namespace grainmesh;
 

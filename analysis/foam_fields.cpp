@@ -1,0 +1,111 @@
+#include "analysis/foam_fields.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "common/text_file.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+int width_of(const std::string& type) {
+  if (type == "scalar") return 1;
+  if (type == "vector") return 3;
+  if (type == "symmTensor") return 6;
+  if (type == "tensor") return 9;
+  throw GeometryError("unknown field type " + type);
+}
+
+// The values of an entry `uniform V` or `nonuniform List<T> N (V ...)` starting at `at`.
+FieldValues parse_values(const std::filesystem::path& file, const std::string& text, std::size_t at,
+                         const std::string& type, std::size_t count) {
+  FieldValues f;
+  f.width = width_of(type);
+  const std::size_t end = text.find(';', at);
+  const std::size_t uniform = text.find("uniform", at);
+  if (uniform == std::string::npos || uniform > end) throw GeometryError(file.string() + ": no values");
+  const bool list = uniform >= 3 && text.compare(uniform - 3, 3, "non") == 0;
+  std::istringstream in(text.substr(uniform + 7));
+  auto read_value = [&](std::vector<double>& out) {
+    char paren = 0;
+    if (f.width > 1) in >> paren;
+    for (int c = 0; c < f.width; ++c) {
+      double v = 0.0;
+      in >> v;
+      out.push_back(v);
+    }
+    if (f.width > 1) in >> paren;
+  };
+  if (list) {
+    std::string list_type;
+    std::size_t n = 0;
+    char paren = 0;
+    in >> list_type >> n >> paren;
+    if (!in || n != count)
+      throw GeometryError(file.string() + ": " + std::to_string(n) + " values, the mesh has " + std::to_string(count));
+    f.values.reserve(n * static_cast<std::size_t>(f.width));
+    for (std::size_t k = 0; k < n; ++k) read_value(f.values);
+  } else {
+    std::vector<double> one;
+    read_value(one);
+    for (std::size_t k = 0; k < count; ++k) f.values.insert(f.values.end(), one.begin(), one.end());
+  }
+  if (!in) throw GeometryError(file.string() + ": unreadable values");
+  return f;
+}
+
+}  // namespace
+
+FieldValues read_cell_field(const std::filesystem::path& file, const std::string& type, std::size_t cells) {
+  const std::string text = read_text_file(file, "the solver's result");
+  const std::size_t at = text.find("internalField");
+  if (at == std::string::npos) throw GeometryError(file.string() + ": no cell values");
+  return parse_values(file, text, at, type, cells);
+}
+
+FieldValues read_patch_field(const std::filesystem::path& file, const std::string& type, const std::string& patch,
+                             std::size_t faces) {
+  const std::string text = read_text_file(file, "the solver's result");
+  const std::size_t boundary = text.find("boundaryField");
+  const std::size_t at = boundary == std::string::npos ? boundary : text.find("\n    " + patch + "\n", boundary);
+  if (at == std::string::npos) throw GeometryError(file.string() + ": no patch " + patch);
+  const std::size_t value = text.find("value", at), close = text.find('}', at);
+  if (value == std::string::npos || value > close) throw GeometryError(file.string() + ": patch " + patch + " has no values");
+  return parse_values(file, text, value, type, faces);
+}
+
+std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file, std::size_t cells) {
+  const FieldValues f = read_cell_field(sigma_file, "symmTensor", cells);
+  std::vector<CellStress> out(f.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {f[k][0], f[k][1], f[k][3]};
+  return out;
+}
+
+std::vector<double> read_cell_displacement(const std::filesystem::path& d_file, std::size_t cells) {
+  const FieldValues f = read_cell_field(d_file, "vector", cells);
+  std::vector<double> out(f.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = std::hypot(f[k][0], f[k][1], f[k][2]);
+  return out;
+}
+
+std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir) {
+  std::filesystem::path best;
+  double latest = 0.0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(case_dir, ec)) {
+    if (!entry.is_directory()) continue;
+    const std::string name = entry.path().filename().string();
+    char* end = nullptr;
+    const double t = std::strtod(name.c_str(), &end);
+    if (end == name.c_str() || *end != '\0' || !(t > latest)) continue;
+    latest = t;
+    best = entry.path();
+  }
+  if (best.empty()) throw SolveError(case_dir.string() + ": the solver wrote no result (no time directory after 0)");
+  return best;
+}
+
+}  // namespace grainmesh

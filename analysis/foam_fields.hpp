@@ -1,0 +1,43 @@
+// Fields as OpenFOAM writes them (ASCII): the values of the cells, and of a patch's faces.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace grainmesh {
+
+// The components of every value of a field, in OpenFOAM's order, flattened: `width`
+// numbers per cell or face (scalar 1, vector 3, symmTensor 6: xx xy xz yy yz zz, tensor
+// 9: xx xy xz yx yy yz zx zy zz).
+struct FieldValues {
+  int width = 1;
+  std::vector<double> values;
+  std::size_t size() const { return values.size() / static_cast<std::size_t>(width); }
+  const double* operator[](std::size_t k) const { return values.data() + k * static_cast<std::size_t>(width); }
+};
+
+// The cell values of `file` (a vol field of `type`: scalar, vector, symmTensor, tensor),
+// a uniform field given as `cells` copies. Throws GeometryError naming the file when it
+// is unreadable or has not `cells` values.
+FieldValues read_cell_field(const std::filesystem::path& file, const std::string& type, std::size_t cells);
+
+// The face values of patch `patch` in the same file (`faces` of them). Throws
+// GeometryError when the patch or its values are missing (constraint patches, such as
+// cyclic or symmetryPlane, write none).
+FieldValues read_patch_field(const std::filesystem::path& file, const std::string& type, const std::string& patch,
+                             std::size_t faces);
+
+// The in-plane stress of every cell (CASE/TIME/sigmaD, kStressField), and the length of
+// the displacement (CASE/TIME/D).
+struct CellStress {
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+};
+std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file, std::size_t cells);
+std::vector<double> read_cell_displacement(const std::filesystem::path& d_file, std::size_t cells);
+
+// The case's latest time directory: where the solver wrote its fields. Throws SolveError
+// when there is none.
+std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir);
+
+}  // namespace grainmesh

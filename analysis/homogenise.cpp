@@ -1,0 +1,131 @@
+#include "analysis/homogenise.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <thread>
+
+#include "analysis/foam_fields.hpp"
+#include "analysis/traction.hpp"
+#include "common/errors.hpp"
+
+namespace grainmesh {
+
+MeanStress volume_average(const std::filesystem::path& result_dir, const ExportMesh& m) {
+  const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, m.mesh.triangles.size());
+  MeanStress s;
+  double area = 0.0;
+  for (std::size_t k = 0; k < sigma.size(); ++k) {  // cell k is triangle k
+    const double a = triangle_area(m.mesh, static_cast<int>(k));
+    s.xx += a * sigma[k].xx;
+    s.yy += a * sigma[k].yy;
+    s.xy += a * sigma[k].xy;
+    area += a;
+  }
+  return {s.xx / area, s.yy / area, s.xy / area};
+}
+
+std::array<LoadCase, 3> periodic_load_cases(double strain) {
+  return {LoadCase{"xx", {strain, 0.0, 0.0}}, LoadCase{"yy", {0.0, strain, 0.0}},
+          LoadCase{"xy", {0.0, 0.0, 0.5 * strain}}};
+}
+
+namespace {
+
+// The mean stress of a solved periodic case from the forces through right and top.
+MeanStress periodic_mean_stress(const std::filesystem::path& result_dir, const ExportMesh& m, const PolyMesh& pm,
+                                const FoamOptions& o) {
+  const std::size_t cells = static_cast<std::size_t>(pm.cells);
+  const DiscreteTraction traction(pm, m, o, read_cell_field(result_dir / "D", "vector", cells),
+                                  read_cell_field(result_dir / kGradientField, "tensor", cells),
+                                  read_cell_field(result_dir / kStressField, "symmTensor", cells));
+  const double s2 = o.convert_to_meters * o.convert_to_meters;
+  const Vec2 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
+  const Vec2 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
+  // The shear through right and through top: equal in the continuum, nearly so here.
+  return {right.x, top.y, 0.5 * (right.y + top.x)};
+}
+
+}  // namespace
+
+Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const PolyMesh& pm,
+                                 const FoamOptions& o, const Deadline& deadline,
+                                 const std::filesystem::path& case_shown_as) {
+  Homogenised h;
+  h.run = run_solver(case_dir, m, o, deadline, case_shown_as);
+  // The force through `right`: the load the cell carries. From sigma's face values there,
+  // or on a cyclic case, which writes none, from the cell fields.
+  if (o.cyclic) {
+    h.sigma_xx = periodic_mean_stress(h.run.result_dir, m, pm, o).xx;
+  } else {
+    const int right = patch_index(pm, "right");
+    const PolyMesh::Patch& patch = pm.patches[right];
+    const FieldValues sigma =
+        read_patch_field(h.run.result_dir / kStressField, "symmTensor", "right", static_cast<std::size_t>(patch.size));
+    const Vec2 force = written_patch_force(pm, m, o, right, sigma);
+    h.sigma_xx = force.x / (m.cell.height() * pm.thickness * o.convert_to_meters * o.convert_to_meters);
+  }
+  // Left held, right moved by the displacement: the mean of d(ux)/dx over the cell is
+  // exactly displacement / width.
+  h.strain_xx = o.cyclic ? cyclic_strain(m, o)[0] : o.displacement / m.cell.width();
+  h.modulus = h.sigma_xx / h.strain_xx;
+  h.volume_average = volume_average(h.run.result_dir, m);
+  h.volume_average_modulus = h.volume_average.xx / h.strain_xx;
+  return h;
+}
+
+PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& case_dirs, const ExportMesh& m,
+                                   const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
+                                   const std::array<std::filesystem::path, 3>& cases_shown_as) {
+  setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // before any thread starts a solver
+  const double strain = load_strain(m.cell, m.phases, o);
+  PeriodicHomogenised h;
+  std::array<std::exception_ptr, 3> failed;
+  auto solve = [&](int k) {
+    try {
+      LoadCaseResult& r = h.cases[k];
+      r.load = periodic_load_cases(strain)[k];
+      FoamOptions ok = o;
+      ok.cyclic = true;
+      ok.strain = r.load.strain;
+      r.run = run_solver(case_dirs[k], m, ok, deadline, cases_shown_as[k], r.load.name);
+      r.stress = periodic_mean_stress(r.run.result_dir, m, pm, ok);
+      r.volume_average = volume_average(r.run.result_dir, m);
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  };
+  // Side by side, `parallel` at a time (each solver is one process).
+  for (int first = 0; first < 3; first += std::max(parallel, 1)) {
+    std::vector<std::thread> running;
+    for (int k = first; k < std::min(3, first + std::max(parallel, 1)); ++k) running.emplace_back(solve, k);
+    for (std::thread& t : running) t.join();
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  for (int k = 0; k < 3; ++k) {
+    const LoadCaseResult& r = h.cases[k];
+    // Per engineering strain: the shear case's tensor component is half its gamma.
+    const double e = k < 2 ? r.load.strain[k] : 2.0 * r.load.strain[2];
+    h.stiffness[0][k] = r.stress.xx / e;
+    h.stiffness[1][k] = r.stress.yy / e;
+    h.stiffness[2][k] = r.stress.xy / e;
+    h.volume_average_stiffness[0][k] = r.volume_average.xx / e;
+    h.volume_average_stiffness[1][k] = r.volume_average.yy / e;
+    h.volume_average_stiffness[2][k] = r.volume_average.xy / e;
+  }
+  return h;
+}
+
+EngineeringConstants engineering_constants(const Stiffness& c) {
+  const Stiffness s = inverse(c);
+  return {.E_x = 1 / s[0][0],
+          .E_y = 1 / s[1][1],
+          .nu_xy = -s[1][0] / s[0][0],
+          .nu_yx = -s[0][1] / s[1][1],
+          .G_xy = 1 / s[2][2],
+          .anisotropy_normal = std::abs(c[0][0] - c[1][1]) / (c[0][0] + c[1][1]),
+          .anisotropy_shear = 2 * c[2][2] / (c[0][0] - c[0][1])};
+}
+
+}  // namespace grainmesh

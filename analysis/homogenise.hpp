@@ -1,0 +1,87 @@
+// Homogenisation of solved cases: the mean stress from the forces through the loaded
+// sides (traction.hpp), the effective modulus under the thesis' load (`mixed`), and the
+// effective in-plane stiffness tensor of a periodic cell from three load cases
+// (`periodic`). The area average of cell stresses is kept beside each as
+// `volume_average`: it mixes the phases in cells next to interfaces and so is biased.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/bounds.hpp"
+#include "analysis/solve.hpp"
+#include "common/deadline.hpp"
+#include "export/foam.hpp"
+
+namespace grainmesh {
+
+// How the cell is loaded for homogenisation (config key homogenise.boundary).
+enum class Boundary {
+  mixed,     // the thesis: right side pulled, symmetry planes elsewhere; one modulus
+  periodic,  // cyclic pairs, a macroscopic strain per load case; the stiffness tensor
+};
+
+struct MeanStress {
+  double xx = 0.0, yy = 0.0, xy = 0.0;  // Pa
+};
+
+// The area average of the cell stresses of a solved case (its result_dir's sigmaD).
+MeanStress volume_average(const std::filesystem::path& result_dir, const ExportMesh& m);
+
+struct Homogenised {
+  double sigma_xx = 0.0;       // the force through `right` over its area
+  double strain_xx = 0.0;      // the imposed mean strain: displacement / width
+  double modulus = 0.0;        // sigma_xx / strain_xx
+  MeanStress volume_average;   // the area average of the cell stresses
+  double volume_average_modulus = 0.0;
+  SolveRun run;
+};
+
+// Solves the case that write_foam_case wrote into `case_dir` (`pm` is what it returned)
+// under the `mixed` load and homogenises. Errors as run_solver.
+Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const PolyMesh& pm,
+                                 const FoamOptions& o, const Deadline& deadline = {},
+                                 const std::filesystem::path& case_shown_as = {});
+
+// The load cases of the periodic homogenisation: a macroscopic strain `strain` in xx, in
+// yy, and an engineering shear `strain` in xy (a tensor component of half that).
+struct LoadCase {
+  std::string name;               // xx, yy, xy: also the case directory's suffix
+  std::array<double, 3> strain;   // xx, yy, xy (tensor components)
+};
+std::array<LoadCase, 3> periodic_load_cases(double strain);
+
+struct LoadCaseResult {
+  LoadCase load;
+  MeanStress stress;           // the forces through right and top over their areas
+  MeanStress volume_average;
+  SolveRun run;
+};
+
+struct PeriodicHomogenised {
+  std::array<LoadCaseResult, 3> cases;
+  Stiffness stiffness{};                 // column j from load case j (the shear per engineering strain)
+  Stiffness volume_average_stiffness{};  // the same from the area averages
+};
+
+// Solves the periodic load cases written by write_foam_case into `case_dirs` (in the
+// order of periodic_load_cases, each with o.cyclic and its strain; `pm` the mesh, the
+// same for all), up to `parallel` at a time, and assembles the stiffness. A failing
+// case throws SolveError naming it (the first in order when several fail).
+PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& case_dirs, const ExportMesh& m,
+                                   const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline = {},
+                                   const std::array<std::filesystem::path, 3>& cases_shown_as = {});
+
+// Engineering constants of an in-plane stiffness (from its compliance S = C^-1): E_x =
+// 1 / S11, E_y = 1 / S22, nu_xy = -S21 / S11, nu_yx = -S12 / S22, G_xy = 1 / S66; and
+// the anisotropy measures normal = |C11 - C22| / (C11 + C22), shear = 2 C66 / (C11 - C12)
+// (1 when isotropic).
+struct EngineeringConstants {
+  double E_x, E_y, nu_xy, nu_yx, G_xy;
+  double anisotropy_normal, anisotropy_shear;
+};
+EngineeringConstants engineering_constants(const Stiffness& c);
+
+}  // namespace grainmesh

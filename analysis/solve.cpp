@@ -1,0 +1,84 @@
+#include "analysis/solve.hpp"
+
+#include <csignal>
+#include <cstdlib>
+
+#include "analysis/foam_fields.hpp"
+#include "analysis/solve_monitor.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/process.hpp"
+#include "common/text_file.hpp"
+
+namespace grainmesh {
+
+SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+                    const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
+  if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
+    throw IoError("--solve: solidDisplacementFoam is not installed (Debian package openfoam; scripts/install-deps.sh)");
+  const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
+  // Errors name the field, and the load case when there are several.
+  const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
+  const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
+  setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // OpenFOAM's programs need it
+
+  // A thousand times the displacement the load can give is divergence, not an answer.
+  const double load_scale = load_strain(m.cell, m.phases, o) * std::max(m.cell.width(), m.cell.height());
+  const CaseStop stop = case_stop(m, o);
+  const SolveMonitor::Options watch{.tolerance = kSolverTolerance,
+                                    .stall_corrections = 500,
+                                    .diverged_range = 1e3 * load_scale * o.convert_to_meters,
+                                    .case_watches = {stop.alone != 1, stop.alone != 0},
+                                    .case_tolerance = stop.tolerance,
+                                    .case_patience = 50};
+  // One run of the solver, followed: killed as soon as it stalls, diverges or will not
+  // stop on its own.
+  auto solve = [&](SolveMonitor& monitor) {
+    return run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam",
+                     [&](std::string_view text) {
+                       const SolveMonitor::State s = monitor.feed(text);
+                       return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
+                     });
+  };
+  SolveMonitor monitor(watch);
+  int status = solve(monitor);
+  if (monitor.state() == SolveMonitor::State::case_stuck) {
+    // Converged by the measure, but OpenFOAM's own residual of a component near zero is
+    // noise: solved again to exactly where the measure was met (the same corrections, one
+    // process, so the same numbers), and written there.
+    write_control_dict(case_dir, m, o, monitor.converged_at());
+    monitor = SolveMonitor(watch);
+    status = solve(monitor);
+  }
+
+  // What to do about a solve that goes nowhere.
+  const std::string advice =
+      harmonic_stiffness(m, o) && stiffness_contrast(m, o) > 3.0
+          ? ": the stiffness contrast " + to_text(stiffness_contrast(m, o), 3) +
+                " is too high for export.stiffness_interpolation = harmonic; use auto or linear"
+          : ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
+  const SolveMonitor::State state = monitor.state();
+  if (state == SolveMonitor::State::diverging || state == SolveMonitor::State::stalled)
+    throw SolveError(field + ": solidDisplacementFoam " +
+                     (state == SolveMonitor::State::diverging ? "diverges: " : "stalls: ") + monitor.diagnosis() +
+                     advice + see);
+  const std::string text = read_text_file(log, "the solver's log");
+  if (status == 128 + SIGFPE || text.find("sigFpe") != std::string::npos)
+    throw SolveError(field + ": solidDisplacementFoam diverges: floating-point overflow after " +
+                     std::to_string(monitor.corrections()) + " corrections" + advice + see);
+  if (status != 0 || text.find("\nEnd") == std::string::npos)
+    throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": solidDisplacementFoam failed (exit code " + std::to_string(status) + ")" + see);
+  if (state != SolveMonitor::State::converged || !(monitor.measure() < kSolverTolerance))
+    throw SolveError(field + ": solidDisplacementFoam did not converge in " + std::to_string(monitor.corrections()) +
+                     " corrections (residual " + to_text(monitor.measure(), 3) + ", above " +
+                     to_text(kSolverTolerance) + ")" + advice + see);
+
+  SolveRun r;
+  r.corrections = monitor.corrections();
+  r.final_residual = monitor.measure();
+  r.component_residuals = monitor.residuals();
+  r.result_dir = latest_time_dir(case_dir);
+  return r;
+}
+
+}  // namespace grainmesh

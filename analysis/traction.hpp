@@ -1,0 +1,64 @@
+// The force a solved case carries through its faces, as solidDisplacementFoam's own
+// discrete equation has it (compactNormalStress): on a face between cells P and N,
+//   F = gamma_f |S| snGrad(D) + S . X_f,   X = sigma - gamma grad(D),  gamma = 2 mu + lambda,
+// gamma_f interpolated as the case says (harmonic or linear), snGrad with OpenFOAM's
+// non-orthogonal correction from the interpolated gradient, X_f linear. At convergence
+// the forces on every cell's faces add up to zero, so the force through a patch is the
+// load the cell carries, and over the cell's section it is the mean stress exactly -
+// unlike the area average of cell stresses, which mixes the phases next to interfaces.
+//
+// On a patch where OpenFOAM writes sigma's face values (a plain patch) the force is
+// S . sigma_f, which is the same flux; on a cyclic patch (which writes none) it is
+// computed here from the cell fields D, grad(D) and sigmaD.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "analysis/foam_fields.hpp"
+#include "common/geometry.hpp"
+#include "export/foam.hpp"
+
+namespace grainmesh {
+
+class DiscreteTraction {
+ public:
+  // The case's mesh (`pm`, built from `m` with `o`), its solved cell fields, and each
+  // cyclic patch's jump in D (metres; the low patch's, the high one has its negative).
+  DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
+                   FieldValues sigma);
+
+  // The force (N; x and y) through face f out of its owner: internal and cyclic faces.
+  Vec2 face_force(int f) const;
+  // The sum over a cyclic patch's faces.
+  Vec2 patch_force(int patch) const;
+  // The sum of the forces out of cell c through all its faces, where every face of it is
+  // internal, cyclic or empty (else NaN): zero at convergence.
+  Vec2 cell_imbalance(int c) const;
+
+ private:
+  struct Neighbour {
+    int cell = -1;
+    Vec2 shift{};  // added to the neighbour's centre (metres)
+    std::array<double, 2> jump{};  // D seen across the face = D of the neighbour - jump
+  };
+  Neighbour neighbour(int f) const;
+
+  const PolyMesh& pm_;
+  double scale_, thickness_;
+  std::vector<Vec2> centre_;          // cell centres, metres
+  std::vector<double> gamma_;         // 2 mu + lambda per cell
+  bool harmonic_;
+  FieldValues D_, grad_, sigma_;
+  std::vector<int> patch_of_face_;    // boundary faces: their patch; internal: -1
+  std::vector<std::array<double, 2>> jump_;  // per patch
+};
+
+// The force through a plain patch from sigma's face values written there.
+Vec2 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
+                         const FieldValues& sigma_on_patch);
+
+// The index of patch `name` in pm.patches; -1 when there is none.
+int patch_index(const PolyMesh& pm, const std::string& name);
+
+}  // namespace grainmesh
