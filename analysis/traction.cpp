@@ -103,7 +103,9 @@ Vec2 DiscreteTraction::face_force(int f) const {
   const Vec2 d = CN - CP;
   const double delta = 1.0 / std::max(dot(n, d), 0.05 * norm(d));
   const Vec2 k = n - delta * d;
-  const double gamma = harmonic_ ? 1.0 / (w / gamma_[P] + (1 - w) / gamma_[N]) : w * gamma_[P] + (1 - w) * gamma_[N];
+  // OpenFOAM's harmonic is 1 / reverseLinear(1 / gamma): each side's compliance weighted
+  // by its own distance to the face, as in a series of two springs.
+  const double gamma = harmonic_ ? 1.0 / ((1 - w) / gamma_[P] + w / gamma_[N]) : w * gamma_[P] + (1 - w) * gamma_[N];
   // Tensors as OpenFOAM orders them: grad(D)_ij = d D_j / d x_i, at index 3 i + j;
   // sigma symmetric at xx 0, xy 1, yy 3.
   auto grad = [&](int c, int i, int j) { return grad_[c][3 * i + j]; };

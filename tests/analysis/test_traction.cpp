@@ -1,0 +1,67 @@
+// The force through faces as solidDisplacementFoam's discrete equation has it: at
+// convergence every cell's faces carry forces that add up to zero, also across cyclic
+// faces with a jump - the test that the flux is the solver's own, not an estimate.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/foam_fields.hpp"
+#include "analysis/homogenise.hpp"
+#include "analysis/solve.hpp"
+#include "analysis/traction.hpp"
+#include "common/random.hpp"
+#include "helpers.hpp"
+#include "mesh/grain_mesh.hpp"
+#include "tessellate/tessellation.hpp"
+
+using namespace grainmesh;
+
+TEST_CASE("the discrete traction balances on every cell of a solved periodic two-phase case, for each load case",
+          "[analysis][traction][openfoam]") {
+  TessellationOptions to;
+  to.width = 3.0;
+  to.height = 1.7;
+  to.grains = 30;
+  to.periodic = true;
+  to.lloyd_iterations = 3;
+  to.phases = {Phase{"WC", 0.0, true, 800e9, 0.1}, Phase{"Co", 0.25, false, 300e9, 0.3}};
+  Rng rng(3);
+  const Tessellation t = tessellate(to, rng);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.1, .phase_size = {}});
+  const ExportMesh e = grain_export_mesh(t, m);
+  for (const LoadCase& load : periodic_load_cases(1e-3)) {
+    INFO("load case " << load.name);
+    test::ScratchDir dir("traction");
+    FoamOptions o{.cyclic = true};
+    o.strain = load.strain;
+    const PolyMesh pm = write_foam_case(dir.path(), e, o);
+    const SolveRun run = run_solver(dir.path(), e, o);
+    const std::size_t cells = static_cast<std::size_t>(pm.cells);
+    const DiscreteTraction traction(pm, e, o, read_cell_field(run.result_dir / "D", "vector", cells),
+                                    read_cell_field(run.result_dir / kGradientField, "tensor", cells),
+                                    read_cell_field(run.result_dir / kStressField, "symmTensor", cells));
+    // The scale: the largest force through one face.
+    double largest = 0.0;
+    for (int f = 0; f < pm.internal_faces(); ++f) largest = std::max(largest, norm(traction.face_force(f)));
+    double worst = 0.0;
+    int worst_cell = -1, bad = 0;
+    for (int c = 0; c < pm.cells; ++c) {
+      const double imbalance = norm(traction.cell_imbalance(c));
+      if (imbalance > 1e-6 * largest) ++bad;
+      if (imbalance > worst) worst = imbalance, worst_cell = c;
+    }
+    INFO("largest face force " << largest << ", worst imbalance " << worst << " at cell " << worst_cell << ", " << bad
+                               << " of " << pm.cells << " cells above 1e-6");
+    CHECK(worst < 1e-6 * largest);
+    // What goes in on the left comes out on the right (and bottom, top).
+    const Vec2 left = traction.patch_force(patch_index(pm, "left")), right = traction.patch_force(patch_index(pm, "right"));
+    const Vec2 bottom = traction.patch_force(patch_index(pm, "bottom")), top = traction.patch_force(patch_index(pm, "top"));
+    CHECK(norm(left + right) < 1e-6 * norm(right));
+    CHECK(norm(bottom + top) < 1e-6 * norm(top));
+    // And the load is carried: the loaded direction's force has the strain's sign.
+    if (load.name == "xx") CHECK(right.x > 0.0);
+    if (load.name == "yy") CHECK(top.y > 0.0);
+    if (load.name == "xy") CHECK((right.y > 0.0 && top.x > 0.0));
+  }
+}

@@ -1,0 +1,179 @@
+// Homogenisation through `grainmesh run --solve`, against exact answers: laminates built
+// from grains (seeds in a row give strips), one material, and the symmetry of the tensor.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+Json report_of(const fs::path& dir) { return Json::parse(test::read_file(dir / "report.json")); }
+
+struct Material {
+  double E, nu;
+  double mu() const { return E / (2 * (1 + nu)); }
+  double lambda() const { return E * nu / ((1 + nu) * (1 - 2 * nu)); }  // plane strain
+  double M() const { return lambda() + 2 * mu(); }
+};
+
+// The exact plane-strain stiffness of a laminate with layers normal to x, `soft` of the
+// area soft: C11, C22, C12, C66.
+std::array<double, 4> laminate(const Material& hard, const Material& soft, double f) {
+  auto mean = [&](auto g) { return (1 - f) * g(hard) + f * g(soft); };
+  const double inv_M = mean([](const Material& m) { return 1 / m.M(); });
+  const double l_M = mean([](const Material& m) { return m.lambda() / m.M(); });
+  return {1 / inv_M, mean([](const Material& m) { return m.M() - m.lambda() * m.lambda() / m.M(); }) + l_M * l_M / inv_M,
+          l_M / inv_M, 1 / mean([](const Material& m) { return 1 / m.mu(); })};
+}
+
+// A periodic cell of ten strips (seeds in a row: layers normal to x; in a column: normal
+// to y), three of them soft.
+// The mesh is refined along the grain boundaries (`boundary_size`): solidDisplacementFoam's
+// error lives in the cells next to a phase interface (README, Homogenisation).
+std::string laminate_config(const Material& hard, const Material& soft, bool normal_to_x, double boundary_size) {
+  std::string seeds;
+  for (int i = 0; i < 10; ++i) {
+    const double along = (i + 0.5) / 10.0;
+    seeds += (i ? ", " : "") + (normal_to_x ? std::to_string(2 * along) + " 0.5" : "0.5 " + std::to_string(2 * along));
+  }
+  return "[domain]\nwidth = " + std::string(normal_to_x ? "2" : "1") + "\nheight = " + (normal_to_x ? "1" : "2") +
+         "\nperiodic = true\n[tessellation]\nseeds = " + seeds + "\nphase_mode = grain\n[phase.hard]\nfraction = rest\nE = " +
+         std::to_string(hard.E) + "\nnu = " + std::to_string(hard.nu) + "\n[phase.soft]\nfraction = 0.3\nE = " +
+         std::to_string(soft.E) + "\nnu = " + std::to_string(soft.nu) + "\n[mesh]\nboundary_size = " +
+         std::to_string(boundary_size) + "\n";
+}
+
+double C(const Json& e, const std::string& name) { return e["stiffness"][name].get<double>(); }
+
+}  // namespace
+
+TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have the exact layered tensor, the mixed "
+          "modulus their C11 across and along",
+          "[homogenise][physics][cli]") {
+  test::ScratchDir dir("laminate");
+  const Material hard{600e9, 0.2};
+  // The strips are 0.2 wide; at a contrast of 20 the interface error is larger, and
+  // the mesh finer there.
+  // (The sanitizer build meshes ten times slower: the contrast of 3 alone there.)
+#ifdef GRAINMESH_SANITIZED
+  for (const auto [ratio, boundary_size] : {std::pair{3.0, 0.01}}) {
+#else
+  for (const auto [ratio, boundary_size] : {std::pair{3.0, 0.01}, std::pair{20.0, 0.0025}}) {
+#endif
+    const Material soft{hard.E / ratio, 0.3};
+    const std::array<double, 4> exact = laminate(hard, soft, 0.3);  // C11 C22 C12 C66, layers normal to x
+    for (const bool normal_to_x : {true, false}) {
+      INFO("ratio " << ratio << (normal_to_x ? ", layers normal to x" : ", layers normal to y"));
+      const fs::path ini = dir / ("lam" + std::to_string(static_cast<int>(ratio)) + (normal_to_x ? "x" : "y") + ".ini");
+      std::ofstream(ini) << laminate_config(hard, soft, normal_to_x, boundary_size);
+      const fs::path periodic = ini.string() + ".periodic", mixed = ini.string() + ".mixed";
+      const auto p = test::run_grainmesh({"run", ini.string(), "-o", periodic.string(), "--solve", "--set",
+                                          "homogenise.boundary=periodic"});
+      INFO(p.err);
+      REQUIRE(p.exit_code == 0);
+      const Json e = report_of(periodic)["effective"];
+      REQUIRE(report_of(periodic)["phases"][1]["achieved_fraction"].get<double>() == Approx(0.3).epsilon(1e-9));
+      const double C11 = normal_to_x ? exact[0] : exact[1], C22 = normal_to_x ? exact[1] : exact[0];
+      CHECK(C(e, "C11") == Approx(C11).epsilon(0.01));
+      CHECK(C(e, "C22") == Approx(C22).epsilon(0.01));
+      CHECK(C(e, "C12") == Approx(exact[2]).epsilon(0.01));
+      CHECK(C(e, "C21") == Approx(exact[2]).epsilon(0.01));
+      CHECK(C(e, "C66") == Approx(exact[3]).epsilon(0.01));
+      for (const char* zero : {"C16", "C26", "C61", "C62"}) CHECK(std::abs(C(e, zero)) < 0.01 * C11);
+      CHECK(std::abs(C(e, "C12") - C(e, "C21")) <= 1e-3 * C(e, "C11"));
+      CHECK(e["inside_bounds"]["voigt_reuss"].get<bool>());
+      // The thesis' load on the same cell: C11 across the layers, the along formula along.
+      const auto m = test::run_grainmesh({"run", ini.string(), "-o", mixed.string(), "--solve"});
+      INFO(m.err);
+      REQUIRE(m.exit_code == 0);
+      CHECK(report_of(mixed)["effective"]["modulus"].get<double>() == Approx(C11).epsilon(0.01));
+    }
+  }
+}
+
+TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two phases a symmetric one inside the "
+          "bounds",
+          "[homogenise][physics][cli]") {
+  test::ScratchDir dir("isotropic");
+  const Material m{800e9, 0.1};
+  const auto one = test::run_grainmesh({"run", "-o", (dir / "one").string(), "--solve", "--set",
+                                        "homogenise.boundary=periodic", "--set", "phase.matrix.E=800e9"});
+  INFO(one.err);
+  REQUIRE(one.exit_code == 0);
+  const Json e = report_of(dir / "one")["effective"];
+  CHECK(C(e, "C11") == Approx(m.M()).epsilon(1e-3));
+  CHECK(C(e, "C22") == Approx(m.M()).epsilon(1e-3));
+  CHECK(C(e, "C12") == Approx(m.lambda()).epsilon(1e-3));
+  CHECK(C(e, "C21") == Approx(m.lambda()).epsilon(1e-3));
+  CHECK(C(e, "C66") == Approx(m.mu()).epsilon(1e-3));
+  for (const char* zero : {"C16", "C26", "C61", "C62"}) CHECK(std::abs(C(e, zero)) < 1e-3 * m.M());
+  CHECK(e["engineering"]["E_x"].get<double>() == Approx(m.E / (1 - m.nu * m.nu)).epsilon(1e-3));  // plane strain
+  CHECK(e["engineering"]["nu_xy"].get<double>() == Approx(m.nu / (1 - m.nu)).epsilon(1e-3));
+  CHECK(e["anisotropy"]["shear"].get<double>() == Approx(1.0).epsilon(1e-3));
+  // The mixed load on one material: exact.
+  const auto mixed = test::run_grainmesh({"run", "-o", (dir / "mixed").string(), "--solve", "--set", "phase.matrix.E=800e9"});
+  REQUIRE(mixed.exit_code == 0);
+  CHECK(report_of(dir / "mixed")["effective"]["modulus"].get<double>() == Approx(m.M()).epsilon(1e-3));
+
+  // The default cell and a Laguerre cell of 40 grains: a symmetric tensor inside Voigt-Reuss
+  // and Hashin-Shtrikman.
+  for (const std::vector<std::string>& more :
+       {std::vector<std::string>{}, std::vector<std::string>{"--set", "tessellation.grains=40", "--set",
+                                                             "tessellation.size_cv=0.5", "--set", "tessellation.seed=7"}}) {
+    const fs::path out = dir / ("two" + std::to_string(more.size()));
+    std::vector<std::string> args{"run", "-o", out.string(), "--solve", "--set", "homogenise.boundary=periodic"};
+    args.insert(args.end(), more.begin(), more.end());
+    const auto two = test::run_grainmesh(args);
+    INFO(two.err);
+    REQUIRE(two.exit_code == 0);
+    const Json t = report_of(out)["effective"];
+    CHECK(std::abs(C(t, "C12") - C(t, "C21")) <= 1e-3 * C(t, "C11"));
+    CHECK(t["symmetry_error"].get<double>() <= 1e-3);
+    CHECK(t["inside_bounds"]["voigt_reuss"].get<bool>());
+    // Hashin-Shtrikman holds for isotropic microstructures: the default cell is near enough
+    // (a Laguerre cell of 40 grains need not be).
+    if (more.empty()) CHECK(t["inside_bounds"]["hashin_shtrikman"].get<bool>());
+    for (const char* load : {"xx", "yy", "xy"}) CHECK(fs::exists(out / ("case_" + std::string(load)) / "system/controlDict"));
+    CHECK(t["load_cases"].size() == 3);
+  }
+}
+
+TEST_CASE("homogenisation refuses what it cannot do in one line, leaving nothing", "[homogenise][cli]") {
+  test::ScratchDir dir("homogenise-refusals");
+  const std::vector<test::Refusal> refusals{
+      {{"run", "--set", "homogenise.boundary=kubc"}, 2, "homogenise.boundary: must be mixed or periodic, got 'kubc'"},
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "domain.periodic=false"},
+       2,
+       "homogenise.boundary: periodic needs a periodic cell: set domain.periodic = true"},
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "load.uniaxial=true"}, 2, "load.uniaxial: not with"},
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "export.cyclic=false"}, 2, "export.cyclic: "},
+  };
+  int k = 0;
+  for (const test::Refusal& r : refusals) test::check_refused(r, dir / ("out" + std::to_string(k++)));
+}
+
+TEST_CASE("a periodic load case that diverges is named, and no number is reported", "[homogenise][cli]") {
+  test::ScratchDir dir("homogenise-diverges");
+  // Harmonic interpolation at a stiffness contrast of 27 diverges (export/foam.hpp).
+  const auto r = test::run_grainmesh({"run", "-o", (dir / "out").string(), "--solve", "--set",
+                                      "homogenise.boundary=periodic", "--set", "phase.matrix.E=30e9", "--set",
+                                      "export.stiffness_interpolation=harmonic"});
+  INFO(r.err);
+  CHECK(r.exit_code == 6);
+  CHECK(r.err.find("grainmesh: error: D (load case xx): solidDisplacementFoam diverges") == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(dir / "out"));
+  const Json failed = report_of(dir / "out.failed");
+  CHECK_FALSE(failed.contains("effective"));
+  CHECK(failed["failed"].get<std::string>().find("load case xx") != std::string::npos);
+}
