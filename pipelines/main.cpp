@@ -14,6 +14,7 @@
 #include "common/deadline.hpp"
 #include "common/errors.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/converge_command.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
@@ -32,6 +33,8 @@ constexpr const char* kUsage =
     "commands:\n"
     "  run [CONFIG] -o OUT [--solve] [--set KEY=VALUE ...]\n"
     "      tessellate, mesh and export in one go (without CONFIG: the thesis' cell, data/default.ini)\n"
+    "  converge [CONFIG] -o DIR [--levels K] [--start N] [--set KEY=VALUE ...]\n"
+    "      mesh convergence of the effective properties: K densities from N triangles per grain, doubling\n"
     "  sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] [--set KEY=VALUE ...]\n"
     "  sweep --collect DIR\n"
     "      runs over the cartesian product of the [sweep] lists; resumes; DIR/summary.csv\n"
@@ -184,6 +187,24 @@ int run_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// `grainmesh converge [CONFIG] -o DIR [--levels K] [--start N] [--set KEY=VALUE ...]`.
+int converge_main(const std::vector<std::string>& args) {
+  po::options_description desc("grainmesh converge [CONFIG] -o DIR [--levels K] [--start N] [--set KEY=VALUE ...]");
+  desc.add_options()("config", po::value<std::string>(), "run config (INI); none = the embedded default")(
+      "levels", po::value<int>()->default_value(ConvergeOptions{}.levels), "mesh densities (3 or more)")(
+      "start", po::value<int>()->default_value(ConvergeOptions{}.start), "triangles per grain of the coarsest");
+  add_output_options(desc, "the study's directory (replaced only when it holds an earlier study)");
+  const auto parsed = parse_options("converge", desc, {"config"}, args);
+  if (!parsed) return kOk;
+  const po::variables_map& vm = *parsed;
+  if (!vm.count("output")) throw ConfigError("converge: missing -o DIR (the study's directory)");
+  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
+                                           : Config::from_text(default_run_config(), "default config", overrides(vm));
+  const ConvergeOptions o{.levels = vm["levels"].as<int>(), .start = vm["start"].as<int>()};
+  naming_errors(config, [&] { run_converge_command(config, vm["output"].as<std::string>(), o); });
+  return kOk;
+}
+
 // `grainmesh sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] [--set ...]`, or
 // `grainmesh sweep --collect DIR`.
 int sweep_main(const std::vector<std::string>& args) {
@@ -247,6 +268,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "run") return run_main(rest);
     if (args[0] == "sweep") return sweep_main(rest);
+    if (args[0] == "converge") return converge_main(rest);
     if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
     if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "check") return check_main(rest);

@@ -256,7 +256,7 @@ Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& s
 
 }  // namespace
 
-void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet) {
+void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   c.check_keys(run_config_keys());
   check_output_replaceable(out, "run");
   // Each stage reads its part; every value is checked before any work is done.
@@ -401,6 +401,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   staged.commit();
   end_stage_line();
 
+  if (!summary) return;
   std::string cases;
   for (const std::string& d : case_dirs) cases += (cases.empty() ? "" : ", ") + d + "/";
   std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "

@@ -33,8 +33,10 @@ std::string config_ini(const Config& config);
 
 // With `solve`, also runs solidDisplacementFoam on the case and homogenises (report.json
 // "effective"); a run that does not converge fails.
-// A terminal shows the stage and the meshing's progress on stderr unless `quiet`.
-void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false);
+// A terminal shows the stage and the meshing's progress on stderr unless `quiet`; the
+// summary goes to stdout when `summary`.
+void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false,
+                     bool summary = true);
 
 // A fingerprint of what a resolved run config asks for (16 hex digits): equal for runs
 // that give the same results. Keys that change how a run goes but not its results

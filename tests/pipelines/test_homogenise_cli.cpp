@@ -66,9 +66,9 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
   // the mesh finer there.
   // (The sanitizer build meshes ten times slower: the contrast of 3 alone there.)
 #ifdef GRAINMESH_SANITIZED
-  for (const auto [ratio, boundary_size] : {std::pair{3.0, 0.01}}) {
+  for (const auto& [ratio, boundary_size] : {std::pair{3.0, 0.01}}) {
 #else
-  for (const auto [ratio, boundary_size] : {std::pair{3.0, 0.01}, std::pair{20.0, 0.0025}}) {
+  for (const auto& [ratio, boundary_size] : {std::pair{3.0, 0.01}, std::pair{20.0, 0.0025}}) {
 #endif
     const Material soft{hard.E / ratio, 0.3};
     const std::array<double, 4> exact = laminate(hard, soft, 0.3);  // C11 C22 C12 C66, layers normal to x

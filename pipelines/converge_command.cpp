@@ -1,0 +1,151 @@
+#include "pipelines/converge_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/richardson.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "export/picture.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+#include "pipelines/run_command.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+
+// Relative tolerance of "converged" in the study.
+constexpr double kWithin = 1e-3;
+
+// The quantities a level's report gives: the mixed modulus (and the biased area average
+// beside it), or the periodic tensor's components.
+std::vector<std::pair<std::string, double>> quantities(const Json& effective) {
+  if (effective.at("boundary") == "mixed")
+    return {{"modulus", effective.at("modulus").get<double>()},
+            {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};
+  std::vector<std::pair<std::string, double>> q;
+  for (const char* c : {"C11", "C22", "C12", "C21", "C66"})
+    q.emplace_back(c, effective.at("stiffness").at(c).get<double>());
+  return q;
+}
+
+}  // namespace
+
+void run_converge_command(const Config& c, const std::filesystem::path& out, const ConvergeOptions& o) {
+  if (o.levels < 3 || o.levels > 12)
+    throw ConfigError("converge: --levels " + std::to_string(o.levels) +
+                      ": give 3 to 12 (Richardson extrapolation needs three levels)");
+  if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
+  check_run_config(c);
+  for (const auto& [key, value] : c.entries())
+    if (key == "mesh.size" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
+        (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
+      c.fail(key, "fixes an element size, which would not follow the study's levels (mesh.triangles_per_grain); "
+                  "remove it to study convergence");
+  check_output_replaceable(out, "converge");
+  StagedOutput staged(out, "converge");
+  const std::filesystem::path dir = staged.dir();
+  const std::string ini = config_ini(c);
+
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> values;  // [quantity][level]
+  std::vector<double> cells, tpg, seconds;
+  Json levels = Json::array();
+  for (int k = 0; k < o.levels; ++k) {
+    const int n = o.start << k;
+    const std::string name = "tpg-" + std::to_string(n);
+    const Config level = Config::from_text(ini, c.source(), {"mesh.triangles_per_grain=" + std::to_string(n)});
+    std::fprintf(stderr, "grainmesh converge: level %d of %d: %d triangles per grain\n", k + 1, o.levels, n);
+    run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+    const Json report = Json::parse(read_text_file(dir / name / "report.json"));
+    const auto q = quantities(report.at("effective"));
+    if (names.empty()) {
+      for (const auto& [qn, v] : q) names.push_back(qn);
+      values.resize(names.size());
+    }
+    for (std::size_t i = 0; i < q.size(); ++i) values[i].push_back(q[i].second);
+    cells.push_back(report.at("mesh").at("cells").get<double>());
+    tpg.push_back(n);
+    seconds.push_back(report.at("seconds").at("total").get<double>());
+    levels.push_back({{"triangles_per_grain", n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
+  }
+
+  // The study: each quantity's limit, order and coarsest level within 0.1 %.
+  Json study = Json::object();
+  std::vector<RichardsonEstimate> estimates;
+  std::vector<std::optional<int>> within;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    estimates.push_back(richardson(values[i], cells));
+    within.push_back(first_within(values[i], estimates.back().limit, kWithin));
+    Json s{{"values", values[i]},
+           {"limit", estimates.back().limit},
+           {"asymptotic", estimates.back().asymptotic},
+           {"settled", estimates.back().settled},
+           {"order", estimates.back().order ? Json(*estimates.back().order) : Json(nullptr)},
+           {"coarsest_within_0.1_percent",
+            within.back() ? Json(static_cast<int>(tpg[static_cast<std::size_t>(*within.back())])) : Json(nullptr)}};
+    study[names[i]] = s;
+  }
+
+  // convergence.csv: a row per level, then the limit, the order and the coarsest level
+  // within 0.1 % of the limit (in triangles per grain).
+  std::string csv = "level,triangles_per_grain,cells,seconds";
+  for (const std::string& n : names) csv += "," + n;
+  csv += "\n";
+  for (std::size_t k = 0; k < tpg.size(); ++k) {
+    csv += std::to_string(k) + "," + to_text(tpg[k]) + "," + to_text(cells[k]) + "," + to_text(seconds[k], 4);
+    for (const auto& v : values) csv += "," + to_text(v[k], 10);
+    csv += "\n";
+  }
+  auto row = [&](const std::string& label, auto cell) {
+    csv += label + ",,,";
+    for (std::size_t i = 0; i < names.size(); ++i) csv += "," + cell(i);
+    csv += "\n";
+  };
+  row("richardson_limit", [&](std::size_t i) { return to_text(estimates[i].limit, 10); });
+  row("observed_order", [&](std::size_t i) { return estimates[i].order ? to_text(*estimates[i].order, 3) : std::string(); });
+  row("coarsest_within_0.1_percent",
+      [&](std::size_t i) { return within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]) : std::string(); });
+  write_text_file(dir / "convergence.csv", csv);
+
+  // convergence.png: each quantity's distance from its limit, in per cent, over the cells.
+  Plot plot{.x_label = "cells", .y_label = "deviation from the Richardson limit (%)", .series = {}};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    PlotSeries s{.name = names[i], .points = {}, .line = true, .colour = static_cast<int>(i)};
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      s.points.push_back({cells[k], 100.0 * (values[i][k] / estimates[i].limit - 1.0)});
+    plot.series.push_back(s);
+  }
+  PlotSeries band{.name = "+/- 0.1 %", .points = {{cells.front(), 0.1}, {cells.back(), 0.1}}, .line = true,
+                  .colour = static_cast<int>(names.size())};
+  plot.series.push_back(band);
+  band.name = "";
+  band.points = {{cells.front(), -0.1}, {cells.back(), -0.1}};
+  plot.series.push_back(band);
+  write_plot_png(dir / "convergence.png", plot);
+
+  write_text_file(dir / "config.ini", ini);
+  Json report{{"config", c.source()}, {"levels", levels}, {"study", study}, {"tolerance", kWithin}};
+  Warnings warnings;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (!estimates[i].asymptotic && !estimates[i].settled)
+      warnings.add("converge: " + names[i] + " does not converge monotonically over the last three levels; its limit " +
+                   "is the finest value (add levels)");
+  write_report(staged, report, warnings);
+  staged.commit();
+  std::printf("grainmesh converge: %d levels (%d to %d triangles per grain) in %s\n", o.levels, o.start,
+              o.start << (o.levels - 1), out.string().c_str());
+  for (std::size_t i = 0; i < names.size(); ++i)
+    std::printf("  %s: limit %.6g (order %s), within 0.1 %% from %s triangles per grain\n", names[i].c_str(),
+                estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
+                within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none");
+}
+
+}  // namespace grainmesh
