@@ -45,7 +45,7 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
   check_run_config(c);
   for (const auto& [key, value] : c.entries())
-    if (key == "mesh.size" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
+    if (key == "mesh.size" || key == "mesh.h" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
       c.fail(key, "fixes an element size, which would not follow the study's levels (mesh.triangles_per_grain); "
                   "remove it to study convergence");

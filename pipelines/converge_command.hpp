@@ -18,7 +18,7 @@ struct ConvergeOptions {
 };
 
 // Throws ConfigError for fewer than 3 levels, a start below 4, or a config that fixes
-// the element size (mesh.size, mesh.boundary_size, mesh.junction_size, phase.NAME.size),
+// the element size (mesh.size or mesh.h, mesh.boundary_size, mesh.junction_size, phase.NAME.size),
 // which would not follow the levels.
 void run_converge_command(const Config& config, const std::filesystem::path& out, const ConvergeOptions& options);
 

@@ -177,3 +177,36 @@ TEST_CASE("a periodic load case that diverges is named, and no number is reporte
   CHECK_FALSE(failed.contains("effective"));
   CHECK(failed["failed"].get<std::string>().find("load case xx") != std::string::npos);
 }
+
+TEST_CASE("grainmesh converge: the default cell's mixed modulus at the default density lies within 0.1 % of its "
+          "Richardson limit, seeds 1, 2 and 3",
+          "[homogenise][converge][cli]") {
+  test::ScratchDir dir("converge");
+  for (const char* seed : {"1", "2", "3"}) {
+    INFO("seed " << seed);
+    const fs::path out = dir / (std::string("seed") + seed);
+    const auto r = test::run_grainmesh({"converge", "-o", out.string(), "--levels", "4", "--set",
+                                        std::string("tessellation.seed=") + seed});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const Json study = report_of(out)["study"]["modulus"];
+    const double limit = study["limit"].get<double>();
+    // Levels 25, 50, 100 (the default), 200 triangles per grain.
+    CHECK(study["values"][2].get<double>() == Approx(limit).epsilon(1e-3));
+    const Json level = report_of(out / "tpg-100")["effective"];
+    CHECK(level["modulus"].get<double>() == study["values"][2].get<double>());
+    CHECK(level["inside_bounds"]["hashin_shtrikman"].get<bool>());
+    const std::string csv = test::read_file(out / "convergence.csv");
+    CHECK(csv.rfind("level,triangles_per_grain,cells,seconds,modulus,volume_average_modulus\n", 0) == 0);
+    CHECK(csv.find("\nrichardson_limit,") != std::string::npos);
+    CHECK(fs::file_size(out / "convergence.png") > 5000);
+  }
+  const std::vector<test::Refusal> refusals{
+      {{"converge", "--levels", "1"}, 2, "converge: --levels 1: give 3 to 12"},
+      {{"converge", "--levels", "0"}, 2, "converge: --levels 0: give 3 to 12"},
+      {{"converge", "--set", "mesh.size=0.05"}, 2, "mesh.size: fixes an element size"},
+      {{"converge", "--set", "homogenise.boundary=both"}, 2, "homogenise.boundary: must be mixed or periodic"},
+  };
+  int k = 0;
+  for (const test::Refusal& r : refusals) test::check_refused(r, dir / ("bad" + std::to_string(k++)));
+}
