@@ -14,6 +14,8 @@ struct SolveRun {
   int corrections = 0;                          // solver corrections
   double final_residual = 0.0;                  // the convergence measure at the last (solve_monitor.hpp)
   std::array<double, 2> component_residuals{};  // OpenFOAM's own residuals of Dx and Dy there
+  double stress_change = 0.0;                   // the largest relative change of the effective stress
+                                                // over the last kStressWindow corrections
   std::filesystem::path result_dir;             // the time directory holding the fields
 };
 

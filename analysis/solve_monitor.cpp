@@ -63,13 +63,44 @@ void SolveMonitor::line(std::string_view l) {
       measure_ = residual_[c];
       worst_component_ = c;
     }
+  } else if (l.find("areaIntegrate(") != std::string_view::npos && l.find(") of sigmaD = (") != std::string_view::npos) {
+    // A symmTensor (xx xy xz yy yz zz) integrated over a side: the traction's components,
+    // xx and xy on left and right, xy and yy on bottom and top.
+    const auto open = l.find("areaIntegrate(") + 14;
+    const std::string_view side = l.substr(open, l.find(')', open) - open);
+    const bool normal_x = side == "left" || side == "right";
+    const std::string rest(l.substr(l.find(") of sigmaD = (") + 15));
+    const char* p = rest.c_str();
+    for (int k = 0; k < 6; ++k) {
+      char* end = nullptr;
+      const double v = std::strtod(p, &end);
+      if (end == p) break;
+      if (k == 1 || k == (normal_x ? 0 : 3)) forces_.push_back(v);
+      p = end;
+    }
   } else if (vector_after(l, "min(region0) of D =", low_)) {
   } else if (vector_after(l, "max(region0) of D =", high_)) {
     judge();  // the last of a correction's lines that the measure needs
   }
 }
 
+double SolveMonitor::stress_change() const {
+  if (static_cast<int>(changes_.size()) < o_.stress_window) return INFINITY;
+  return *std::max_element(changes_.begin(), changes_.end());
+}
+
 void SolveMonitor::judge() {
+  if (!forces_.empty()) {
+    double scale = 0.0, change = 0.0;
+    for (double f : forces_) scale = std::max(scale, std::abs(f));
+    if (previous_forces_.size() == forces_.size()) {
+      for (std::size_t k = 0; k < forces_.size(); ++k) change = std::max(change, std::abs(forces_[k] - previous_forces_[k]));
+      changes_.push_back(scale > 0.0 ? change / scale : (change > 0.0 ? INFINITY : 0.0));
+      if (static_cast<int>(changes_.size()) > o_.stress_window) changes_.pop_front();
+    }
+    previous_forces_ = std::move(forces_);
+    forces_.clear();
+  }
   if (state_ != State::running && state_ != State::converged) return;  // stopped: kept as it was
   std::array<double, 2> range{high_[0] - low_[0], high_[1] - low_[1]};
   const double scale = std::max(range[0], range[1]);
@@ -99,7 +130,8 @@ void SolveMonitor::judge() {
     }
     return;
   }
-  if (measure_ < o_.tolerance) {
+  const bool settled = o_.stress_tolerance <= 0.0 || stress_change() <= o_.stress_tolerance;
+  if (measure_ < o_.tolerance && settled) {
     state_ = State::converged;
     converged_at_ = corrections_;
     best_ = 1e300;

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <array>
+#include <deque>
+#include <vector>
 #include <string>
 #include <string_view>
 
@@ -31,10 +33,15 @@ class SolveMonitor {
     std::array<bool, 2> case_watches{true, true};
     double case_tolerance = 1e-8;
     int case_patience = 50;
+    // The effective stress has settled when no correction of the last stress_window changed
+    // the logged forces (surfaceFieldValue areaIntegrate of sigma on the loaded sides) by
+    // more than stress_change() measures against.
+    int stress_window = 5;
+    double stress_tolerance = 0.0;  // > 0: converged only once stress_change() is below it too
   };
   enum class State {
     running,     // not yet converged
-    converged,   // the measure is below the tolerance; the case will stop on its own
+    converged,   // the measure is below the tolerance (and the stress has settled); the case will stop on its own
     case_stuck,  // converged, but the case's own stop will not come: stop it at converged_at()
     stalled,
     diverging,
@@ -52,6 +59,10 @@ class SolveMonitor {
   int converged_at() const { return converged_at_; }
   double measure() const { return measure_; }
   const std::array<double, 2>& residuals() const { return residual_; }
+  // How much the logged forces changed at most over the last stress_window corrections,
+  // relative to the largest of their components (infinite before that many corrections,
+  // or when the case logs none).
+  double stress_change() const;
   // What went wrong, for a stalled or diverging solve: "the y displacement's residual ..."
   std::string diagnosis() const;
 
@@ -68,6 +79,8 @@ class SolveMonitor {
   double best_ = 1e300;  // the measure (after convergence: the case's) when it last halved, and the correction it did
   int best_at_ = 0;
   int worst_component_ = 0;
+  std::vector<double> forces_, previous_forces_;  // this correction's logged force components, and the last's
+  std::deque<double> changes_;                    // their relative change at each of the last corrections
 };
 
 }  // namespace grainmesh

@@ -15,8 +15,8 @@
 #include "common/errors.hpp"
 #include "export/foam.hpp"
 #include "pipelines/config.hpp"
-#include "pipelines/export_command.hpp"
 #include "analysis/homogenise.hpp"
+#include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"
 #include "pipelines/tessellate_command.hpp"
@@ -41,13 +41,13 @@ Json solve_case(const Case& c, const std::filesystem::path& dir) {
   const FoamOptions o = read_foam_options(config.subset(export_config_keys()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  write_foam_case(dir, e, o);
+  const PolyMesh pm = write_foam_case(dir, e, o);
   const auto start = std::chrono::steady_clock::now();
   Json row{{"cells", m.mesh.triangles.size()}, {"stiffness_contrast", stiffness_contrast(e, o)}};
   try {
-    const Homogenised h = solve_and_homogenise(dir, e, o);
-    row["corrections"] = h.corrections;
-    row["final_residual"] = h.final_residual;
+    const Homogenised h = solve_and_homogenise(dir, e, pm, o);
+    row["corrections"] = h.run.corrections;
+    row["final_residual"] = h.run.final_residual;
     row["modulus"] = h.modulus;
     row["outcome"] = "converged";
   } catch (const SolveError& err) {

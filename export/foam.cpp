@@ -396,21 +396,34 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
 
 // Pseudo-time steps of one correction each (d2dt2 is steadyState), stopped by
 // runTimeControl once OpenFOAM's own residual is below the tolerance (case_stop), or at
-// `end_step`. The range of every displacement component is logged each step, for the
-// scale-aware criterion of grainmesh's solve (solve_monitor.hpp).
-std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step) {
+// `end_step`. The force through the loaded sides and the range of every displacement
+// component are logged each step, for grainmesh's solve (solve_monitor.hpp).
+std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step, double tighter, int start) {
   const std::string steps = std::to_string(end_step);
-  const CaseStop stop = case_stop(m, o);
+  CaseStop stop = case_stop(m, o);
+  stop.tolerance *= tighter;
+  // The force through the loaded sides, each correction: right, and top for a cyclic case
+  // (there from the stress interpolated to the faces: a measure of settling, not the answer).
   std::string range;
+  for (const char* side : {"right", "top"}) {
+    if (std::string(side) == "top" && !o.cyclic) continue;
+    range += std::string("    force_") + side + "\n    {\n        type            surfaceFieldValue;\n"
+             "        libs            (fieldFunctionObjects);\n        fields          (" + kStressField + ");\n"
+             "        operation       areaIntegrate;\n        regionType      patch;\n        name            " + side +
+             ";\n        writeFields     no;\n        writeToFile     no;\n        log             yes;\n    }\n";
+  }
   for (const char* op : {"min", "max"})
     range += std::string("    displacement_") + op + "\n    {\n        type            volFieldValue;\n"
              "        libs            (fieldFunctionObjects);\n        fields          (D);\n"
              "        operation       " + op + ";\n        regionType      all;\n        writeFields     no;\n"
              "        writeToFile     no;\n        log             yes;\n    }\n";
   return dictionary_header("system", "controlDict") +
-         "application     solidDisplacementFoam;\n\nstartFrom       startTime;\nstartTime       0;\n"
+         "application     solidDisplacementFoam;\n\n" +
+         (start == 0 ? std::string("startFrom       startTime;\nstartTime       0;\n")
+                     : "// Continued from where the last run stopped.\nstartFrom       latestTime;\n") +
          "stopAt          endTime;\n// Each step is one correction of the displacement (d2dt2 steadyState): at most " +
          steps + (end_step == kMaxCorrections ? "" : ", where grainmesh's criterion was met") +
+         (tighter == 1.0 ? "" : "; its own stop tightened until the effective stress settles") +
          ".\nendTime         " + steps + ";\ndeltaT          1;\n\n"
          "// Written once, when the run stops. Results in ASCII whatever the mesh's format:\n"
          "// they are what users (and grainmesh run --solve) read.\n"
@@ -463,8 +476,9 @@ CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
   return {.alone = e[0] != 0.0 ? 0 : 1, .tolerance = 0.01 * kSolverTolerance};
 }
 
-void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o, int end_step) {
-  write_text(dir / "system/controlDict", control_dict(m, o, end_step));
+void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o, int end_step,
+                        double tighter, int start) {
+  write_text(dir / "system/controlDict", control_dict(m, o, end_step, tighter, start));
 }
 
 double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& o) {

@@ -125,6 +125,7 @@ void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, c
   MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
   for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
   write_mesh_description(dir / "mesh.json", description);
+  if (picture_width == 0) return;
   TriMesh by_phase = m.mesh;
   by_phase.region = m.phase;
   write_mesh_png(dir / "mesh.png", by_phase, {.width_px = picture_width, .outline_by = m.mesh.region});

@@ -34,8 +34,8 @@ double since(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
-const std::vector<std::string>& homogenise_config_keys() {
-  static const std::vector<std::string> keys{"homogenise.boundary"};
+const std::vector<std::string>& run_own_config_keys() {
+  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures"};
   return keys;
 }
 
@@ -48,7 +48,7 @@ Boundary read_boundary(const Config& c) {
 
 std::vector<std::string> run_config_keys() {
   std::vector<std::string> keys = tessellate_config_keys();
-  for (const auto& k : homogenise_config_keys()) keys.push_back(k);
+  for (const auto& k : run_own_config_keys()) keys.push_back(k);
   for (const auto& k : mesh_config_keys()) keys.push_back(k);
   for (const auto& k : export_config_keys()) keys.push_back(k);
   return keys;
@@ -106,9 +106,10 @@ void check_run_config(const Config& c) {
 namespace {
 
 // Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
-// 3.14-3.15).
+// 3.14-3.15); none when picture_width is 0.
 void write_field_pictures(const std::filesystem::path& dir, const std::filesystem::path& result_dir, const GrainMesh& m,
                           int picture_width) {
+  if (picture_width == 0) return;
   const std::size_t cells = m.mesh.triangles.size();
   const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, cells);
   std::vector<double> sxx, syy, sxy;
@@ -127,6 +128,7 @@ void write_field_pictures(const std::filesystem::path& dir, const std::filesyste
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
   return {{"corrections", r.corrections},
           {"final_residual", r.final_residual},
+          {"stress_change", r.stress_change},
           {"component_residuals", r.component_residuals},
           {"result", std::filesystem::relative(r.result_dir, dir).string()}};
 }
@@ -265,6 +267,8 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const TessellateJob tess_job = read_tessellate_job(tess_config);
   const FoamOptions foam = read_run_foam_options(c);
   const Boundary boundary = read_boundary(c);
+  // Pictures cost more than the rest of a small run's output; sweeps may do without.
+  const bool pictures = c.flag("output.pictures", true);
   if (solve && foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   Warnings warnings;
@@ -314,8 +318,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   StagedOutput staged(out, "run");
   const std::filesystem::path dir = staged.dir();
   write_text_file(dir / "tessellation.json", tessellation_to_json(t));
-  write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
-  write_mesh_files(dir, t, m, mesh_job.picture_width);
+  if (pictures) write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
+  const int picture_width = pictures ? mesh_job.picture_width : 0;
+  write_mesh_files(dir, t, m, picture_width);
 
   clock = std::chrono::steady_clock::now();
   stage("exporting");
@@ -373,9 +378,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     try {
       report["effective"] =
           boundary == Boundary::mixed
-              ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, mesh_job.picture_width,
+              ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
                                  solve_warnings)
-              : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, mesh_job.picture_width,
+              : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
                                     solve_warnings);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.

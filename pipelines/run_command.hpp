@@ -14,8 +14,8 @@
 
 namespace grainmesh {
 
-// The keys of the homogenisation: homogenise.boundary (mixed | periodic).
-const std::vector<std::string>& homogenise_config_keys();
+// The keys only a run reads: homogenise.boundary (mixed | periodic), output.pictures.
+const std::vector<std::string>& run_own_config_keys();
 
 // The export's options for a run: with homogenise.boundary = periodic the case is cyclic
 // (refused, naming the key, on a cell that is not periodic or with a traction or

@@ -315,20 +315,43 @@ void collect_sweep(const std::filesystem::path& dir) {
   static const double t975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
                                 2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
                                 2.074, 2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-  std::string csv;
-  for (const auto& k : keys) csv += k + ",";
-  csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min\n";
+  // The periodic tensor's components and engineering constants, summarised when any run
+  // has them.
+  static const std::vector<std::pair<std::string, std::string>> kTensor{
+      {"stiffness", "C11"},  {"stiffness", "C22"},  {"stiffness", "C12"},    {"stiffness", "C21"},
+      {"stiffness", "C66"},  {"stiffness", "C16"},  {"stiffness", "C26"},    {"engineering", "E_x"},
+      {"engineering", "E_y"}, {"engineering", "nu_xy"}, {"engineering", "nu_yx"}, {"engineering", "G_xy"}};
+  // Mean, standard deviation and the half-width of the 95 % confidence interval of the mean.
+  auto stats = [&](const std::vector<double>& v) -> std::array<double, 3> {
+    if (v.empty()) return {NAN, NAN, NAN};
+    double mean = 0.0;
+    for (double m : v) mean += m;
+    mean /= static_cast<double>(v.size());
+    if (v.size() < 2) return {mean, NAN, NAN};
+    double ss = 0.0;
+    for (double m : v) ss += (m - mean) * (m - mean);
+    const double sd = std::sqrt(ss / static_cast<double>(v.size() - 1));
+    const std::size_t dof = v.size() - 1;
+    return {mean, sd, (dof <= 30 ? t975[dof] : 1.96) * sd / std::sqrt(static_cast<double>(v.size()))};
+  };
+  auto num = [](double v) { return std::isnan(v) ? std::string() : to_text(v, 10); };
+  // The rows, and each row's tensor columns: written once it is known whether any run has them.
+  std::vector<std::pair<std::string, std::string>> lines;
+  bool any_tensor = false;
   std::size_t rows = 0;
   const auto& points = plan.at("points");
-  // The plot: modulus against the first fraction key (else the first key), one series
-  // per value of the other keys, every realisation a point; the bounds as lines.
+  // The plot: modulus (or, for periodic runs, C11) against the first fraction key (else
+  // the first key), one series per value of the other keys, every realisation a point;
+  // the bounds as lines.
   std::size_t x_key = 0;
   for (std::size_t k = keys.size(); k-- > 0;)
     if (keys[k].size() > 9 && keys[k].compare(keys[k].size() - 9, 9, ".fraction") == 0) x_key = k;
   std::map<std::string, std::vector<Vec2>> by_series;
   std::map<double, std::array<double, 3>> bounds;  // x -> summed voigt, reuss, count
+  bool plotted_c11 = false;
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;
+    std::vector<std::vector<double>> tensor(kTensor.size());
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
     int found = 0;
     for (int r = 0; r < realisations; ++r) {
@@ -346,48 +369,57 @@ void collect_sweep(const std::filesystem::path& dir) {
       ++found;
       cells += j["mesh"]["cells"].get<double>();
       q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
-      if (j.contains("effective")) {
-        const Json& e = j["effective"];
-        modulus.push_back(e["modulus"].get<double>());
-        voigt = e.value("voigt", NAN);
-        reuss = e.value("reuss", NAN);
-        if (e.contains("hashin_shtrikman")) {
-          hs_lo = e["hashin_shtrikman"]["lower"].get<double>();
-          hs_hi = e["hashin_shtrikman"]["upper"].get<double>();
-        }
+      if (!j.contains("effective")) continue;
+      const Json& e = j["effective"];
+      if (e.contains("stiffness")) {
+        any_tensor = true;
+        for (std::size_t q = 0; q < kTensor.size(); ++q)
+          tensor[q].push_back(e[kTensor[q].first][kTensor[q].second].get<double>());
+        continue;
+      }
+      modulus.push_back(e["modulus"].get<double>());
+      voigt = e.value("voigt", NAN);
+      reuss = e.value("reuss", NAN);
+      if (e.contains("hashin_shtrikman")) {
+        hs_lo = e["hashin_shtrikman"]["lower"].get<double>();
+        hs_hi = e["hashin_shtrikman"]["upper"].get<double>();
       }
     }
     if (found == 0) continue;
-    if (!keys.empty() && !modulus.empty()) {
+    const std::vector<double>& plotted = modulus.empty() ? tensor[0] : modulus;
+    plotted_c11 = plotted_c11 || modulus.empty();
+    if (!keys.empty() && !plotted.empty()) {
       std::string series;
       for (std::size_t k = 0; k < keys.size(); ++k)
         if (k != x_key) series += (series.empty() ? "" : ", ") + keys[k] + " " + points[p][keys[k]].get<std::string>();
       const double x = std::strtod(points[p][keys[x_key]].get<std::string>().c_str(), nullptr);
-      for (double m : modulus) by_series[series.empty() ? "runs" : series].push_back({x, m});
+      for (double m : plotted) by_series[series.empty() ? "runs" : series].push_back({x, m});
       if (!std::isnan(voigt)) {
         auto& b = bounds[x];
         b[0] += voigt, b[1] += reuss, b[2] += 1;
       }
     }
-    double mean = NAN, sd = NAN, ci = NAN;
-    if (!modulus.empty()) {
-      mean = 0.0;
-      for (double m : modulus) mean += m;
-      mean /= static_cast<double>(modulus.size());
-      if (modulus.size() > 1) {
-        double ss = 0.0;
-        for (double m : modulus) ss += (m - mean) * (m - mean);
-        sd = std::sqrt(ss / static_cast<double>(modulus.size() - 1));
-        const std::size_t dof = modulus.size() - 1;
-        ci = (dof <= 30 ? t975[dof] : 1.96) * sd / std::sqrt(static_cast<double>(modulus.size()));
-      }
+    const std::array<double, 3> s = stats(modulus);
+    std::string line;
+    for (const auto& k : keys) line += points[p][k].get<std::string>() + ",";
+    line += std::to_string(found) + "," + num(s[0]) + "," + num(s[1]) + "," + num(s[2]) + "," + num(voigt) + "," +
+            num(reuss) + "," + num(hs_lo) + "," + num(hs_hi) + "," + num(cells / found) + "," + num(q_min);
+    std::string tensor_columns;
+    for (const std::vector<double>& v : tensor) {
+      const std::array<double, 3> ts = stats(v);
+      for (const double v3 : ts) tensor_columns.append(",").append(num(v3));
     }
-    for (const auto& k : keys) csv += points[p][k].get<std::string>() + ",";
-    auto num = [](double v) { return std::isnan(v) ? std::string() : to_text(v, 10); };
-    csv += std::to_string(found) + "," + num(mean) + "," + num(sd) + "," + num(ci) + "," + num(voigt) + "," +
-           num(reuss) + "," + num(hs_lo) + "," + num(hs_hi) + "," + num(cells / found) + "," + num(q_min) + "\n";
+    lines.emplace_back(line, tensor_columns);
     ++rows;
   }
+  std::string csv;
+  for (const auto& k : keys) csv += k + ",";
+  csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min";
+  // Without periodic runs the tensor's columns are left out.
+  if (any_tensor)
+    for (const auto& [group, q] : kTensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
+  csv += "\n";
+  for (const auto& [line, tensor_columns] : lines) csv += line + (any_tensor ? tensor_columns : std::string()) + "\n";
   // Said before the summary is written, so nobody mistakes a partial summary for a whole one.
   Warnings warnings;
   auto list = [](const std::vector<std::string>& names) {
@@ -410,7 +442,8 @@ void collect_sweep(const std::filesystem::path& dir) {
                  " (not run yet or interrupted: run the sweep again)");
   write_text_file(dir / "summary.csv", csv);
   if (!by_series.empty()) {
-    Plot plot{.x_label = keys[x_key], .y_label = "effective modulus (Pa)", .series = {}};
+    Plot plot{.x_label = keys[x_key], .y_label = plotted_c11 ? "effective C11 (Pa)" : "effective modulus (Pa)",
+              .series = {}};
     int colour = 0;
     for (auto& [name, pts] : by_series) plot.series.push_back({name, pts, false, colour++});
     PlotSeries voigt_line{"Voigt", {}, true, 4}, reuss_line{"Reuss", {}, true, 5};

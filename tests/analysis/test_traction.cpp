@@ -36,6 +36,8 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
     FoamOptions o{.cyclic = true};
     o.strain = load.strain;
     const PolyMesh pm = write_foam_case(dir.path(), e, o);
+    // Solved a thousand times further than usual: what is left over is then the formula's.
+    write_control_dict(dir.path(), e, o, kMaxCorrections, 1e-3);
     const SolveRun run = run_solver(dir.path(), e, o);
     const std::size_t cells = static_cast<std::size_t>(pm.cells);
     const DiscreteTraction traction(pm, e, o, read_cell_field(run.result_dir / "D", "vector", cells),

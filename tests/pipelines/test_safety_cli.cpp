@@ -182,9 +182,9 @@ TEST_CASE("one material, one phase and periodic one-material cells converge in s
     // OpenFOAM's own residual of y is noise here, which is why it is not the criterion.
     CHECK(e["component_residuals"][1].get<double>() > kSolverTolerance);
   }
-  // Two phases a hair apart: y is tiny, not zero, and OpenFOAM's own residual of it noise,
-  // so the case's own stop never comes; the solve runs again to where the measure was met
-  // and is written there.
+  // Two phases a hair apart: y is tiny, not zero, and OpenFOAM's own residual of it noise
+  // (about 6e-6, under the case's tolerance of 1e-5, so the case stops itself; where it
+  // would not, the solve runs again to where the measure was met: test_solve_monitor.cpp).
   const auto [hair, hair_seconds] =
       timed({"run", "-o", (dir / "hair").string(), "--solve", "--set", "phase.matrix.E=799.99999e9"});
   INFO(hair.err);
@@ -193,8 +193,6 @@ TEST_CASE("one material, one phase and periodic one-material cells converge in s
   const Json he = report_of(dir / "hair")["effective"];
   CHECK(he["final_residual"].get<double>() < kSolverTolerance);
   CHECK(he["result"] == "case/" + std::to_string(he["corrections"].get<int>()));
-  CHECK(test::read_file(dir / "hair/case/system/controlDict").find("where grainmesh's criterion was met") !=
-        std::string::npos);
   CHECK(he["modulus"].get<double>() == Approx(M).epsilon(1e-6));
   // A config with a single phase.
   std::ofstream(dir / "one.ini") << "[domain]\nwidth = 2\nheight = 1\n[tessellation]\ngrains = 20\n"

@@ -4,10 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <regex>
+#include <sstream>
 
+#include "export/foam.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;
@@ -45,7 +49,8 @@ TEST_CASE("a sweep solves every point, between the bounds, and resumes where it 
     const auto& point = plan["points"][std::stoi(entry.path().filename().string().substr(1, 3))];
     const auto report = nlohmann::json::parse(test::read_file(entry.path() / "report.json"));
     const auto& e = report["effective"];
-    CHECK(e["final_residual"].get<double>() < 1e-8);
+    CHECK(e["final_residual"].get<double>() < kSolverTolerance);
+    CHECK(e["stress_change"].get<double>() <= kStressTolerance);
     CHECK(e["modulus"].get<double>() > e["reuss"].get<double>());
     CHECK(e["modulus"].get<double>() < e["voigt"].get<double>());
     modulus[{point["tessellation.grains"], point["phase.matrix.fraction"]}] += e["modulus"].get<double>();
@@ -116,4 +121,52 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   const auto collect = test::run_grainmesh({"sweep", "--collect", (dir / "damaged").string()});
   CHECK(collect.exit_code == 4);
   CHECK(collect.err.find("plan.json: realisations is 1e+80, not a count from 1 to 100000") != std::string::npos);
+}
+
+TEST_CASE("a periodic sweep summarises every stiffness component and engineering constant with its 95 % CI",
+          "[cli][sweep][homogenise]") {
+  test::ScratchDir dir("sweep-periodic");
+  write_sweep(dir / "sweep.ini", "tessellation.grains = 20\nrealisations = 3\n");
+  const std::string out = (dir / "out").string();
+  const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "2", "--solve", "--set",
+                                "homogenise.boundary=periodic", "--set", "output.pictures=false"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto c = run_grainmesh({"sweep", "--collect", out});
+  INFO(c.err);
+  REQUIRE(c.exit_code == 0);
+  std::istringstream csv(test::read_file(dir / "out/summary.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  auto columns = [](const std::string& line) {
+    std::vector<std::string> v;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) v.push_back(cell);
+    if (!line.empty() && line.back() == ',') v.push_back("");
+    return v;
+  };
+  const auto names = columns(header), values = columns(row);
+  REQUIRE(names.size() == values.size());
+  auto value = [&](const std::string& name) {
+    const auto at = std::find(names.begin(), names.end(), name);
+    REQUIRE(at != names.end());
+    return std::stod(values[static_cast<std::size_t>(at - names.begin())]);
+  };
+  for (const char* q : {"C11", "C22", "C12", "C21", "C66", "C16", "C26", "E_x", "E_y", "nu_xy", "nu_yx", "G_xy"})
+    for (const char* s : {"_mean", "_std", "_ci95"}) CHECK(std::find(names.begin(), names.end(), q + std::string(s)) != names.end());
+  // The mean and CI of C11 from the three runs' reports (t = 4.303 for two degrees of freedom).
+  std::vector<double> c11;
+  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+    c11.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["effective"]["stiffness"]["C11"]
+                      .get<double>());
+  const double mean = (c11[0] + c11[1] + c11[2]) / 3;
+  double ss = 0.0;
+  for (double v : c11) ss += (v - mean) * (v - mean);
+  CHECK(value("C11_mean") == Approx(mean).epsilon(1e-9));
+  CHECK(value("C11_std") == Approx(std::sqrt(ss / 2)).epsilon(1e-6));
+  CHECK(value("C11_ci95") == Approx(4.303 * std::sqrt(ss / 2) / std::sqrt(3.0)).epsilon(1e-6));
+  CHECK(value("runs") == 3);
+  CHECK(fs::exists(dir / "out/summary.png"));
+  CHECK_FALSE(fs::exists(dir / "out/p000-r00/stress_xx.png"));
 }
