@@ -323,9 +323,11 @@ void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
         first = false;
       }
       cairo_stroke(c);
-      cairo_move_to(c, right + 15, legend_y);
-      cairo_line_to(c, right + 35, legend_y);
-      cairo_stroke(c);
+      if (!s.name.empty()) {
+        cairo_move_to(c, right + 15, legend_y);
+        cairo_line_to(c, right + 35, legend_y);
+        cairo_stroke(c);
+      }
       cairo_set_dash(c, nullptr, 0, 0);
     } else {
       for (const Vec2 p : s.points) {
@@ -334,9 +336,12 @@ void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
         cairo_arc(c, q.x, q.y, 3.5, 0, 2 * M_PI);
         cairo_fill(c);
       }
-      cairo_arc(c, right + 25, legend_y, 3.5, 0, 2 * M_PI);
-      cairo_fill(c);
+      if (!s.name.empty()) {
+        cairo_arc(c, right + 25, legend_y, 3.5, 0, 2 * M_PI);
+        cairo_fill(c);
+      }
     }
+    if (s.name.empty()) continue;  // drawn, not in the legend
     cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
     cairo_move_to(c, right + 42, legend_y + 4);
     cairo_show_text(c, s.name.c_str());

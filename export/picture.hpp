@@ -35,7 +35,7 @@ void write_tessellation_png(const std::filesystem::path& file, const Tessellatio
 
 // A 2D plot: series of points (markers) or polylines, with axes, ticks and a legend.
 struct PlotSeries {
-  std::string name;
+  std::string name;     // empty: drawn, but not in the legend
   std::vector<Vec2> points;
   bool line = false;    // a polyline through the points (in their order), dashed
   int colour = 0;       // index into a fixed palette

@@ -97,16 +97,16 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   // convergence.csv: a row per level, then the limit, the order and the coarsest level
   // within 0.1 % of the limit (in triangles per grain).
   std::string csv = "level,triangles_per_grain,cells,seconds";
-  for (const std::string& n : names) csv += "," + n;
+  for (const std::string& n : names) csv.append(",").append(n);
   csv += "\n";
   for (std::size_t k = 0; k < tpg.size(); ++k) {
     csv += std::to_string(k) + "," + to_text(tpg[k]) + "," + to_text(cells[k]) + "," + to_text(seconds[k], 4);
-    for (const auto& v : values) csv += "," + to_text(v[k], 10);
+    for (const auto& v : values) csv.append(",").append(to_text(v[k], 10));
     csv += "\n";
   }
   auto row = [&](const std::string& label, auto cell) {
     csv += label + ",,,";
-    for (std::size_t i = 0; i < names.size(); ++i) csv += "," + cell(i);
+    for (std::size_t i = 0; i < names.size(); ++i) csv.append(",").append(cell(i));
     csv += "\n";
   };
   row("richardson_limit", [&](std::size_t i) { return to_text(estimates[i].limit, 10); });
@@ -115,20 +115,27 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
       [&](std::size_t i) { return within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]) : std::string(); });
   write_text_file(dir / "convergence.csv", csv);
 
-  // convergence.png: each quantity's distance from its limit, in per cent, over the cells.
-  Plot plot{.x_label = "cells", .y_label = "deviation from the Richardson limit (%)", .series = {}};
+  // convergence.png: each quantity's distance from its limit, in per cent, over the cells;
+  // under mixed both estimators of the modulus from the traction value's limit, which the
+  // area average approaches from above.
+  const bool mixed = names.front() == "modulus";
+  Plot plot{.x_label = "cells",
+            .y_label = mixed ? "modulus: deviation from the Richardson limit (%)" : "deviation from the Richardson limit (%)",
+            .series = {}};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    PlotSeries s{.name = names[i], .points = {}, .line = true, .colour = static_cast<int>(i)};
-    for (std::size_t k = 0; k < cells.size(); ++k)
-      s.points.push_back({cells[k], 100.0 * (values[i][k] / estimates[i].limit - 1.0)});
-    plot.series.push_back(s);
+    const double limit = estimates[mixed ? 0 : i].limit;
+    PlotSeries line{.name = names[i], .points = {}, .line = true, .colour = static_cast<int>(i)};
+    for (std::size_t k = 0; k < cells.size(); ++k) line.points.push_back({cells[k], 100.0 * (values[i][k] / limit - 1.0)});
+    PlotSeries dots = line;
+    dots.name.clear();
+    dots.line = false;
+    plot.series.insert(plot.series.end(), {line, dots});
   }
-  PlotSeries band{.name = "+/- 0.1 %", .points = {{cells.front(), 0.1}, {cells.back(), 0.1}}, .line = true,
-                  .colour = static_cast<int>(names.size())};
-  plot.series.push_back(band);
-  band.name = "";
-  band.points = {{cells.front(), -0.1}, {cells.back(), -0.1}};
-  plot.series.push_back(band);
+  const int band_colour = 5;  // the plot palette's last: after every quantity's
+  plot.series.push_back({.name = "+/- 0.1 %", .points = {{cells.front(), 0.1}, {cells.back(), 0.1}}, .line = true,
+                         .colour = band_colour});
+  plot.series.push_back({.name = "", .points = {{cells.front(), -0.1}, {cells.back(), -0.1}}, .line = true,
+                         .colour = band_colour});
   write_plot_png(dir / "convergence.png", plot);
 
   write_text_file(dir / "config.ini", ini);
