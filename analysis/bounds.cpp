@@ -9,15 +9,16 @@ namespace grainmesh {
 
 namespace {
 
+// In-plane moduli (plane stress: the reduced lambda).
 struct Moduli {
-  double lambda, mu;  // in-plane Lame constants (plane stress: the reduced lambda)
+  double lambda, mu;
   double M() const { return lambda + 2 * mu; }
   double K() const { return lambda + mu; }  // 2D bulk
 };
 
 Moduli moduli(const FoamPhase& p, bool plane_stress) {
-  const double E = p.youngs_modulus, nu = p.poisson_ratio;
-  return {plane_stress ? E * nu / (1 - nu * nu) : E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};
+  const Lame l = lame(p, plane_stress);
+  return {l.lambda, l.mu};
 }
 
 // Hashin-Shtrikman in 2D for two well-ordered isotropic phases (the stiffer in both K

@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
+#include <cstring>
 
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
@@ -28,32 +28,43 @@ FieldValues parse_values(const std::filesystem::path& file, const std::string& t
   const std::size_t uniform = text.find("uniform", at);
   if (uniform == std::string::npos || uniform > end) throw GeometryError(file.string() + ": no values");
   const bool list = uniform >= 3 && text.compare(uniform - 3, 3, "non") == 0;
-  std::istringstream in(text.substr(uniform + 7));
+  // Numbers read in place (strtod), parentheses and white space skipped: a field of a
+  // million cells in well under a second.
+  const char* p = text.c_str() + uniform + 7;
+  bool ok = true;
+  auto skip = [&] {
+    while (*p == ' ' || *p == '\n' || *p == '\t' || *p == '\r' || *p == '(' || *p == ')') ++p;
+  };
   auto read_value = [&](std::vector<double>& out) {
-    char paren = 0;
-    if (f.width > 1) in >> paren;
     for (int c = 0; c < f.width; ++c) {
-      double v = 0.0;
-      in >> v;
+      skip();
+      char* end = nullptr;
+      const double v = std::strtod(p, &end);
+      if (end == p) ok = false;
+      p = end;
       out.push_back(v);
     }
-    if (f.width > 1) in >> paren;
   };
   if (list) {
-    std::string list_type;
-    std::size_t n = 0;
-    char paren = 0;
-    in >> list_type >> n >> paren;
-    if (!in || n != count)
+    while (*p == ' ') ++p;
+    if (std::strncmp(p, "List<", 5) != 0) throw GeometryError(file.string() + ": unreadable values");
+    p = std::strchr(p, '>');
+    if (p == nullptr) throw GeometryError(file.string() + ": unreadable values");
+    ++p;
+    skip();
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(p, &end, 10);
+    if (end == p || n != count)
       throw GeometryError(file.string() + ": " + std::to_string(n) + " values, the mesh has " + std::to_string(count));
-    f.values.reserve(n * static_cast<std::size_t>(f.width));
-    for (std::size_t k = 0; k < n; ++k) read_value(f.values);
+    p = end;
+    f.values.reserve(count * static_cast<std::size_t>(f.width));
+    for (std::size_t k = 0; k < count && ok; ++k) read_value(f.values);
   } else {
     std::vector<double> one;
     read_value(one);
     for (std::size_t k = 0; k < count; ++k) f.values.insert(f.values.end(), one.begin(), one.end());
   }
-  if (!in) throw GeometryError(file.string() + ": unreadable values");
+  if (!ok) throw GeometryError(file.string() + ": unreadable values");
   return f;
 }
 

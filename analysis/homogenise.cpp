@@ -1,5 +1,7 @@
 #include "analysis/homogenise.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -95,12 +97,16 @@ PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& c
       failed[k] = std::current_exception();
     }
   };
-  // Side by side, `parallel` at a time (each solver is one process).
-  for (int first = 0; first < 3; first += std::max(parallel, 1)) {
-    std::vector<std::thread> running;
-    for (int k = first; k < std::min(3, first + std::max(parallel, 1)); ++k) running.emplace_back(solve, k);
-    for (std::thread& t : running) t.join();
-  }
+  // Side by side, `parallel` at a time (each solver is one process), each taking the next
+  // case as it finishes one; the shear case first, as it takes longest.
+  const std::array<int, 3> order{2, 0, 1};
+  std::atomic<int> next{0};
+  std::vector<std::thread> running;
+  for (int w = 0; w < std::clamp(parallel, 1, 3); ++w)
+    running.emplace_back([&] {
+      for (int i = next++; i < 3; i = next++) solve(order[static_cast<std::size_t>(i)]);
+    });
+  for (std::thread& t : running) t.join();
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
   for (int k = 0; k < 3; ++k) {

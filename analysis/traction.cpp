@@ -33,12 +33,6 @@ FaceGeometry face_geometry(const PolyMesh& pm, int f, double scale, double thick
   return {S, centre, norm(S)};
 }
 
-double stiffness(const FoamPhase& p, bool plane_stress) {
-  const double E = p.youngs_modulus, nu = p.poisson_ratio;
-  const double lambda = plane_stress ? E * nu / ((1 + nu) * (1 - nu)) : E * nu / ((1 + nu) * (1 - 2 * nu));
-  return E / (1 + nu) + lambda;  // 2 mu + lambda; rho is 1
-}
-
 }  // namespace
 
 int patch_index(const PolyMesh& pm, const std::string& name) {
@@ -60,7 +54,7 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, cons
   gamma_.resize(pm.cells);
   for (int c = 0; c < pm.cells; ++c) {
     centre_[c] = scale_ * triangle_centroid(m.mesh, c);
-    gamma_[c] = stiffness(m.phases[m.phase[c]], o.plane_stress);
+    gamma_[c] = lame(m.phases[m.phase[c]], o.plane_stress).gamma();
   }
   patch_of_face_.assign(pm.faces(), -1);
   jump_.assign(pm.patches.size(), {0.0, 0.0});

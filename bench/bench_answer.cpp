@@ -29,7 +29,7 @@ Json read_json(const fs::path& file) {
 }
 
 // Runs grainmesh with `args`; throws with its stderr when it fails.
-void grainmesh(const std::string& args, const fs::path& log) {
+void run_grainmesh(const std::string& args, const fs::path& log) {
   const std::string command = std::string(GRAINMESH_BINARY) + " " + args + " > " + log.string() + " 2>&1";
   if (std::system(command.c_str()) != 0) {
     std::ifstream in(log);
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       // The limit: the study's Richardson estimate of each quantity.
       const fs::path study = dir / ("converge-" + std::to_string(cell.grains) + "-" + boundary);
       const int levels = cell.grains >= 10000 ? 3 : 5;
-      grainmesh("converge -o " + study.string() + " --levels " + std::to_string(levels) + " --start 25 " +
+      run_grainmesh("converge -o " + study.string() + " --levels " + std::to_string(levels) + " --start 25 " +
                     cell_args(cell, boundary) + " --set export.format=binary --set output.pictures=false",
                 dir / "converge.log");
       const Json limits = read_json(study / "report.json")["study"];
@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
           const fs::path out = dir / "run";
           fs::remove_all(out);
           const auto start = std::chrono::steady_clock::now();
-          grainmesh("run -o " + out.string() + " --solve --quiet " + cell_args(cell, boundary) +
+          run_grainmesh("run -o " + out.string() + " --solve --quiet " + cell_args(cell, boundary) +
                         " --set export.format=binary --set output.pictures=false --set mesh.triangles_per_grain=" +
                         std::to_string(tpg),
                     dir / "run.log");

@@ -37,12 +37,15 @@ struct SideFace {
 
 }  // namespace
 
+Lame lame(const FoamPhase& p, bool plane_stress) {
+  const double E = p.youngs_modulus, nu = p.poisson_ratio;
+  return {plane_stress ? E * nu / ((1 + nu) * (1 - nu)) : E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};
+}
+
 double stiffness_contrast(const ExportMesh& m, const FoamOptions& o) {
   double stiff_min = 1e300, stiff_max = 0.0;
   for (const FoamPhase& p : m.phases) {
-    const double nu = p.poisson_ratio, E = p.youngs_modulus;
-    const double lambda = o.plane_stress ? E * nu / (1 - nu * nu) : E * nu / ((1 + nu) * (1 - 2 * nu));
-    const double stiffness = E / (1 + nu) + lambda;  // 2 mu + lambda
+    const double stiffness = lame(p, o.plane_stress).gamma();
     stiff_min = std::min(stiff_min, stiffness);
     stiff_max = std::max(stiff_max, stiffness);
   }

@@ -104,6 +104,16 @@ struct PolyMesh {
   int faces() const { return static_cast<int>(owner.size()); }
 };
 
+// A phase's in-plane Lame constants as solidDisplacementFoam has them (rho = 1): mu =
+// E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)) in plane strain, E nu / ((1 +
+// nu)(1 - nu)) in plane stress; gamma = 2 mu + lambda is the stiffness its implicit
+// operator carries.
+struct Lame {
+  double lambda = 0.0, mu = 0.0;
+  double gamma() const { return lambda + 2 * mu; }
+};
+Lame lame(const FoamPhase& phase, bool plane_stress);
+
 // A grain mesh with its tessellation's cell and phases.
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
 
