@@ -12,9 +12,6 @@
 
 namespace grainmesh {
 
-namespace {
-constexpr double kCyclicTighter = 0.01;
-}  // namespace
 
 SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
                     const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
@@ -54,14 +51,6 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   SolveMonitor monitor(watch);
   int status = 0, start = 0, total = 0;
   double tighter = 1.0;
-  if (o.cyclic) {
-    // A periodic case's stress settles later than a mixed one's (measured: at a residual
-    // near 1e-7 under a normal strain, 1e-8 under shear); started there, it rarely needs
-    // continuing, which costs a restart and the explicit term's re-initialisation.
-    tighter = kCyclicTighter;
-    watch.case_tolerance = stop.tolerance * tighter;
-    write_control_dict(case_dir, m, o, kMaxCorrections, tighter);
-  }
   for (int part = 0;; ++part) {
     if (part > 0) {
       std::filesystem::rename(log, log.string() + "." + std::to_string(part));

@@ -140,9 +140,10 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
 std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& options);
 
 // The case's own stop (runTimeControl): OpenFOAM's initial residual of D below
-// `tolerance`, of one component alone when the other's exact solution is zero (one
-// material under a load that moves it along one axis only: the default load, or a cyclic
-// case's normal strain).
+// `tolerance` (kSolverTolerance, a hundredth of it for a cyclic case), of one component
+// alone, at a hundredth again, when the other's exact solution is zero (one material
+// under a load that moves it along one axis only: the default load, or a cyclic case's
+// normal strain).
 struct CaseStop {
   int alone = -1;  // the component watched alone (0 x, 1 y); -1 both
   double tolerance = kSolverTolerance;
