@@ -63,7 +63,19 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
     const std::string name = "tpg-" + std::to_string(n);
     const Config level = Config::from_text(ini, c.source(), {"mesh.triangles_per_grain=" + std::to_string(n)});
     std::fprintf(stderr, "grainmesh converge: level %d of %d: %d triangles per grain\n", k + 1, o.levels, n);
-    run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+    try {
+      run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+    } catch (const SolveError& e) {
+      // Kept for a look, as a run keeps its failed solve: the study so far as DIR.failed,
+      // the message naming the log where it now is.
+      std::string what = e.what();
+      const std::string staging = dir.string(), kept = staged.failed_dir().string();
+      for (std::size_t at = what.find(staging); at != std::string::npos; at = what.find(staging, at + kept.size()))
+        what.replace(at, staging.size(), kept);
+      write_report(staged, Json{{"config", c.source()}, {"levels", levels}, {"failed", what}});
+      staged.keep_as_failed();
+      throw SolveError(what);
+    }
     const Json report = Json::parse(read_text_file(dir / name / "report.json"));
     const auto q = quantities(report.at("effective"));
     if (names.empty()) {

@@ -206,6 +206,20 @@ TEST_CASE("grainmesh converge: the default cell's mixed modulus at the default d
     CHECK(csv.find("\nrichardson_limit,") != std::string::npos);
     CHECK(fs::file_size(out / "convergence.png") > 5000);
   }
+  // A level whose solve fails: the study so far kept as DIR.failed, the message naming the
+  // log where it is.
+  const auto failed = test::run_grainmesh({"converge", "-o", (dir / "diverges").string(), "--levels", "3", "--set",
+                                           "phase.matrix.E=30e9", "--set", "export.stiffness_interpolation=harmonic"});
+  CHECK(failed.exit_code == 6);
+  // After the progress lines and warnings, the one error line.
+  const auto error_at = failed.err.find("grainmesh: error: D: solidDisplacementFoam diverges");
+  REQUIRE(error_at != std::string::npos);
+  CHECK(failed.err.find('\n', error_at) == failed.err.size() - 1);
+  CHECK_FALSE(fs::exists(dir / "diverges"));
+  const auto log_at = failed.err.find("see ", error_at);
+  REQUIRE(log_at != std::string::npos);
+  CHECK(fs::exists(failed.err.substr(log_at + 4, failed.err.size() - log_at - 5)));
+  CHECK(report_of(dir / "diverges.failed").contains("failed"));
   const std::vector<test::Refusal> refusals{
       {{"converge", "--levels", "1"}, 2, "converge: --levels 1: give 3 to 12"},
       {{"converge", "--levels", "0"}, 2, "converge: --levels 0: give 3 to 12"},
