@@ -168,6 +168,12 @@ int export_main(const std::vector<std::string>& args) {
   return kOk;
 }
 
+// A run config: the CONFIG argument's file, or the embedded default, with --set.
+Config run_config(const po::variables_map& vm) {
+  return vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
+                            : Config::from_text(default_run_config(), "default config", overrides(vm));
+}
+
 // `grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]`: without CONFIG, the embedded default.
 int run_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh run [CONFIG] -o OUT [--solve] [--quiet] [--set KEY=VALUE ...]");
@@ -179,8 +185,7 @@ int run_main(const std::vector<std::string>& args) {
   if (!parsed) return kOk;
   const po::variables_map& vm = *parsed;
   if (!vm.count("output")) throw ConfigError("run: missing -o OUT (the output directory)");
-  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
-                                           : Config::from_text(default_run_config(), "default config", overrides(vm));
+  const Config config = run_config(vm);
   naming_errors(config, [&] {
     run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("quiet") > 0);
   });
@@ -198,8 +203,7 @@ int converge_main(const std::vector<std::string>& args) {
   if (!parsed) return kOk;
   const po::variables_map& vm = *parsed;
   if (!vm.count("output")) throw ConfigError("converge: missing -o DIR (the study's directory)");
-  const Config config = vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
-                                           : Config::from_text(default_run_config(), "default config", overrides(vm));
+  const Config config = run_config(vm);
   const ConvergeOptions o{.levels = vm["levels"].as<int>(), .start = vm["start"].as<int>()};
   naming_errors(config, [&] { run_converge_command(config, vm["output"].as<std::string>(), o); });
   return kOk;

@@ -121,6 +121,14 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
   CHECK(e["engineering"]["E_x"].get<double>() == Approx(m.E / (1 - m.nu * m.nu)).epsilon(1e-3));  // plane strain
   CHECK(e["engineering"]["nu_xy"].get<double>() == Approx(m.nu / (1 - m.nu)).epsilon(1e-3));
   CHECK(e["anisotropy"]["shear"].get<double>() == Approx(1.0).epsilon(1e-3));
+  CHECK(e["anisotropy"]["normal"].get<double>() < 1e-3);
+  // Every reported constant against its exact value (plane strain, isotropic).
+  CHECK(e["engineering"]["E_y"].get<double>() == Approx(m.E / (1 - m.nu * m.nu)).epsilon(1e-3));
+  CHECK(e["engineering"]["nu_yx"].get<double>() == Approx(m.nu / (1 - m.nu)).epsilon(1e-3));
+  CHECK(e["engineering"]["G_xy"].get<double>() == Approx(m.mu()).epsilon(1e-3));
+  CHECK(e["bulk_modulus"].get<double>() == Approx(m.lambda() + m.mu()).epsilon(1e-3));
+  CHECK(e["shear_modulus"].get<double>() == Approx(m.mu()).epsilon(1e-3));
+  CHECK(e["volume_average"]["stiffness"]["C11"].get<double>() == Approx(m.M()).epsilon(1e-3));
   // The shear case's stress settles only well after its residual reaches the case's stop:
   // continued from where it stopped (its first run's log kept), and settled.
   CHECK(fs::exists(dir / "one/case_xy/log.solidDisplacementFoam.1"));
