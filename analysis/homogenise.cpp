@@ -79,7 +79,6 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
 PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& case_dirs, const ExportMesh& m,
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
                                    const std::array<std::filesystem::path, 3>& cases_shown_as) {
-  setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // before any thread starts a solver
   const double strain = load_strain(m.cell, m.phases, o);
   PeriodicHomogenised h;
   std::array<std::exception_ptr, 3> failed;

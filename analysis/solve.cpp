@@ -21,7 +21,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   // Errors name the field, and the load case when there are several.
   const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
   const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
-  setenv("WM_PROJECT_DIR", "/usr/share/openfoam", /*overwrite=*/0);  // OpenFOAM's programs need it
+  const std::vector<std::string> environment = foam_environment();
 
   // A thousand times the displacement the load can give is divergence, not an answer.
   const double load_scale = load_strain(m.cell, m.phases, o) * std::max(m.cell.width(), m.cell.height());
@@ -37,7 +37,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   // One run of the solver, followed: killed as soon as it stalls, diverges or will not
   // stop on its own.
   auto solve = [&](SolveMonitor& monitor) {
-    return run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam",
+    return run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam", environment,
                      [&](std::string_view text) {
                        const SolveMonitor::State s = monitor.feed(text);
                        return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;

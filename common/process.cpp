@@ -21,8 +21,24 @@ void die_with_parent(pid_t parent) {
 
 int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
               const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
-              const LogWatcher& watch) {
+              const std::vector<std::string>& environment, const LogWatcher& watch) {
   deadline.check("before " + what + " started");
+  // The child's environment, built before fork (the child may only exec).
+  std::vector<std::string> variables = environment;
+  auto replaced = [&](std::string_view entry) {
+    const std::string_view name = entry.substr(0, entry.find('=') + 1);
+    for (const std::string& v : environment)
+      if (std::string_view(v).substr(0, v.find('=') + 1) == name) return true;
+    return false;
+  };
+  for (char** e = environ; *e != nullptr; ++e)
+    if (!replaced(*e)) variables.emplace_back(*e);
+  std::vector<char*> envp;
+  for (std::string& v : variables) envp.push_back(v.data());
+  envp.push_back(nullptr);
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
   // The log is made here, so that it can be followed from its first byte.
   const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (out < 0) throw IoError(log.string() + ": cannot write the log of " + what);
@@ -40,10 +56,7 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
     if (chdir(dir.c_str()) != 0) _exit(127);
     dup2(out, STDOUT_FILENO);  // dup2 clears close-on-exec on the copies
     dup2(out, STDERR_FILENO);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execvp(args[0], args.data());
+    execvpe(args[0], args.data(), envp.data());
     _exit(127);
   }
   close(out);

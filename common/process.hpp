@@ -24,11 +24,12 @@ void die_with_parent(pid_t parent);
 using LogWatcher = std::function<bool(std::string_view appended)>;
 
 // Runs `argv` (looked up in PATH) in directory `dir`, stdout and stderr into `log`, and
-// waits for it; `watch`, when given, follows the log as it grows. Kills it when
+// waits for it; `environment` (NAME=value entries) is added to this process's environment
+// for it, replacing variables of the same name; `watch`, when given, follows the log as it grows. Kills it when
 // `deadline` passes and throws TimeLimitError saying `what` was running. Returns its exit
 // code (128 + the signal when a signal ended it; 127 when it could not be started).
 int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
               const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
-              const LogWatcher& watch = {});
+              const std::vector<std::string>& environment = {}, const LogWatcher& watch = {});
 
 }  // namespace grainmesh

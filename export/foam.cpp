@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <string_view>
@@ -463,6 +464,14 @@ std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& o) {
   return {o.displacement / m.cell.width(), 0.0, 0.0};
 }
 
+std::vector<std::string> foam_environment() {
+  const char* project = std::getenv("WM_PROJECT_DIR");
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  return {"WM_PROJECT_DIR=" + std::string(project != nullptr && *project != '\0' ? project : kFoamProjectDir),
+          "GLIBC_TUNABLES=" + std::string(kFoamMallocTunables) +
+              (tunables != nullptr && *tunables != '\0' ? ":" + std::string(tunables) : "")};
+}
+
 CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
   // One material under a load that moves it along one axis only: the other component is
   // exactly zero and its residual noise. Its error follows the loaded one's (its range
@@ -568,14 +577,26 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
   write_scalar_field(dir / "0/E", "E", "[1 -1 -2 0 0 0 0]", E, pm, o.binary);
   write_scalar_field(dir / "0/nu", "nu", "[0 0 0 0 0 0 0]", nu, pm, o.binary);
 
-  // Displacement: the load on `right`, symmetry or traction-free elsewhere.
+  // Displacement: the load on `right`, symmetry or traction-free elsewhere. The solve
+  // starts from the displacement a uniform cell would take under the imposed mean strain
+  // (left and bottom held): only the fluctuation is left to the corrections.
   const std::string d = number_text(o.displacement * o.convert_to_meters);
-  std::string D = dictionary_header("0", "D");
-  D.replace(D.find("class       dictionary"), std::string("class       dictionary").size(), "class       volVectorField");
-  D += "dimensions      [0 1 0 0 0 0 0];\n\ninternalField   uniform (0 0 0);\n\nboundaryField\n{\n";
+  const std::array<double, 3> mean_strain = o.cyclic ? cyclic_strain(m, o)
+                                            : o.traction == 0.0
+                                                ? std::array<double, 3>{o.displacement / m.cell.width(), 0.0, 0.0}
+                                                : std::array<double, 3>{};
+  std::vector<double> initial(3 * static_cast<std::size_t>(pm.cells), 0.0);
+  for (int t = 0; t < pm.cells; ++t) {
+    const Vec2 c = triangle_centroid(m.mesh, t) - m.cell.lo;
+    initial[3 * t] = (mean_strain[0] * c.x + mean_strain[2] * c.y) * o.convert_to_meters;
+    initial[3 * t + 1] = (mean_strain[2] * c.x + mean_strain[1] * c.y) * o.convert_to_meters;
+  }
+  FoamFile D(dir / "0/D", "volVectorField", "0", "D", o.binary);
+  D.text("dimensions      [0 1 0 0 0 0 0];\n\ninternalField   nonuniform List<vector> ").vectors(initial);
+  D.text(";\n\nboundaryField\n{\n");
   for (const PolyMesh::Patch& p : pm.patches) {
     std::string entry = constraint_entry(p);
-    const std::array<double, 3> e = o.cyclic ? cyclic_strain(m, o) : std::array<double, 3>{};
+    const std::array<double, 3>& e = mean_strain;
     const bool x_pair = p.name == "left" || p.name == "right";
     const double L = (x_pair ? m.cell.width() : m.cell.height()) * o.convert_to_meters;
     const double jump_x = (x_pair ? e[0] : e[2]) * L, jump_y = (x_pair ? e[2] : e[1]) * L;
@@ -599,10 +620,9 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
       entry = "type            tractionDisplacement;\n        traction        uniform (0 0 0);\n"
               "        pressure        uniform 0;\n        value           uniform (0 0 0);";
     }
-    D += "    " + p.name + "\n    {\n        " + entry + "\n    }\n";
+    D.text("    " + p.name + "\n    {\n        " + entry + "\n    }\n");
   }
-  D += "}\n";
-  write_text(dir / "0/D", D);
+  D.text("}\n").write();
 
   write_text(dir / "constant/mechanicalProperties",
              dictionary_header("constant", "mechanicalProperties") +
@@ -634,7 +654,8 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
                  number_text(kSolverTolerance) + ";\n}\n");
   write_text(dir / "Allrun",
              "#!/bin/sh\n# Checks the mesh and solves; logs in log.*.\ncd \"${0%/*}\" || exit 1\n"
-             "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\"\n"
+             "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-" + std::string(kFoamProjectDir) + "}\"\n"
+             "export GLIBC_TUNABLES=\"" + kFoamMallocTunables + "${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}\"\n"
              "checkMesh > log.checkMesh 2>&1 || { echo \"checkMesh failed: see log.checkMesh\"; exit 1; }\n"
              "solidDisplacementFoam > log.solidDisplacementFoam 2>&1 || { echo \"solidDisplacementFoam failed: see "
              "log.solidDisplacementFoam\"; exit 1; }\n");

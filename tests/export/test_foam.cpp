@@ -248,3 +248,29 @@ TEST_CASE("cyclic cases: the displacement jump across left/right loads the perio
   CHECK(with_cyclic.sigma_xx == Approx(with_patches.sigma_xx).epsilon(0.02));
   CHECK_THROWS_AS(write_foam_case(periodic.path() / "x", e, {.cyclic = true, .uniaxial = true}), ConfigError);
 }
+
+TEST_CASE("the displacement starts from the field a uniform cell takes under the imposed mean strain", "[export]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export_mesh(t, m);
+  // The default load (right moved in x, symmetry elsewhere) and a periodic mixed strain.
+  const FoamOptions mixed{};
+  const FoamOptions cyclic{.cyclic = true, .strain = {1e-3, -4e-4, 2.5e-4}};
+  for (const FoamOptions& o : {mixed, cyclic}) {
+    test::ScratchDir dir("initial");
+    const PolyMesh pm = write_foam_case(dir.path(), e, o);
+    const FieldValues D = read_cell_field(dir / "0/D", "vector", static_cast<std::size_t>(pm.cells));
+    const std::array<double, 3> strain =
+        o.cyclic ? cyclic_strain(e, o) : std::array<double, 3>{o.displacement / e.cell.width(), 0.0, 0.0};
+    if (o.cyclic) CHECK(strain == o.strain);
+    double worst = 0.0;
+    for (int k = 0; k < pm.cells; ++k) {
+      const Vec2 c = triangle_centroid(e.mesh, k) - e.cell.lo;
+      const Vec2 expected{strain[0] * c.x + strain[2] * c.y, strain[2] * c.x + strain[1] * c.y};
+      worst = std::max({worst, std::abs(D[k][0] - expected.x * o.convert_to_meters),
+                        std::abs(D[k][1] - expected.y * o.convert_to_meters), std::abs(D[k][2])});
+    }
+    // Held at left and bottom, the cell's far sides moved by the mean strain times its size.
+    CHECK(worst <= 1e-12 * std::abs(strain[0]) * e.cell.width() * o.convert_to_meters);
+  }
+}

@@ -1,0 +1,59 @@
+// Child processes: the environment they are given, their exit codes, and the watcher
+// that ends them.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cstdlib>
+
+#include "common/process.hpp"
+#include "common/text_file.hpp"
+#include "export/foam.hpp"
+#include "helpers.hpp"
+
+using namespace grainmesh;
+
+TEST_CASE("a child gets the environment it is given on top of this process's", "[process]") {
+  test::ScratchDir dir("process-env");
+  setenv("GRAINMESH_TEST_REPLACED", "outer", 1);
+  setenv("GRAINMESH_TEST_KEPT", "kept", 1);
+  const int code = run_child({"sh", "-c", "echo \"$GRAINMESH_TEST_REPLACED $GRAINMESH_TEST_ADDED $GRAINMESH_TEST_KEPT\""},
+                             dir.path(), dir / "log", Deadline(), "sh",
+                             {"GRAINMESH_TEST_REPLACED=inner", "GRAINMESH_TEST_ADDED=added"});
+  CHECK(code == 0);
+  CHECK(read_text_file(dir / "log", "the log") == "inner added kept\n");
+  // This process's own environment is left as it was.
+  CHECK(std::string(std::getenv("GRAINMESH_TEST_REPLACED")) == "outer");
+  CHECK(std::getenv("GRAINMESH_TEST_ADDED") == nullptr);
+  unsetenv("GRAINMESH_TEST_REPLACED");
+  unsetenv("GRAINMESH_TEST_KEPT");
+}
+
+TEST_CASE("a child's exit code is returned; a watcher that says stop kills it", "[process]") {
+  test::ScratchDir dir("process-exit");
+  CHECK(run_child({"sh", "-c", "exit 3"}, dir.path(), dir / "log", Deadline(), "sh") == 3);
+  CHECK(run_child({"grainmesh-no-such-program"}, dir.path(), dir / "log", Deadline(), "nothing") == 127);
+  const auto start = std::chrono::steady_clock::now();
+  const int killed = run_child({"sh", "-c", "echo stop; exec sleep 30"}, dir.path(), dir / "log", Deadline(), "sh", {},
+                               [](std::string_view text) { return text.find("stop") != std::string_view::npos; });
+  CHECK(killed == 128 + 9);
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 10.0);
+}
+
+TEST_CASE("OpenFOAM runs with the Debian package's directory and glibc told to keep freed memory", "[process][foam]") {
+  const char* had_project = std::getenv("WM_PROJECT_DIR");
+  const std::string project = had_project != nullptr ? had_project : "";
+  unsetenv("WM_PROJECT_DIR");
+  unsetenv("GLIBC_TUNABLES");
+  const std::string tunables = "GLIBC_TUNABLES=" + std::string(kFoamMallocTunables);
+  CHECK(foam_environment() == std::vector<std::string>{"WM_PROJECT_DIR=/usr/share/openfoam", tunables});
+  // A user's own settings are kept: their directory, their tunables after ours (the last wins).
+  setenv("WM_PROJECT_DIR", "/opt/openfoam", 1);
+  setenv("GLIBC_TUNABLES", "glibc.malloc.tcache_count=0", 1);
+  CHECK(foam_environment() ==
+        std::vector<std::string>{"WM_PROJECT_DIR=/opt/openfoam", tunables + ":glibc.malloc.tcache_count=0"});
+  unsetenv("GLIBC_TUNABLES");
+  if (had_project != nullptr)
+    setenv("WM_PROJECT_DIR", project.c_str(), 1);
+  else
+    unsetenv("WM_PROJECT_DIR");
+}
