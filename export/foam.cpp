@@ -439,7 +439,10 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step
          (stop.alone >= 0 ? ";\n    // the loaded component alone (at a hundredth of it): one material keeps the other exactly\n"
                             "    // zero, and its residual is noise"
                           : "") +
-         ".\n    converged\n    {\n        type            runTimeControl;\n        libs            (utilityFunctionObjects);\n"
+         ";\n    // not before the effective stress has a full window of corrections to be judged by (a\n"
+         "    // solve that starts at its answer, one material, would stop at once and not be known settled).\n"
+         "    converged\n    {\n        type            runTimeControl;\n        libs            (utilityFunctionObjects);\n"
+         "        timeStart       " + std::to_string(start + kStressWindow + 1) + ";\n"
          "        conditions\n        {\n            residual\n            {\n"
          "                type    equationInitialResidual;\n                fields  (" +
          (stop.alone >= 0 ? "D.component(" + std::to_string(stop.alone) + ")" : std::string("D")) + ");\n"

@@ -407,13 +407,14 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   end_stage_line();
 
   if (!summary) return;
-  std::string cases;
-  for (const std::string& d : case_dirs) cases += (cases.empty() ? "" : ", ") + d + "/";
-  std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{tessellation.json, "
-              "tessellation.png, mesh.vtu, mesh.png, %s, config.ini, report.json}\n  each case's Allrun runs "
-              "checkMesh and solidDisplacementFoam\n",
+  // What is there (the pictures are optional), directories marked.
+  std::string written;
+  for (const std::string& name : entry_names(out))
+    written += (written.empty() ? "" : ", ") + name + (std::filesystem::is_directory(out / name) ? "/" : "");
+  std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{%s}\n  each case's "
+              "Allrun runs checkMesh and solidDisplacementFoam\n",
               t.stats.grains, m.mesh.triangles.size(), q.q_min, q.q_mean, since(start), out.string().c_str(),
-              cases.c_str());
+              written.c_str());
   if (solve && boundary == Boundary::mixed) {
     const Json& eff = report["effective"];
     std::printf("  solved: effective modulus %.4g Pa", eff["modulus"].get<double>());

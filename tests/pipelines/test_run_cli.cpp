@@ -45,6 +45,14 @@ TEST_CASE("grainmesh run without a config writes the whole OUT layout, and its c
     ++compared;
   }
   CHECK(compared >= 15);
+  CHECK(r.out.find("/{case/, config.ini, mesh.json, mesh.png, mesh.vtu, report.json, tessellation.json, "
+                   "tessellation.png}") != std::string::npos);
+
+  // Without pictures, the summary names what was written, and no picture.
+  const auto bare = run_grainmesh({"run", "-o", (dir / "bare").string(), "--set", "output.pictures=false"});
+  REQUIRE(bare.exit_code == 0);
+  CHECK(!fs::exists(dir / "bare/mesh.png"));
+  CHECK(bare.out.find("/{case/, config.ini, mesh.json, mesh.vtu, report.json, tessellation.json}") != std::string::npos);
 }
 
 TEST_CASE("bad run input gives one line naming it and never a report", "[cli][run]") {
