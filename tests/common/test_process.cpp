@@ -28,7 +28,7 @@ TEST_CASE("a child gets the environment it is given on top of this process's", "
   unsetenv("GRAINMESH_TEST_KEPT");
 }
 
-TEST_CASE("a child's exit code is returned; a watcher that says stop kills it", "[process]") {
+TEST_CASE("a child's exit code is returned, and a watcher that says stop kills it", "[process]") {
   test::ScratchDir dir("process-exit");
   CHECK(run_child({"sh", "-c", "exit 3"}, dir.path(), dir / "log", Deadline(), "sh") == 3);
   CHECK(run_child({"grainmesh-no-such-program"}, dir.path(), dir / "log", Deadline(), "nothing") == 127);

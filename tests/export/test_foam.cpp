@@ -12,6 +12,7 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
 #include "common/errors.hpp"
+#include "common/text_file.hpp"
 #include "export/foam.hpp"
 #include "helpers.hpp"
 #include "mesh/grain_mesh.hpp"
@@ -273,4 +274,29 @@ TEST_CASE("the displacement starts from the field a uniform cell takes under the
     // Held at left and bottom, the cell's far sides moved by the mean strain times its size.
     CHECK(worst <= 1e-12 * std::abs(strain[0]) * e.cell.width() * o.convert_to_meters);
   }
+}
+
+TEST_CASE("a case that stops itself before its effective stress has settled is continued until it has",
+          "[export][openfoam]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export_mesh(t, m);
+  test::ScratchDir loose("loose"), as_written("as-written");
+  const PolyMesh pm = write_foam_case(loose.path(), e, {});
+  write_foam_case(as_written.path(), e, {});
+  // The case's own stop made a thousand times looser than written: it stops long before
+  // the stress settles.
+  const fs::path control = loose / "system/controlDict";
+  const std::string text = test::read_file(control);
+  const std::regex stop_value(R"(value\s+([0-9.eE+-]+);)");
+  std::smatch found;
+  REQUIRE(std::regex_search(text, found, stop_value));
+  CHECK(std::stod(found[1]) == kSolverTolerance);
+  write_text_file(control, std::regex_replace(text, stop_value, "value   0.01;"));
+  const Homogenised continued = solve_and_homogenise(loose.path(), e, pm, {});
+  const Homogenised straight = solve_and_homogenise(as_written.path(), e, pm, {});
+  CHECK(fs::exists(loose / "log.solidDisplacementFoam.1"));  // the first run's log, kept
+  CHECK(!fs::exists(as_written / "log.solidDisplacementFoam.1"));
+  CHECK(continued.run.stress_change <= kStressTolerance);
+  CHECK(continued.modulus == Approx(straight.modulus).epsilon(1e-5));
 }
