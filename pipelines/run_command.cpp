@@ -355,6 +355,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
               {"seed", tess_job.seed},
               {"grains", t.stats.grains},
               {"phases", phases},
+              {"statistics", descriptors_json(t)},
               {"mesh",
                {{"points", m.mesh.points.size()},
                 {"cells", m.mesh.triangles.size()},

@@ -337,6 +337,10 @@ void collect_sweep(const std::filesystem::path& dir) {
   auto num = [](double v) { return std::isnan(v) ? std::string() : to_text(v, 10); };
   // The rows, and each row's tensor columns: written once it is known whether any run has them.
   std::vector<std::pair<std::string, std::string>> lines;
+  // The WC-Co descriptors of every run (its report's statistics), per row, by column name
+  // (e.g. contiguity_WC); the names in the order first met.
+  std::vector<std::map<std::string, std::array<double, 3>>> descriptor_rows;
+  std::vector<std::string> descriptor_names;
   bool any_tensor = false;
   std::size_t rows = 0;
   const auto& points = plan.at("points");
@@ -352,6 +356,7 @@ void collect_sweep(const std::filesystem::path& dir) {
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;
     std::vector<std::vector<double>> tensor(kTensor.size());
+    std::map<std::string, std::vector<double>> descriptors;
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
     int found = 0;
     for (int r = 0; r < realisations; ++r) {
@@ -369,6 +374,14 @@ void collect_sweep(const std::filesystem::path& dir) {
       ++found;
       cells += j["mesh"]["cells"].get<double>();
       q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
+      if (j.contains("statistics"))
+        for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
+          for (const auto& [phase, value] : j["statistics"][key].items()) {
+            const std::string name = std::string(key) + "_" + phase;
+            if (std::find(descriptor_names.begin(), descriptor_names.end(), name) == descriptor_names.end())
+              descriptor_names.push_back(name);
+            if (value.is_number()) descriptors[name].push_back(value.get<double>());
+          }
       if (!j.contains("effective")) continue;
       const Json& e = j["effective"];
       if (e.contains("stiffness")) {
@@ -410,6 +423,8 @@ void collect_sweep(const std::filesystem::path& dir) {
       for (const double v3 : ts) tensor_columns.append(",").append(num(v3));
     }
     lines.emplace_back(line, tensor_columns);
+    descriptor_rows.emplace_back();
+    for (const auto& [name, values] : descriptors) descriptor_rows.back()[name] = stats(values);
     ++rows;
   }
   std::string csv;
@@ -418,8 +433,17 @@ void collect_sweep(const std::filesystem::path& dir) {
   // Without periodic runs the tensor's columns are left out.
   if (any_tensor)
     for (const auto& [group, q] : kTensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
+  for (const std::string& name : descriptor_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
   csv += "\n";
-  for (const auto& [line, tensor_columns] : lines) csv += line + (any_tensor ? tensor_columns : std::string()) + "\n";
+  for (std::size_t row = 0; row < lines.size(); ++row) {
+    csv += lines[row].first + (any_tensor ? lines[row].second : std::string());
+    for (const std::string& name : descriptor_names) {
+      const auto found = descriptor_rows[row].find(name);
+      const std::array<double, 3> v = found != descriptor_rows[row].end() ? found->second : std::array<double, 3>{NAN, NAN, NAN};
+      for (const double x : v) csv.append(",").append(num(x));
+    }
+    csv += "\n";
+  }
   // Said before the summary is written, so nobody mistakes a partial summary for a whole one.
   Warnings warnings;
   auto list = [](const std::vector<std::string>& names) {

@@ -232,6 +232,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   report["periodic"] = t.periodic;
   report["grains"] = s.grains;
   report["phases"] = phases_json(t);
+  report["statistics"] = descriptors_json(t);
   report["removed_grains"] = s.removed_grains;
   report["area_mean"] = s.area_mean;
   report["area_std"] = s.area_std;

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/descriptors.hpp"
 #include "tessellate/steps.hpp"
 
 namespace grainmesh {
@@ -432,6 +433,12 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     st.phases[gr.phase].grains += gr.matrix ? 0 : 1;
   }
   validate(t);
+  const std::vector<PhaseDescriptors> descriptors = phase_descriptors(t);
+  for (std::size_t p = 0; p < descriptors.size(); ++p) {
+    st.phases[p].contiguity = descriptors[p].contiguity;
+    st.phases[p].intercept_length = descriptors[p].intercept_length;
+    st.phases[p].mean_free_path = descriptors[p].mean_free_path;
+  }
   return t;
 }
 

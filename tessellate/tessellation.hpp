@@ -71,6 +71,11 @@ struct PhaseStats {
   double target_fraction = 0.0;
   double achieved_fraction = 0.0;
   int grains = 0;
+  // The WC-Co descriptors (descriptors.hpp): NaN where the phase has no boundary, the
+  // mean free path infinite where no other phase touches it.
+  double contiguity = 0.0;
+  double intercept_length = 0.0;
+  double mean_free_path = 0.0;
 };
 
 struct TessellationStats {

@@ -1,6 +1,7 @@
 #include "tessellate/tessellation_json.hpp"
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 
 #include <nlohmann/json.hpp>
@@ -104,7 +105,21 @@ std::string tessellation_to_json(const Tessellation& t) {
   j["regions"] = regions;
   j["partners"] = {{"x", t.partners_x}, {"y", t.partners_y}};
   j["statistics"] = statistics(t.stats, t.phases);
+  j["statistics"].update(descriptors_json(t));
   return j.dump(1) + "\n";
+}
+
+Json descriptors_json(const Tessellation& t) {
+  auto value = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  Json out;
+  for (const char* key : {"contiguity", "intercept_length", "mean_free_path"}) out[key] = Json::object();
+  for (std::size_t p = 0; p < t.phases.size() && p < t.stats.phases.size(); ++p) {
+    const PhaseStats& s = t.stats.phases[p];
+    out["contiguity"][t.phases[p].name] = value(s.contiguity);
+    out["intercept_length"][t.phases[p].name] = value(s.intercept_length);
+    out["mean_free_path"][t.phases[p].name] = value(s.mean_free_path);
+  }
+  return out;
 }
 
 Tessellation tessellation_from_json(const std::string& text, const std::string& source) {

@@ -31,6 +31,13 @@ TEST_CASE("grainmesh run without a config writes the whole OUT layout, and its c
   CHECK(report["mesh"]["cells"].get<int>() > 8000);
   for (const char* stage : {"tessellate", "mesh", "export", "total"}) CHECK(report["seconds"][stage].get<double>() > 0.0);
   CHECK(report["case"] == "case");
+  // The WC-Co descriptors, as tessellation.json has them.
+  const auto tessellation = nlohmann::json::parse(test::read_file(dir / "out/tessellation.json"));
+  for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
+    CHECK(report["statistics"][key] == tessellation["statistics"][key]);
+  const double contiguity = report["statistics"]["contiguity"]["particulate"].get<double>();
+  CHECK((contiguity > 0.5 && contiguity < 1.0));  // the hard phase mostly touches itself at 80 %
+  CHECK(report["statistics"]["mean_free_path"]["matrix"].get<double>() > 0.0);
   const auto check = test::run_openfoam(dir / "out/case", "checkMesh");
   CHECK(check.out.find("Mesh OK.") != std::string::npos);
 

@@ -167,6 +167,17 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   CHECK(value("C11_std") == Approx(std::sqrt(ss / 2)).epsilon(1e-6));
   CHECK(value("C11_ci95") == Approx(4.303 * std::sqrt(ss / 2) / std::sqrt(3.0)).epsilon(1e-6));
   CHECK(value("runs") == 3);
+  // The WC-Co descriptors of every phase, summarised the same way.
+  std::vector<double> contiguity;
+  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+    contiguity.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["statistics"]
+                             ["contiguity"]["particulate"].get<double>());
+  CHECK(value("contiguity_particulate_mean") ==
+        Approx((contiguity[0] + contiguity[1] + contiguity[2]) / 3).epsilon(1e-9));
+  for (const char* q : {"contiguity", "intercept_length", "mean_free_path"})
+    for (const char* phase : {"_particulate", "_matrix"})
+      for (const char* s : {"_mean", "_std", "_ci95"})
+        CHECK(std::find(names.begin(), names.end(), q + std::string(phase) + s) != names.end());
   CHECK(fs::exists(dir / "out/summary.png"));
   CHECK_FALSE(fs::exists(dir / "out/p000-r00/stress_xx.png"));
 }

@@ -1,0 +1,74 @@
+#include "tessellate/descriptors.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <utility>
+
+namespace grainmesh {
+
+namespace {
+
+// The region on the cell's side of an edge along a cell side.
+int inner_region(const TessEdge& e) { return e.left >= 0 ? e.left : e.right; }
+
+}  // namespace
+
+std::vector<PhaseDescriptors> phase_descriptors(const Tessellation& t) {
+  std::vector<PhaseDescriptors> d(t.phases.size());
+  for (const Region& r : t.regions) d[r.phase].area += region_area(t, r);
+
+  // A boundary between regions a and b of length `length`.
+  auto add = [&](int a, int b, double length) {
+    const Region& ra = t.regions[a];
+    const Region& rb = t.regions[b];
+    if (ra.grain == rb.grain) return;  // pieces of one grain
+    if (ra.phase == rb.phase) {
+      d[ra.phase].own_boundary += length;
+    } else {
+      d[ra.phase].other_boundary += length;
+      d[rb.phase].other_boundary += length;
+    }
+  };
+
+  // Each left (bottom) side vertex's partner on the right (top) side, and the edges along
+  // the right and top sides by their vertices: the region across a periodic side.
+  std::map<int, int> partner_x(t.partners_x.begin(), t.partners_x.end());
+  std::map<int, int> partner_y(t.partners_y.begin(), t.partners_y.end());
+  std::map<std::pair<int, int>, int> side_edge;  // (v0, v1) sorted -> edge
+  for (std::size_t k = 0; k < t.edges.size(); ++k) {
+    const TessEdge& e = t.edges[k];
+    const int side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
+    if (side == 1 || side == 3) side_edge[std::minmax(e.v0, e.v1)] = static_cast<int>(k);
+  }
+
+  for (const TessEdge& e : t.edges) {
+    const double length = norm(t.vertices[e.v1] - t.vertices[e.v0]);
+    if (e.left >= 0 && e.right >= 0) {
+      add(e.left, e.right, length);
+      continue;
+    }
+    if (!t.periodic) continue;
+    const int side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
+    if (side != 0 && side != 2) continue;  // each pair of sides once, from left and bottom
+    const std::map<int, int>& partner = side == 0 ? partner_x : partner_y;
+    const auto p0 = partner.find(e.v0), p1 = partner.find(e.v1);
+    if (p0 == partner.end() || p1 == partner.end()) continue;
+    const auto across = side_edge.find(std::minmax(p0->second, p1->second));
+    if (across == side_edge.end()) continue;
+    add(inner_region(e), inner_region(t.edges[across->second]), length);
+  }
+
+  for (PhaseDescriptors& p : d) {
+    const double perimeter = 2.0 * p.own_boundary + p.other_boundary;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    p.contiguity = perimeter > 0.0 ? 2.0 * p.own_boundary / perimeter : nan;
+    p.intercept_length = perimeter > 0.0 ? std::numbers::pi * p.area / perimeter : nan;
+    p.mean_free_path =
+        p.other_boundary > 0.0 ? std::numbers::pi * p.area / p.other_boundary : std::numeric_limits<double>::infinity();
+  }
+  return d;
+}
+
+}  // namespace grainmesh
