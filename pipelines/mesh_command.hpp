@@ -39,9 +39,10 @@ std::optional<std::string> poor_quality_warning(const MeshQuality& q, std::size_
 std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q, const GrainMeshOptions& o);
 
 // Writes a grain mesh's files into `dir`: mesh.vtu (cell data grain, phase, quality),
-// mesh.json (the cell and phases, for the export), mesh.png and mesh_detail.png (not when
-// picture_width is 0).
-void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width);
+// mesh.json (the cell and phases, for the export), mesh.png (not when picture_width is 0)
+// and, when `detail`, mesh_detail.png.
+void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width,
+                      bool detail = true);
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
                       const std::filesystem::path& out);

@@ -46,6 +46,15 @@ Boundary read_boundary(const Config& c) {
   c.fail("homogenise.boundary", "must be mixed or periodic, got '" + b + "'");
 }
 
+Pictures read_pictures(const Config& c) {
+  if (!c.has("output.pictures")) return Pictures::all;
+  const std::string p = c.text("output.pictures");
+  if (p == "none" || p == "false") return Pictures::none;
+  if (p == "basic") return Pictures::basic;
+  if (p == "all" || p == "true") return Pictures::all;
+  c.fail("output.pictures", "must be none, basic or all, got '" + p + "'");
+}
+
 std::vector<std::string> run_config_keys() {
   std::vector<std::string> keys = tessellate_config_keys();
   for (const auto& k : run_own_config_keys()) keys.push_back(k);
@@ -99,6 +108,7 @@ FoamOptions read_run_foam_options(const Config& c) {
 
 void check_run_config(const Config& c) {
   c.check_keys(run_config_keys());
+  read_pictures(c);
   read_tessellate_job(c.subset(tessellate_config_keys()));
   read_run_foam_options(c);
 }
@@ -106,19 +116,21 @@ void check_run_config(const Config& c) {
 namespace {
 
 // Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
-// 3.14-3.15); none when picture_width is 0.
+// 3.14-3.15); none when picture_width is 0, sigma_xx alone when not `all`.
 void write_field_pictures(const std::filesystem::path& dir, const std::filesystem::path& result_dir, const GrainMesh& m,
-                          int picture_width) {
+                          int picture_width, bool all) {
   if (picture_width == 0) return;
   const std::size_t cells = m.mesh.triangles.size();
   const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, cells);
   std::vector<double> sxx, syy, sxy;
   for (const CellStress& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
-  const std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
-      {"stress_xx.png", {sxx, "sigma_xx (Pa)"}},
-      {"stress_yy.png", {syy, "sigma_yy (Pa)"}},
-      {"stress_xy.png", {sxy, "tau_xy (Pa)"}},
-      {"displacement.png", {read_cell_displacement(result_dir / "D", cells), "|D| (m)"}}};
+  std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
+      {"stress_xx.png", {sxx, "sigma_xx (Pa)"}}};
+  if (all) {
+    pictures.push_back({"stress_yy.png", {syy, "sigma_yy (Pa)"}});
+    pictures.push_back({"stress_xy.png", {sxy, "tau_xy (Pa)"}});
+    pictures.push_back({"displacement.png", {read_cell_displacement(result_dir / "D", cells), "|D| (m)"}});
+  }
   for (const auto& [name, field] : pictures)
     write_mesh_png(dir / name, m.mesh,
                    {.width_px = picture_width, .outline_by = {}, .view = {}, .field = field.first,
@@ -155,7 +167,7 @@ std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
 
 Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
                       const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
-                      const Deadline& deadline, int picture_width, std::vector<std::string>& warnings) {
+                      const Deadline& deadline, int picture_width, bool all_pictures, std::vector<std::string>& warnings) {
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Json effective = solve_json(h.run, dir);
   effective["boundary"] = "mixed";
@@ -166,7 +178,7 @@ Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& stag
                                  {"sigma_xx", h.volume_average.xx},
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
-  write_field_pictures(dir, h.run.result_dir, m, picture_width);
+  write_field_pictures(dir, h.run.result_dir, m, picture_width, all_pictures);
   if (foam.uniaxial) return effective;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -196,7 +208,8 @@ Json stiffness_json(const Stiffness& c) {
 // constants, and the bounds; a broken bound is added to `warnings`.
 Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
                          const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
-                         const Deadline& deadline, int picture_width, std::vector<std::string>& warnings) {
+                         const Deadline& deadline, int picture_width, bool all_pictures,
+                         std::vector<std::string>& warnings) {
   std::array<std::filesystem::path, 3> dirs, shown;
   for (int k = 0; k < 3; ++k) {
     const std::string name = periodic_case_dir(periodic_load_cases(1.0)[k]);
@@ -227,7 +240,7 @@ Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& s
   }
   effective["load_cases"] = cases;
   effective["corrections"] = corrections;
-  write_field_pictures(dir, h.cases[0].run.result_dir, m, picture_width);
+  write_field_pictures(dir, h.cases[0].run.result_dir, m, picture_width, all_pictures);
 
   const TensorBounds b = tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = stiffness_json(b.voigt);
@@ -268,7 +281,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const FoamOptions foam = read_run_foam_options(c);
   const Boundary boundary = read_boundary(c);
   // Pictures cost more than the rest of a small run's output; sweeps may do without.
-  const bool pictures = c.flag("output.pictures", true);
+  const Pictures pictures = read_pictures(c);
   if (solve && foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   Warnings warnings;
@@ -318,9 +331,11 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   StagedOutput staged(out, "run");
   const std::filesystem::path dir = staged.dir();
   write_text_file(dir / "tessellation.json", tessellation_to_json(t));
-  if (pictures) write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
-  const int picture_width = pictures ? mesh_job.picture_width : 0;
-  write_mesh_files(dir, t, m, picture_width);
+  if (pictures != Pictures::none)
+    write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
+  const int picture_width = pictures != Pictures::none ? mesh_job.picture_width : 0;
+  const bool all_pictures = pictures == Pictures::all;
+  write_mesh_files(dir, t, m, picture_width, all_pictures);
 
   clock = std::chrono::steady_clock::now();
   stage("exporting");
@@ -380,9 +395,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
       report["effective"] =
           boundary == Boundary::mixed
               ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
-                                 solve_warnings)
+                                 all_pictures, solve_warnings)
               : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
-                                    solve_warnings);
+                                    all_pictures, solve_warnings);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.
       end_stage_line();

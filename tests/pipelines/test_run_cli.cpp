@@ -80,6 +80,7 @@ TEST_CASE("bad run input gives one line naming it and never a report", "[cli][ru
       {{"run", "--set", "mesh.grading=0"}, 2, "mesh.grading: must lie between 0.05 and 10"},
       {{"run", "--set", "phase.matrix.nu=0.7"}, 2, "phase.matrix.nu: must lie in (-1, 0.5)"},
       {{"run", "--set", "export.cyclic=perhaps"}, 2, "export.cyclic"},
+      {{"run", "--set", "output.pictures=some"}, 2, "output.pictures: must be none, basic or all, got 'some'"},
       {{"run", (dir / "missing.ini").string()}, 4, "missing.ini: cannot open config file"},
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
@@ -113,5 +114,16 @@ TEST_CASE("grainmesh run --solve homogenises: the modulus lies between Reuss and
     CHECK(fs::exists(out / e["result"].get<std::string>() / kStressField));
     for (const char* picture : {"stress_xx.png", "stress_yy.png", "stress_xy.png", "displacement.png"})
       CHECK(fs::file_size(out / picture) > 10000);
+  }
+  // output.pictures = basic: the tessellation, the mesh and sigma_xx; none: no picture.
+  for (const char* which : {"basic", "none"}) {
+    const fs::path out = dir / which;
+    const auto r = run_grainmesh({"run", "-o", out.string(), "--solve", "--set", "tessellation.grains=40", "--set",
+                                  std::string("output.pictures=") + which});
+    REQUIRE(r.exit_code == 0);
+    const bool basic = std::string(which) == "basic";
+    for (const char* picture : {"tessellation.png", "mesh.png", "stress_xx.png"}) CHECK(fs::exists(out / picture) == basic);
+    for (const char* picture : {"mesh_detail.png", "stress_yy.png", "stress_xy.png", "displacement.png"})
+      CHECK_FALSE(fs::exists(out / picture));
   }
 }
