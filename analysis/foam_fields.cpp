@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
+#include "export/foam.hpp"
 
 namespace grainmesh {
 
@@ -88,17 +89,20 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
   return parse_values(file, text, value, type, faces);
 }
 
-std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file, std::size_t cells) {
-  const FieldValues f = read_cell_field(sigma_file, "symmTensor", cells);
-  std::vector<CellStress> out(f.size());
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {f[k][0], f[k][1], f[k][3]};
+CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells) {
+  return {read_cell_field(result_dir / "D", "vector", cells), read_cell_field(result_dir / kStressField, "symmTensor", cells)};
+}
+
+std::vector<CellStress> cell_stress(const CaseFields& f) {
+  std::vector<CellStress> out(f.stress.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {f.stress[k][0], f.stress[k][1], f.stress[k][3]};
   return out;
 }
 
-std::vector<double> read_cell_displacement(const std::filesystem::path& d_file, std::size_t cells) {
-  const FieldValues f = read_cell_field(d_file, "vector", cells);
-  std::vector<double> out(f.size());
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = std::hypot(f[k][0], f[k][1], f[k][2]);
+std::vector<double> displacement_length(const CaseFields& f) {
+  std::vector<double> out(f.displacement.size());
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = std::hypot(f.displacement[k][0], f.displacement[k][1], f.displacement[k][2]);
   return out;
 }
 

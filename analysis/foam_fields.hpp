@@ -28,13 +28,21 @@ FieldValues read_cell_field(const std::filesystem::path& file, const std::string
 FieldValues read_patch_field(const std::filesystem::path& file, const std::string& type, const std::string& patch,
                              std::size_t faces);
 
-// The in-plane stress of every cell (CASE/TIME/sigmaD, kStressField), and the length of
-// the displacement (CASE/TIME/D).
+// The cell fields of a solved case, read once (CASE/TIME/D and CASE/TIME/sigmaD,
+// kStressField) and carried to everything that uses them: the area average, the
+// pictures, results.vtu.
+struct CaseFields {
+  FieldValues displacement;  // vector
+  FieldValues stress;        // symmTensor: xx xy xz yy yz zz
+};
+CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells);
+
+// The in-plane stress of every cell, and the length of the displacement.
 struct CellStress {
   double xx = 0.0, xy = 0.0, yy = 0.0;
 };
-std::vector<CellStress> read_cell_stress(const std::filesystem::path& sigma_file, std::size_t cells);
-std::vector<double> read_cell_displacement(const std::filesystem::path& d_file, std::size_t cells);
+std::vector<CellStress> cell_stress(const CaseFields& f);
+std::vector<double> displacement_length(const CaseFields& f);
 
 // The case's latest time directory: where the solver wrote its fields. Throws SolveError
 // when there is none.

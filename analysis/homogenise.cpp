@@ -13,8 +13,8 @@
 
 namespace grainmesh {
 
-MeanStress volume_average(const std::filesystem::path& result_dir, const ExportMesh& m) {
-  const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, m.mesh.triangles.size());
+MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
+  const std::vector<CellStress> sigma = cell_stress(fields);
   MeanStress s;
   double area = 0.0;
   for (std::size_t k = 0; k < sigma.size(); ++k) {  // cell k is triangle k
@@ -35,12 +35,11 @@ std::array<LoadCase, 3> periodic_load_cases(double strain) {
 namespace {
 
 // The mean stress of a solved periodic case from the forces through right and top.
-MeanStress periodic_mean_stress(const std::filesystem::path& result_dir, const ExportMesh& m, const PolyMesh& pm,
-                                const FoamOptions& o) {
+MeanStress periodic_mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh& m,
+                                const PolyMesh& pm, const FoamOptions& o) {
   const std::size_t cells = static_cast<std::size_t>(pm.cells);
-  const DiscreteTraction traction(pm, m, o, read_cell_field(result_dir / "D", "vector", cells),
-                                  read_cell_field(result_dir / kGradientField, "tensor", cells),
-                                  read_cell_field(result_dir / kStressField, "symmTensor", cells));
+  const DiscreteTraction traction(pm, m, o, fields.displacement,
+                                  read_cell_field(result_dir / kGradientField, "tensor", cells), fields.stress);
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec2 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
   const Vec2 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
@@ -55,10 +54,11 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                                  const std::filesystem::path& case_shown_as) {
   Homogenised h;
   h.run = run_solver(case_dir, m, o, deadline, case_shown_as);
+  h.fields = read_case_fields(h.run.result_dir, static_cast<std::size_t>(pm.cells));
   // The force through `right`: the load the cell carries. From sigma's face values there,
   // or on a cyclic case, which writes none, from the cell fields.
   if (o.cyclic) {
-    h.sigma_xx = periodic_mean_stress(h.run.result_dir, m, pm, o).xx;
+    h.sigma_xx = periodic_mean_stress(h.run.result_dir, h.fields, m, pm, o).xx;
   } else {
     const int right = patch_index(pm, "right");
     const PolyMesh::Patch& patch = pm.patches[right];
@@ -71,7 +71,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   // exactly displacement / width.
   h.strain_xx = o.cyclic ? cyclic_strain(m, o)[0] : o.displacement / m.cell.width();
   h.modulus = h.sigma_xx / h.strain_xx;
-  h.volume_average = volume_average(h.run.result_dir, m);
+  h.volume_average = volume_average(h.fields, m);
   h.volume_average_modulus = h.volume_average.xx / h.strain_xx;
   return h;
 }
@@ -90,8 +90,9 @@ PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& c
       ok.cyclic = true;
       ok.strain = r.load.strain;
       r.run = run_solver(case_dirs[k], m, ok, deadline, cases_shown_as[k], r.load.name);
-      r.stress = periodic_mean_stress(r.run.result_dir, m, pm, ok);
-      r.volume_average = volume_average(r.run.result_dir, m);
+      r.fields = read_case_fields(r.run.result_dir, static_cast<std::size_t>(pm.cells));
+      r.stress = periodic_mean_stress(r.run.result_dir, r.fields, m, pm, ok);
+      r.volume_average = volume_average(r.fields, m);
     } catch (...) {
       failed[k] = std::current_exception();
     }

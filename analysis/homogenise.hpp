@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/bounds.hpp"
+#include "analysis/foam_fields.hpp"
 #include "analysis/solve.hpp"
 #include "common/deadline.hpp"
 #include "export/foam.hpp"
@@ -27,8 +28,8 @@ struct MeanStress {
   double xx = 0.0, yy = 0.0, xy = 0.0;  // Pa
 };
 
-// The area average of the cell stresses of a solved case (its result_dir's sigmaD).
-MeanStress volume_average(const std::filesystem::path& result_dir, const ExportMesh& m);
+// The area average of the cell stresses of a solved case.
+MeanStress volume_average(const CaseFields& fields, const ExportMesh& m);
 
 struct Homogenised {
   double sigma_xx = 0.0;       // the force through `right` over its area
@@ -37,6 +38,7 @@ struct Homogenised {
   MeanStress volume_average;   // the area average of the cell stresses
   double volume_average_modulus = 0.0;
   SolveRun run;
+  CaseFields fields;           // the solution's cell fields
 };
 
 // Solves the case that write_foam_case wrote into `case_dir` (`pm` is what it returned)
@@ -58,6 +60,7 @@ struct LoadCaseResult {
   MeanStress stress;           // the forces through right and top over their areas
   MeanStress volume_average;
   SolveRun run;
+  CaseFields fields;           // the solution's cell fields
 };
 
 struct PeriodicHomogenised {

@@ -8,7 +8,9 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
+#include <vtkStringArray.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -19,6 +21,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <array>
 
 #include "common/errors.hpp"
@@ -48,7 +51,8 @@ class ErrorCatcher final : public vtkCommand {
 
 }  // namespace
 
-void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields) {
+void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
@@ -67,20 +71,30 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
     std::visit(
         [&](const auto& values) {
           using T = typename std::decay_t<decltype(values)>::value_type;
-          if (values.size() != mesh.triangles.size())
+          const std::size_t per_cell = static_cast<std::size_t>(std::max(f.components, 1));
+          if (values.size() != per_cell * mesh.triangles.size())
             throw IoError(file.string() + ": cell field '" + f.name + "' has " + std::to_string(values.size()) +
-                          " values for " + std::to_string(mesh.triangles.size()) + " cells");
+                          " values for " + std::to_string(mesh.triangles.size()) + " cells" +
+                          (per_cell > 1 ? " of " + std::to_string(per_cell) + " components" : ""));
           vtkSmartPointer<vtkDataArray> array;
           if constexpr (std::is_same_v<T, int>) array = vtkSmartPointer<vtkIntArray>::New();
           else array = vtkSmartPointer<vtkDoubleArray>::New();
           array->SetName(f.name.c_str());
-          array->SetNumberOfComponents(1);
-          array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+          array->SetNumberOfComponents(static_cast<int>(per_cell));
+          array->SetNumberOfTuples(static_cast<vtkIdType>(mesh.triangles.size()));
           for (std::size_t i = 0; i < values.size(); ++i)
-            array->SetTuple1(static_cast<vtkIdType>(i), static_cast<double>(values[i]));
+            array->SetComponent(static_cast<vtkIdType>(i / per_cell), static_cast<int>(i % per_cell),
+                                static_cast<double>(values[i]));
           grid->GetCellData()->AddArray(array);
         },
         f.values);
+  }
+  for (const FieldLabels& l : labels) {
+    vtkNew<vtkStringArray> array;
+    array->SetName(l.name.c_str());
+    array->SetNumberOfValues(static_cast<vtkIdType>(l.labels.size()));
+    for (std::size_t i = 0; i < l.labels.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), l.labels[i]);
+    grid->GetFieldData()->AddArray(array);
   }
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
@@ -90,7 +104,7 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
   writer->SetInputData(grid);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
-  writer->SetCompressorTypeToZLib();
+  writer->SetCompressorTypeToLZ4();
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
     throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
@@ -174,18 +188,31 @@ VtuContents read_vtu(const std::filesystem::path& file) {
   for (int a = 0; a < cd->GetNumberOfArrays(); ++a) {
     vtkDataArray* array = cd->GetArray(a);
     if (array == nullptr) continue;
-    CellField f{array->GetName() ? array->GetName() : "", std::vector<int>{}};
+    const int components = array->GetNumberOfComponents();
+    CellField f{array->GetName() ? array->GetName() : "", std::vector<int>{}, components};
+    const std::size_t n = static_cast<std::size_t>(array->GetNumberOfTuples()) * static_cast<std::size_t>(components);
+    auto component = [&](std::size_t i) {
+      return array->GetComponent(static_cast<vtkIdType>(i / components), static_cast<int>(i % components));
+    };
     if (array->GetDataType() == VTK_INT) {
-      std::vector<int> v(static_cast<std::size_t>(array->GetNumberOfTuples()));
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<int>(array->GetTuple1(static_cast<vtkIdType>(i)));
-      if (f.name == "region") out.mesh.region = v;
+      std::vector<int> v(n);
+      for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<int>(component(i));
+      if (f.name == "region" && components == 1) out.mesh.region = v;
       f.values = std::move(v);
     } else {
-      std::vector<double> v(static_cast<std::size_t>(array->GetNumberOfTuples()));
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = array->GetTuple1(static_cast<vtkIdType>(i));
+      std::vector<double> v(n);
+      for (std::size_t i = 0; i < n; ++i) v[i] = component(i);
       f.values = std::move(v);
     }
     out.fields.push_back(std::move(f));
+  }
+  vtkFieldData* fd = grid->GetFieldData();
+  for (int a = 0; fd != nullptr && a < fd->GetNumberOfArrays(); ++a) {
+    auto* strings = vtkStringArray::SafeDownCast(fd->GetAbstractArray(a));
+    if (strings == nullptr) continue;
+    FieldLabels l{strings->GetName() ? strings->GetName() : "", {}};
+    for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i) l.labels.push_back(strings->GetValue(i));
+    out.labels.push_back(std::move(l));
   }
   if (out.mesh.region.empty()) out.mesh.region.assign(out.mesh.triangles.size(), 0);
   return out;

@@ -12,22 +12,33 @@
 
 namespace grainmesh {
 
-// One value per triangle, named as ParaView will show it.
+// `components` values per triangle (consecutive), named as ParaView will show it: 1 a
+// scalar, 3 a vector, 6 a symmetric tensor in VTK's order (xx yy zz xy yz xz).
 struct CellField {
   std::string name;
-  std::variant<std::vector<int>, std::vector<double>> values;  // #T
+  std::variant<std::vector<int>, std::vector<double>> values;  // components x #T
+  int components = 1;
 };
 
-// Writes the mesh (z = 0) and its cell fields as binary VTU. Deterministic: the same
-// mesh gives the same bytes. Throws IoError when the file cannot be written.
-void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields);
+// Names stored with the grid (VTK field data, a string array): e.g. the phases' names,
+// which the integer `phase` array numbers.
+struct FieldLabels {
+  std::string name;
+  std::vector<std::string> labels;
+};
 
-// Reads a VTU written by write_vtu: points, triangles and every cell array (integer
-// arrays as int, the rest as double). `mesh.region` is filled from a cell array named
-// "region" when there is one. Throws IoError.
+// Writes the mesh (z = 0), its cell fields and labels as binary VTU. Deterministic: the
+// same mesh gives the same bytes. Throws IoError when the file cannot be written.
+void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels = {});
+
+// Reads a VTU written by write_vtu: points, triangles, every cell array (integer arrays
+// as int, the rest as double) and every string array of the field data. `mesh.region` is
+// filled from a cell array named "region" when there is one. Throws IoError.
 struct VtuContents {
   TriMesh mesh;
   std::vector<CellField> fields;
+  std::vector<FieldLabels> labels;
 };
 VtuContents read_vtu(const std::filesystem::path& file);
 

@@ -11,6 +11,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
+#include "analysis/results_vtu.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam.hpp"
@@ -117,11 +118,10 @@ namespace {
 
 // Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
 // 3.14-3.15); none when picture_width is 0, sigma_xx alone when not `all`.
-void write_field_pictures(const std::filesystem::path& dir, const std::filesystem::path& result_dir, const GrainMesh& m,
+void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields, const GrainMesh& m,
                           int picture_width, bool all) {
   if (picture_width == 0) return;
-  const std::size_t cells = m.mesh.triangles.size();
-  const std::vector<CellStress> sigma = read_cell_stress(result_dir / kStressField, cells);
+  const std::vector<CellStress> sigma = cell_stress(fields);
   std::vector<double> sxx, syy, sxy;
   for (const CellStress& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
   std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
@@ -129,7 +129,7 @@ void write_field_pictures(const std::filesystem::path& dir, const std::filesyste
   if (all) {
     pictures.push_back({"stress_yy.png", {syy, "sigma_yy (Pa)"}});
     pictures.push_back({"stress_xy.png", {sxy, "tau_xy (Pa)"}});
-    pictures.push_back({"displacement.png", {read_cell_displacement(result_dir / "D", cells), "|D| (m)"}});
+    pictures.push_back({"displacement.png", {displacement_length(fields), "|D| (m)"}});
   }
   for (const auto& [name, field] : pictures)
     write_mesh_png(dir / name, m.mesh,
@@ -152,6 +152,12 @@ std::optional<std::string> outside(const std::string& what, double value, double
   if (above ? value <= bound * (1 + kRounding) : value >= bound * (1 - kRounding)) return std::nullopt;
   return what + " " + to_text(value, 4) + " Pa lies " + (above ? "above" : "below") + " " + name + " " +
          to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(value / bound - 1.0), 2) + " %";
+}
+
+std::vector<std::string> phase_names(const Tessellation& t) {
+  std::vector<std::string> names;
+  for (const Phase& p : t.phases) names.push_back(p.name);
+  return names;
 }
 
 std::vector<double> achieved_fractions(const Tessellation& t) {
@@ -178,7 +184,8 @@ Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& stag
                                  {"sigma_xx", h.volume_average.xx},
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
-  write_field_pictures(dir, h.run.result_dir, m, picture_width, all_pictures);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields}}, foam.plane_stress);
+  write_field_pictures(dir, h.fields, m, picture_width, all_pictures);
   if (foam.uniaxial) return effective;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -240,7 +247,10 @@ Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& s
   }
   effective["load_cases"] = cases;
   effective["corrections"] = corrections;
-  write_field_pictures(dir, h.cases[0].run.result_dir, m, picture_width, all_pictures);
+  std::vector<SolvedFields> solved;
+  for (const LoadCaseResult& r : h.cases) solved.push_back({"_" + r.load.name, &r.fields});
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved, foam.plane_stress);
+  write_field_pictures(dir, h.cases[0].fields, m, picture_width, all_pictures);
 
   const TensorBounds b = tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = stiffness_json(b.voigt);

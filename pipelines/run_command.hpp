@@ -17,9 +17,10 @@ namespace grainmesh {
 // The keys only a run reads: homogenise.boundary (mixed | periodic), output.pictures.
 const std::vector<std::string>& run_own_config_keys();
 
-// Which pictures a run draws (output.pictures): none; basic (tessellation.png, mesh.png
-// and, solved, stress_xx.png); all (also mesh_detail.png, stress_yy.png, stress_xy.png
-// and displacement.png), the default. true and false are all and none.
+// Which pictures a run draws (output.pictures): none (no PNG, and no results.vtu: what a
+// sweep wants); basic (tessellation.png, mesh.png and, solved, stress_xx.png and
+// results.vtu); all (also mesh_detail.png, stress_yy.png, stress_xy.png and
+// displacement.png), the default. true and false are all and none.
 enum class Pictures { none, basic, all };
 Pictures read_pictures(const Config& config);
 

@@ -44,7 +44,8 @@ std::map<std::string, int> zone_cells(const std::string& log) {
 // The xx components of the stress the solver wrote.
 std::vector<double> read_sigma_xx(const fs::path& file, std::size_t cells) {
   std::vector<double> xx;
-  for (const CellStress& c : read_cell_stress(file, cells)) xx.push_back(c.xx);
+  const FieldValues sigma = read_cell_field(file, "symmTensor", cells);
+  for (std::size_t k = 0; k < sigma.size(); ++k) xx.push_back(sigma[k][0]);
   return xx;
 }
 

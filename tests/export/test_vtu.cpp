@@ -26,6 +26,24 @@ TEST_CASE("VTU files read back exactly", "[export]") {
   CHECK(std::get<std::vector<double>>(back.fields[1].values) == std::vector<double>{0.25, 0.75});
 }
 
+TEST_CASE("VTU vectors, tensors and labels read back exactly", "[export]") {
+  test::ScratchDir dir("vtu");
+  const TriMesh m = square();
+  const std::vector<double> vectors{1, 2, 3, 4, 5, 6}, tensors{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  write_vtu(dir / "m.vtu", m, {{"v", vectors, 3}, {"t", tensors, 6}}, {{"phase_names", {"WC", "Co"}}});
+  const VtuContents back = read_vtu(dir / "m.vtu");
+  REQUIRE(back.fields.size() == 2);
+  CHECK(back.fields[0].components == 3);
+  CHECK(std::get<std::vector<double>>(back.fields[0].values) == vectors);
+  CHECK(back.fields[1].components == 6);
+  CHECK(std::get<std::vector<double>>(back.fields[1].values) == tensors);
+  REQUIRE(back.labels.size() == 1);
+  CHECK(back.labels[0].name == "phase_names");
+  CHECK(back.labels[0].labels == std::vector<std::string>{"WC", "Co"});
+  CHECK_THROWS_WITH(write_vtu(dir / "m.vtu", m, {{"v", std::vector<double>{1, 2, 3}, 3}}),
+                    Catch::Matchers::Contains("'v' has 3 values for 2 cells of 3 components"));
+}
+
 TEST_CASE("VTU output is byte-for-byte deterministic", "[export]") {
   test::ScratchDir dir("vtu");
   const TriMesh m = square();

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "export/foam.hpp"
+#include "export/vtu.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;
@@ -135,6 +136,35 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
   const auto mixed = test::run_grainmesh({"run", "-o", (dir / "mixed").string(), "--solve", "--set", "phase.matrix.E=800e9"});
   REQUIRE(mixed.exit_code == 0);
   CHECK(report_of(dir / "mixed")["effective"]["modulus"].get<double>() == Approx(m.M()).epsilon(1e-3));
+  // results.vtu: the uniform plane-strain state of a uniaxial strain e in every cell,
+  // sigma_xx = M e, sigma_yy = sigma_zz = lambda e, von Mises 2 mu e, the largest
+  // principal sigma_xx; the grain, the phase and the phases' names.
+  const VtuContents results = read_vtu(dir / "mixed/results.vtu");
+  REQUIRE(results.labels.size() == 1);
+  CHECK(results.labels[0].labels == std::vector<std::string>{"particulate", "matrix"});
+  auto field = [&](const VtuContents& v, const std::string& name) -> const CellField& {
+    for (const CellField& f : v.fields)
+      if (f.name == name) return f;
+    FAIL("no cell array " << name);
+    throw;
+  };
+  const double strain = 0.001 / 3.0;
+  const auto& stress = std::get<std::vector<double>>(field(results, "stress").values);
+  const auto& mises = std::get<std::vector<double>>(field(results, "von_mises").values);
+  const auto& principal = std::get<std::vector<double>>(field(results, "max_principal").values);
+  CHECK(field(results, "stress").components == 6);
+  CHECK(field(results, "displacement").components == 3);
+  CHECK(std::get<std::vector<int>>(field(results, "phase").values).size() == mises.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < mises.size(); ++k) {
+    worst = std::max({worst, std::abs(stress[6 * k] - m.M() * strain), std::abs(stress[6 * k + 1] - m.lambda() * strain),
+                      std::abs(stress[6 * k + 2] - m.lambda() * strain), std::abs(stress[6 * k + 3]),
+                      std::abs(mises[k] - 2 * m.mu() * strain), std::abs(principal[k] - m.M() * strain)});
+  }
+  CHECK(worst < 1e-4 * m.M() * strain);
+  // Periodic: each load case's arrays, named by it.
+  const VtuContents periodic = read_vtu(dir / "one/results.vtu");
+  for (const char* name : {"displacement_xx", "stress_yy", "von_mises_xy", "max_principal_xx"}) CHECK_NOTHROW(field(periodic, name));
 
   // The default cell and a Laguerre cell of 40 grains: a symmetric tensor inside Voigt-Reuss
   // and Hashin-Shtrikman.

@@ -115,14 +115,16 @@ TEST_CASE("grainmesh run --solve homogenises: the modulus lies between Reuss and
     for (const char* picture : {"stress_xx.png", "stress_yy.png", "stress_xy.png", "displacement.png"})
       CHECK(fs::file_size(out / picture) > 10000);
   }
-  // output.pictures = basic: the tessellation, the mesh and sigma_xx; none: no picture.
+  // output.pictures = basic: the tessellation, the mesh, sigma_xx and results.vtu; none:
+  // none of them.
   for (const char* which : {"basic", "none"}) {
     const fs::path out = dir / which;
     const auto r = run_grainmesh({"run", "-o", out.string(), "--solve", "--set", "tessellation.grains=40", "--set",
                                   std::string("output.pictures=") + which});
     REQUIRE(r.exit_code == 0);
     const bool basic = std::string(which) == "basic";
-    for (const char* picture : {"tessellation.png", "mesh.png", "stress_xx.png"}) CHECK(fs::exists(out / picture) == basic);
+    for (const char* picture : {"tessellation.png", "mesh.png", "stress_xx.png", "results.vtu"})
+      CHECK(fs::exists(out / picture) == basic);
     for (const char* picture : {"mesh_detail.png", "stress_yy.png", "stress_xy.png", "displacement.png"})
       CHECK_FALSE(fs::exists(out / picture));
   }

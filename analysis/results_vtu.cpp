@@ -1,0 +1,32 @@
+#include "analysis/results_vtu.hpp"
+
+#include "analysis/stress_measures.hpp"
+#include "export/vtu.hpp"
+
+namespace grainmesh {
+
+void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
+                       const std::vector<SolvedFields>& cases, bool plane_stress) {
+  const std::size_t cells = m.mesh.triangles.size();
+  std::vector<CellField> fields{{"grain", m.mesh.region}, {"phase", m.phase}};
+  for (const SolvedFields& c : cases) {
+    const FieldValues& D = c.fields->displacement;
+    const FieldValues& sigma = c.fields->stress;
+    std::vector<double> stress, mises, principal;
+    stress.reserve(6 * cells);
+    for (std::size_t k = 0; k < cells; ++k) {
+      // OpenFOAM's order: xx xy xz yy yz zz.
+      const StressState s{.xx = sigma[k][0], .yy = sigma[k][3], .zz = plane_stress ? 0.0 : sigma[k][5], .xy = sigma[k][1]};
+      for (double v : vtk_components(s)) stress.push_back(v);
+      mises.push_back(von_mises(s));
+      principal.push_back(largest_principal(s));
+    }
+    fields.push_back({"displacement" + c.suffix, D.values, 3});
+    fields.push_back({"stress" + c.suffix, std::move(stress), 6});
+    fields.push_back({"von_mises" + c.suffix, std::move(mises)});
+    fields.push_back({"max_principal" + c.suffix, std::move(principal)});
+  }
+  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}});
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,28 @@
+// results.vtu: the solved fields of every load case over the mesh, for ParaView, beside
+// the mesh's own grain and phase (the phases' names stored in the file).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/foam_fields.hpp"
+#include "mesh/grain_mesh.hpp"
+
+namespace grainmesh {
+
+// A solved case's fields, its arrays named with `suffix` (empty for the mixed load's one
+// case, "_xx", "_yy", "_xy" for the periodic ones).
+struct SolvedFields {
+  std::string suffix;
+  const CaseFields* fields = nullptr;
+};
+
+// Cell arrays: grain, phase, and per case displacement (vector, m), stress (symmetric
+// tensor, Pa; zz the out-of-plane stress, zero in plane stress), von_mises and
+// max_principal (Pa); field data phase_names. Throws IoError naming the file when it
+// cannot be written.
+void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
+                       const std::vector<SolvedFields>& cases, bool plane_stress);
+
+}  // namespace grainmesh
