@@ -9,6 +9,7 @@
 #include <map>
 #include <string_view>
 
+#include "common/allocator.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 
@@ -471,7 +472,7 @@ std::vector<std::string> foam_environment() {
   const char* project = std::getenv("WM_PROJECT_DIR");
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   return {"WM_PROJECT_DIR=" + std::string(project != nullptr && *project != '\0' ? project : kFoamProjectDir),
-          "GLIBC_TUNABLES=" + std::string(kFoamMallocTunables) +
+          "GLIBC_TUNABLES=" + malloc_tunables() +
               (tunables != nullptr && *tunables != '\0' ? ":" + std::string(tunables) : "")};
 }
 
@@ -658,7 +659,7 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
   write_text(dir / "Allrun",
              "#!/bin/sh\n# Checks the mesh and solves; logs in log.*.\ncd \"${0%/*}\" || exit 1\n"
              "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-" + std::string(kFoamProjectDir) + "}\"\n"
-             "export GLIBC_TUNABLES=\"" + kFoamMallocTunables + "${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}\"\n"
+             "export GLIBC_TUNABLES=\"" + malloc_tunables() + "${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}\"\n"
              "checkMesh > log.checkMesh 2>&1 || { echo \"checkMesh failed: see log.checkMesh\"; exit 1; }\n"
              "solidDisplacementFoam > log.solidDisplacementFoam 2>&1 || { echo \"solidDisplacementFoam failed: see "
              "log.solidDisplacementFoam\"; exit 1; }\n");

@@ -36,14 +36,12 @@ inline constexpr const char* kGradientField = "grad(D)";
 
 // The environment OpenFOAM's programs run in, the written Allrun and grainmesh's solve
 // alike: the Debian package's WM_PROJECT_DIR unless one is set, and glibc's allocator told
-// to keep the memory it frees. The solver allocates and frees whole fields every
-// correction; by default glibc maps and unmaps each from the kernel, which took half the
-// solve's time (1,000 grains, 46k cells: 2.8 s, 1.3 s with these; the same numbers).
-// A user's own GLIBC_TUNABLES follow ours, so theirs win.
+// to keep the memory it frees (common/allocator.hpp). The solver allocates and frees whole
+// fields every correction; by default glibc maps and unmaps each from the kernel, which
+// took half the solve's time (1,000 grains, 46k cells: 2.8 s, 1.3 s with these; the same
+// numbers). A user's own GLIBC_TUNABLES follow ours, so theirs win. As NAME=value entries
+// to add to this process's environment for a child.
 inline constexpr const char* kFoamProjectDir = "/usr/share/openfoam";
-inline constexpr const char* kFoamMallocTunables =
-    "glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=1073741824";
-// The same as NAME=value entries to add to this process's environment for a child.
 std::vector<std::string> foam_environment();
 
 struct FoamPhase {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdlib>
 
+#include "common/allocator.hpp"
 #include "common/process.hpp"
 #include "common/text_file.hpp"
 #include "export/foam.hpp"
@@ -44,7 +45,8 @@ TEST_CASE("OpenFOAM runs with the Debian package's directory and glibc told to k
   const std::string project = had_project != nullptr ? had_project : "";
   unsetenv("WM_PROJECT_DIR");
   unsetenv("GLIBC_TUNABLES");
-  const std::string tunables = "GLIBC_TUNABLES=" + std::string(kFoamMallocTunables);
+  const std::string tunables = "GLIBC_TUNABLES=" + malloc_tunables();
+  CHECK(tunables == "GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=1073741824");
   CHECK(foam_environment() == std::vector<std::string>{"WM_PROJECT_DIR=/usr/share/openfoam", tunables});
   // A user's own settings are kept: their directory, their tunables after ours (the last wins).
   setenv("WM_PROJECT_DIR", "/opt/openfoam", 1);
