@@ -1,5 +1,6 @@
 #include "analysis/results_vtu.hpp"
 
+#include "analysis/phase_statistics.hpp"
 #include "analysis/stress_measures.hpp"
 #include "export/vtu.hpp"
 
@@ -11,12 +12,9 @@ void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, co
   std::vector<CellField> fields{{"grain", m.mesh.region}, {"phase", m.phase}};
   for (const SolvedFields& c : cases) {
     const FieldValues& D = c.fields->displacement;
-    const FieldValues& sigma = c.fields->stress;
     std::vector<double> stress, mises, principal;
     stress.reserve(6 * cells);
-    for (std::size_t k = 0; k < cells; ++k) {
-      // OpenFOAM's order: xx xy xz yy yz zz.
-      const StressState s{.xx = sigma[k][0], .yy = sigma[k][3], .zz = plane_stress ? 0.0 : sigma[k][5], .xy = sigma[k][1]};
+    for (const StressState& s : stress_states(*c.fields, plane_stress)) {
       for (double v : vtk_components(s)) stress.push_back(v);
       mises.push_back(von_mises(s));
       principal.push_back(largest_principal(s));

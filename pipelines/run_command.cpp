@@ -11,6 +11,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
+#include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -166,16 +167,69 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
   return fractions;
 }
 
-// The mixed (thesis) load's answer in report.json, with the bounds that hold for it;
-// a broken bound is added to `warnings`.
 // The case directory of a periodic load case: case_xx, case_yy, case_xy.
 std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
 
-Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
-                      const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
-                      const Deadline& deadline, int picture_width, bool all_pictures, std::vector<std::string>& warnings) {
+// What a solve adds to report.json: `effective` and `stresses`.
+struct Answer {
+  Json effective;
+  Json stresses;
+};
+
+Json distribution_json(const Distribution& d) {
+  return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
+}
+
+// A solved load case: its name in the report, its fields, its loaded component (0 xx, 1
+// yy, 2 xy).
+struct StressedCase {
+  std::string name;
+  const CaseFields* fields;
+  int loaded;
+};
+
+// `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,
+// max_principal, hydrostatic (each mean, std, p50, p90, p99, max), partition}}}, Pa, from
+// the cells' stresses; and stress_histogram.png of the first case (when drawing).
+Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<StressedCase>& cases, const Tessellation& t,
+                         const GrainMesh& m, bool plane_stress, int picture_width) {
+  Json out;
+  const int phases = static_cast<int>(t.phases.size());
+  for (const StressedCase& c : cases) {
+    const std::vector<PhaseStresses> ps = phase_stresses(*c.fields, m.mesh, m.phase, phases, c.loaded, plane_stress);
+    for (int p = 0; p < phases; ++p) {
+      const PhaseStresses& s = ps[p];
+      out[c.name][t.phases[p].name] = {
+          {"area_fraction", s.area_fraction},
+          {"mean", {{"xx", s.mean.xx}, {"yy", s.mean.yy}, {"zz", s.mean.zz}, {"xy", s.mean.xy}}},
+          {"von_mises", distribution_json(s.von_mises)},
+          {"max_principal", distribution_json(s.max_principal)},
+          {"hydrostatic", distribution_json(s.hydrostatic)},
+          {"partition", s.partition}};
+    }
+  }
+  if (picture_width > 0 && !cases.empty()) {
+    Plot plot{.x_label = "von Mises stress (Pa), load case " + cases[0].name, .y_label = "share of the phase's area",
+              .series = {}};
+    const auto histograms = von_mises_histograms(*cases[0].fields, m.mesh, m.phase, phases, plane_stress, 40);
+    for (int p = 0; p < phases; ++p) plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+    write_plot_png(dir / "stress_histogram.png", plot);
+  }
+  return out;
+}
+
+// The mixed (thesis) load's answer in report.json, with the bounds that hold for it;
+// a broken bound is added to `warnings`.
+
+Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
+                        const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
+                        const Deadline& deadline, int picture_width, bool all_pictures,
+                        std::vector<std::string>& warnings) {
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
-  Json effective = solve_json(h.run, dir);
+  Answer answer;
+  answer.stresses = phase_stresses_json(dir, {{"mixed", &h.fields, 0}}, t, m, foam.plane_stress, picture_width);
+  Json& effective = answer.effective;
+  effective = solve_json(h.run, dir);
   effective["boundary"] = "mixed";
   effective["modulus"] = h.modulus;
   effective["sigma_xx"] = h.sigma_xx;
@@ -186,7 +240,7 @@ Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& stag
                                  {"sigma_xy", h.volume_average.xy}};
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields}}, foam.plane_stress);
   write_field_pictures(dir, h.fields, m, picture_width, all_pictures);
-  if (foam.uniaxial) return effective;  // the bounds are for the default load (mean eps_yy zero)
+  if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
   effective["reuss"] = b.reuss;
@@ -203,7 +257,7 @@ Json homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& stag
   }
   for (const auto& w : broken)
     if (w) warnings.push_back(*w + " (a finite cell is not isotropic; see README, Homogenisation)");
-  return effective;
+  return answer;
 }
 
 Json stiffness_json(const Stiffness& c) {
@@ -213,10 +267,10 @@ Json stiffness_json(const Stiffness& c) {
 
 // The periodic load cases' answer in report.json: the stiffness tensor, its engineering
 // constants, and the bounds; a broken bound is added to `warnings`.
-Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
-                         const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
-                         const Deadline& deadline, int picture_width, bool all_pictures,
-                         std::vector<std::string>& warnings) {
+Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
+                           const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
+                           const Deadline& deadline, int picture_width, bool all_pictures,
+                           std::vector<std::string>& warnings) {
   std::array<std::filesystem::path, 3> dirs, shown;
   for (int k = 0; k < 3; ++k) {
     const std::string name = periodic_case_dir(periodic_load_cases(1.0)[k]);
@@ -227,7 +281,12 @@ Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& s
   const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
   const Stiffness& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
-  Json effective{{"boundary", "periodic"},
+  std::vector<StressedCase> stressed;
+  for (int k = 0; k < 3; ++k) stressed.push_back({h.cases[k].load.name, &h.cases[k].fields, k});
+  Answer answer;
+  answer.stresses = phase_stresses_json(dir, stressed, t, m, foam.plane_stress, picture_width);
+  Json& effective = answer.effective;
+  effective = {{"boundary", "periodic"},
                  {"stiffness", stiffness_json(C)},
                  {"engineering", {{"E_x", ec.E_x}, {"E_y", ec.E_y}, {"nu_xy", ec.nu_xy}, {"nu_yx", ec.nu_yx}, {"G_xy", ec.G_xy}}},
                  {"anisotropy", {{"normal", ec.anisotropy_normal}, {"shear", ec.anisotropy_shear}}},
@@ -276,7 +335,7 @@ Json homogenise_periodic(const std::filesystem::path& dir, const StagedOutput& s
       }
     effective["inside_bounds"]["hashin_shtrikman"] = inside;
   }
-  return effective;
+  return answer;
 }
 
 }  // namespace
@@ -402,12 +461,13 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     stage("solving with solidDisplacementFoam");
     std::vector<std::string> solve_warnings;
     try {
-      report["effective"] =
-          boundary == Boundary::mixed
-              ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
-                                 all_pictures, solve_warnings)
-              : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
-                                    all_pictures, solve_warnings);
+      Answer answer = boundary == Boundary::mixed
+                          ? homogenise_mixed(dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
+                                             all_pictures, solve_warnings)
+                          : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline,
+                                                picture_width, all_pictures, solve_warnings);
+      report["effective"] = std::move(answer.effective);
+      report["stresses"] = std::move(answer.stresses);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.
       end_stage_line();

@@ -337,10 +337,11 @@ void collect_sweep(const std::filesystem::path& dir) {
   auto num = [](double v) { return std::isnan(v) ? std::string() : to_text(v, 10); };
   // The rows, and each row's tensor columns: written once it is known whether any run has them.
   std::vector<std::pair<std::string, std::string>> lines;
-  // The WC-Co descriptors of every run (its report's statistics), per row, by column name
-  // (e.g. contiguity_WC); the names in the order first met.
-  std::vector<std::map<std::string, std::array<double, 3>>> descriptor_rows;
-  std::vector<std::string> descriptor_names;
+  // Per-run numbers summarised per point, by column name, the names in the order first
+  // met: the WC-Co descriptors (e.g. contiguity_WC) and the phase stresses (e.g.
+  // mixed_WC_mean_xx, mixed_WC_von_mises_p99).
+  std::vector<std::map<std::string, std::array<double, 3>>> extra_rows;
+  std::vector<std::string> extra_names;
   bool any_tensor = false;
   std::size_t rows = 0;
   const auto& points = plan.at("points");
@@ -356,7 +357,11 @@ void collect_sweep(const std::filesystem::path& dir) {
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;
     std::vector<std::vector<double>> tensor(kTensor.size());
-    std::map<std::string, std::vector<double>> descriptors;
+    std::map<std::string, std::vector<double>> extras;
+    auto add = [&](const std::string& name, const Json& value) {
+      if (std::find(extra_names.begin(), extra_names.end(), name) == extra_names.end()) extra_names.push_back(name);
+      if (value.is_number()) extras[name].push_back(value.get<double>());
+    };
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
     int found = 0;
     for (int r = 0; r < realisations; ++r) {
@@ -376,12 +381,15 @@ void collect_sweep(const std::filesystem::path& dir) {
       q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
       if (j.contains("statistics"))
         for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
-          for (const auto& [phase, value] : j["statistics"][key].items()) {
-            const std::string name = std::string(key) + "_" + phase;
-            if (std::find(descriptor_names.begin(), descriptor_names.end(), name) == descriptor_names.end())
-              descriptor_names.push_back(name);
-            if (value.is_number()) descriptors[name].push_back(value.get<double>());
+          for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
+      if (j.contains("stresses"))
+        for (const auto& [load, phases] : j["stresses"].items()) {
+          const std::string component = load == "yy" ? "yy" : load == "xy" ? "xy" : "xx";  // the loaded one
+          for (const auto& [phase, s] : phases.items()) {
+            add(load + "_" + phase + "_mean_" + component, s["mean"][component]);
+            add(load + "_" + phase + "_von_mises_p99", s["von_mises"]["p99"]);
           }
+        }
       if (!j.contains("effective")) continue;
       const Json& e = j["effective"];
       if (e.contains("stiffness")) {
@@ -423,8 +431,8 @@ void collect_sweep(const std::filesystem::path& dir) {
       for (const double v3 : ts) tensor_columns.append(",").append(num(v3));
     }
     lines.emplace_back(line, tensor_columns);
-    descriptor_rows.emplace_back();
-    for (const auto& [name, values] : descriptors) descriptor_rows.back()[name] = stats(values);
+    extra_rows.emplace_back();
+    for (const auto& [name, values] : extras) extra_rows.back()[name] = stats(values);
     ++rows;
   }
   std::string csv;
@@ -433,13 +441,13 @@ void collect_sweep(const std::filesystem::path& dir) {
   // Without periodic runs the tensor's columns are left out.
   if (any_tensor)
     for (const auto& [group, q] : kTensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
-  for (const std::string& name : descriptor_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
+  for (const std::string& name : extra_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
   csv += "\n";
   for (std::size_t row = 0; row < lines.size(); ++row) {
     csv += lines[row].first + (any_tensor ? lines[row].second : std::string());
-    for (const std::string& name : descriptor_names) {
-      const auto found = descriptor_rows[row].find(name);
-      const std::array<double, 3> v = found != descriptor_rows[row].end() ? found->second : std::array<double, 3>{NAN, NAN, NAN};
+    for (const std::string& name : extra_names) {
+      const auto found = extra_rows[row].find(name);
+      const std::array<double, 3> v = found != extra_rows[row].end() ? found->second : std::array<double, 3>{NAN, NAN, NAN};
       for (const double x : v) csv.append(",").append(num(x));
     }
     csv += "\n";

@@ -17,4 +17,5 @@ for name in grains_wc_co grains_binder; do
 done
 ./build/grainmesh run -o "$tmp/run" --solve --set output.picture_width=800 > /dev/null
 cp "$tmp/run/stress_xx.png" docs/images/default_stress_xx.png
+cp "$tmp/run/stress_histogram.png" docs/images/default_stress_histogram.png
 echo "pictures written to docs/images/"

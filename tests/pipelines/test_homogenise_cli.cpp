@@ -162,6 +162,25 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
                       std::abs(mises[k] - 2 * m.mu() * strain), std::abs(principal[k] - m.M() * strain)});
   }
   CHECK(worst < 1e-4 * m.M() * strain);
+  // The phase statistics of the same uniform state: every phase carries it, with no
+  // spread, and the stress partition is 1.
+  const Json stresses = report_of(dir / "mixed")["stresses"]["mixed"];
+  for (const char* phase : {"particulate", "matrix"}) {
+    const Json& s = stresses[phase];
+    CHECK(s["mean"]["xx"].get<double>() == Approx(m.M() * strain).epsilon(1e-4));
+    CHECK(s["mean"]["zz"].get<double>() == Approx(m.lambda() * strain).epsilon(1e-4));
+    CHECK(s["von_mises"]["mean"].get<double>() == Approx(2 * m.mu() * strain).epsilon(1e-4));
+    CHECK(s["von_mises"]["std"].get<double>() < 1e-4 * m.M() * strain);
+    CHECK(s["von_mises"]["p99"].get<double>() == Approx(2 * m.mu() * strain).epsilon(1e-4));
+    CHECK(s["max_principal"]["max"].get<double>() == Approx(m.M() * strain).epsilon(1e-4));
+    CHECK(s["hydrostatic"]["p50"].get<double>() == Approx((m.M() + 2 * m.lambda()) * strain / 3).epsilon(1e-4));
+    CHECK(s["partition"].get<double>() == Approx(1.0).epsilon(1e-4));
+  }
+  CHECK(stresses["matrix"]["area_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
+  CHECK(fs::exists(dir / "mixed/stress_histogram.png"));
+  // Periodic: every load case, its loaded component's partition near 1 on one material.
+  for (const char* load : {"xx", "yy", "xy"})
+    CHECK(report_of(dir / "one")["stresses"][load]["particulate"]["partition"].get<double>() == Approx(1.0).epsilon(1e-3));
   // Periodic: each load case's arrays, named by it.
   const VtuContents periodic = read_vtu(dir / "one/results.vtu");
   for (const char* name : {"displacement_xx", "stress_yy", "von_mises_xy", "max_principal_xx"}) CHECK_NOTHROW(field(periodic, name));

@@ -178,6 +178,14 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
     for (const char* phase : {"_particulate", "_matrix"})
       for (const char* s : {"_mean", "_std", "_ci95"})
         CHECK(std::find(names.begin(), names.end(), q + std::string(phase) + s) != names.end());
+  // The phase stresses: each load case's loaded component and 99th percentile of von Mises.
+  std::vector<double> p99;
+  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+    p99.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["stresses"]["xy"]["matrix"]
+                      ["von_mises"]["p99"].get<double>());
+  CHECK(value("xy_matrix_von_mises_p99_mean") == Approx((p99[0] + p99[1] + p99[2]) / 3).epsilon(1e-9));
+  for (const char* column : {"xx_particulate_mean_xx_ci95", "yy_matrix_mean_yy_mean", "xy_particulate_mean_xy_std"})
+    CHECK(std::find(names.begin(), names.end(), column) != names.end());
   CHECK(fs::exists(dir / "out/summary.png"));
   CHECK_FALSE(fs::exists(dir / "out/p000-r00/stress_xx.png"));
 }

@@ -1,0 +1,105 @@
+#include "analysis/phase_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace grainmesh {
+
+Distribution distribution(const std::vector<double>& values, const std::vector<double>& weights) {
+  Distribution d;
+  const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  if (values.empty() || !(total > 0.0)) return d;
+  for (std::size_t k = 0; k < values.size(); ++k) d.mean += weights[k] * values[k];
+  d.mean /= total;
+  double variance = 0.0;
+  for (std::size_t k = 0; k < values.size(); ++k) variance += weights[k] * (values[k] - d.mean) * (values[k] - d.mean);
+  d.std = std::sqrt(variance / total);
+  std::vector<std::size_t> order(values.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  // The smallest value with at least a share p of the area at or below it.
+  auto percentile = [&](double p) {
+    double below = 0.0;
+    for (std::size_t k : order) {
+      below += weights[k];
+      if (below >= p * total) return values[k];
+    }
+    return values[order.back()];
+  };
+  d.p50 = percentile(0.50);
+  d.p90 = percentile(0.90);
+  d.p99 = percentile(0.99);
+  d.max = values[order.back()];
+  return d;
+}
+
+std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stress) {
+  std::vector<StressState> out(fields.stress.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double* s = fields.stress[k];  // OpenFOAM's order: xx xy xz yy yz zz
+    out[k] = {.xx = s[0], .yy = s[3], .zz = plane_stress ? 0.0 : s[5], .xy = s[1]};
+  }
+  return out;
+}
+
+std::vector<PhaseStresses> phase_stresses(const CaseFields& fields, const TriMesh& mesh, const std::vector<int>& phase,
+                                          int phases, int loaded_component, bool plane_stress) {
+  const std::vector<StressState> states = stress_states(fields, plane_stress);
+  auto loaded = [&](const StressState& s) { return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : s.xy; };
+  std::vector<PhaseStresses> out(static_cast<std::size_t>(phases));
+  std::vector<std::vector<double>> weights(out.size()), mises(out.size()), principal(out.size()), pressure(out.size());
+  double cell_area = 0.0, cell_loaded = 0.0;
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const double a = triangle_area(mesh, static_cast<int>(k));
+    const StressState& s = states[k];
+    const std::size_t p = static_cast<std::size_t>(phase[k]);
+    PhaseStresses& ps = out[p];
+    ps.area_fraction += a;
+    ps.mean.xx += a * s.xx, ps.mean.yy += a * s.yy, ps.mean.zz += a * s.zz, ps.mean.xy += a * s.xy;
+    weights[p].push_back(a);
+    mises[p].push_back(von_mises(s));
+    principal[p].push_back(largest_principal(s));
+    pressure[p].push_back(hydrostatic(s));
+    cell_area += a;
+    cell_loaded += a * loaded(s);
+  }
+  const double cell_mean = cell_loaded / cell_area;
+  for (std::size_t p = 0; p < out.size(); ++p) {
+    PhaseStresses& ps = out[p];
+    if (ps.area_fraction > 0.0) {
+      ps.mean.xx /= ps.area_fraction, ps.mean.yy /= ps.area_fraction, ps.mean.zz /= ps.area_fraction;
+      ps.mean.xy /= ps.area_fraction;
+    }
+    ps.area_fraction /= cell_area;
+    ps.von_mises = distribution(mises[p], weights[p]);
+    ps.max_principal = distribution(principal[p], weights[p]);
+    ps.hydrostatic = distribution(pressure[p], weights[p]);
+    ps.partition = cell_mean != 0.0 ? loaded(ps.mean) / cell_mean : 0.0;
+  }
+  return out;
+}
+
+std::vector<std::vector<Vec2>> von_mises_histograms(const CaseFields& fields, const TriMesh& mesh,
+                                                    const std::vector<int>& phase, int phases, bool plane_stress,
+                                                    int bins) {
+  std::vector<double> mises;
+  for (const StressState& s : stress_states(fields, plane_stress)) mises.push_back(von_mises(s));
+  const auto [lo, hi] = std::minmax_element(mises.begin(), mises.end());
+  const double low = mises.empty() ? 0.0 : *lo, width = mises.empty() || *hi == *lo ? 1.0 : (*hi - *lo) / bins;
+  std::vector<std::vector<double>> share(static_cast<std::size_t>(phases), std::vector<double>(bins, 0.0));
+  std::vector<double> area(static_cast<std::size_t>(phases), 0.0);
+  for (std::size_t k = 0; k < mises.size(); ++k) {
+    const int bin = std::clamp(static_cast<int>((mises[k] - low) / width), 0, bins - 1);
+    const double a = triangle_area(mesh, static_cast<int>(k));
+    share[phase[k]][bin] += a;
+    area[phase[k]] += a;
+  }
+  std::vector<std::vector<Vec2>> out(share.size());
+  for (std::size_t p = 0; p < share.size(); ++p)
+    for (int b = 0; b < bins; ++b)
+      out[p].push_back({low + (b + 0.5) * width, area[p] > 0.0 ? share[p][b] / area[p] : 0.0});
+  return out;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,45 @@
+// Where the stress is: per phase, the area-weighted mean stress tensor and the
+// distributions of the von Mises, largest principal and hydrostatic stresses over the
+// phase's cells (area-weighted: a cell counts by its share of the phase's area), and the
+// stress partition, the phase's mean of the loaded component over the cell's.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/foam_fields.hpp"
+#include "analysis/stress_measures.hpp"
+#include "mesh/trimesh.hpp"
+
+namespace grainmesh {
+
+// An area-weighted distribution: mean, standard deviation, the 50th, 90th and 99th
+// percentiles (the smallest value at or below which that share of the area lies), maximum.
+struct Distribution {
+  double mean = 0.0, std = 0.0, p50 = 0.0, p90 = 0.0, p99 = 0.0, max = 0.0;
+};
+Distribution distribution(const std::vector<double>& values, const std::vector<double>& weights);
+
+struct PhaseStresses {
+  double area_fraction = 0.0;
+  StressState mean;  // area-weighted mean tensor
+  Distribution von_mises, max_principal, hydrostatic;
+  double partition = 0.0;  // the phase's mean of the loaded component over the cell's mean
+};
+
+// The loaded component of a load case: 0 xx, 1 yy, 2 xy.
+// Per phase (phase[t] of triangle t, `phases` of them), from the case's cell stresses
+// (plane stress: zz zero).
+std::vector<PhaseStresses> phase_stresses(const CaseFields& fields, const TriMesh& mesh, const std::vector<int>& phase,
+                                          int phases, int loaded_component, bool plane_stress);
+
+// Each phase's area-weighted histogram of the von Mises stress: `bins` equal bins over the
+// range of all cells, each point (the bin's centre, the share of the phase's area in it).
+std::vector<std::vector<Vec2>> von_mises_histograms(const CaseFields& fields, const TriMesh& mesh,
+                                                    const std::vector<int>& phase, int phases, bool plane_stress,
+                                                    int bins);
+
+// The cell stresses of a solved case as stress states (OpenFOAM's sigmaD; plane stress: zz zero).
+std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stress);
+
+}  // namespace grainmesh

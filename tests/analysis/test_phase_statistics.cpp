@@ -1,0 +1,42 @@
+// Area-weighted distributions and the stress measures, against values worked by hand.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "analysis/phase_statistics.hpp"
+#include "analysis/stress_measures.hpp"
+
+using namespace grainmesh;
+
+TEST_CASE("area-weighted distributions: mean, spread and percentiles by area", "[analysis][statistics]") {
+  // Values 1, 2, 3, 10 on areas 0.5, 0.3, 0.195, 0.005: half the area at 1, 80 % at or
+  // below 2, 99.5 % at or below 3, the largest 10.
+  const Distribution d = distribution({10, 2, 1, 3}, {0.005, 0.3, 0.5, 0.195});
+  const double mean = 0.5 * 1 + 0.3 * 2 + 0.195 * 3 + 0.005 * 10;
+  CHECK(d.mean == Approx(mean).epsilon(1e-14));
+  const double variance = 0.5 * std::pow(1 - mean, 2) + 0.3 * std::pow(2 - mean, 2) + 0.195 * std::pow(3 - mean, 2) +
+                          0.005 * std::pow(10 - mean, 2);
+  CHECK(d.std == Approx(std::sqrt(variance)).epsilon(1e-12));
+  CHECK(d.p50 == 1.0);
+  CHECK(d.p90 == 3.0);
+  CHECK(d.p99 == 3.0);
+  CHECK(d.max == 10.0);
+  // Scaling every area changes nothing.
+  const Distribution scaled = distribution({10, 2, 1, 3}, {1, 60, 100, 39});
+  CHECK(scaled.mean == Approx(d.mean).epsilon(1e-14));
+  CHECK(scaled.p90 == d.p90);
+}
+
+TEST_CASE("von Mises, the largest principal and the hydrostatic stress of known states", "[analysis][statistics]") {
+  // Uniaxial: von Mises is the stress itself.
+  CHECK(von_mises({.xx = 5, .yy = 0, .zz = 0, .xy = 0}) == Approx(5));
+  // Pure shear tau: von Mises sqrt(3) tau, principal stresses +-tau.
+  CHECK(von_mises({.xx = 0, .yy = 0, .zz = 0, .xy = 2}) == Approx(2 * std::sqrt(3.0)));
+  CHECK(largest_principal({.xx = 0, .yy = 0, .zz = 0, .xy = 2}) == Approx(2));
+  // Hydrostatic: no von Mises stress; the out-of-plane stress can be the largest.
+  CHECK(von_mises({.xx = -3, .yy = -3, .zz = -3, .xy = 0}) == Approx(0).margin(1e-12));
+  CHECK(hydrostatic({.xx = 1, .yy = 2, .zz = 6, .xy = 7}) == Approx(3));
+  CHECK(largest_principal({.xx = 1, .yy = 2, .zz = 6, .xy = 0}) == Approx(6));
+  // In plane: (xx + yy) / 2 + sqrt(((xx - yy) / 2)^2 + xy^2).
+  CHECK(largest_principal({.xx = 4, .yy = -2, .zz = 0, .xy = 4}) == Approx(1 + 5));
+}
