@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "analysis/foam_fields.hpp"
+#include "analysis/stress_recovery.hpp"
 #include "analysis/traction.hpp"
 #include "common/errors.hpp"
 
@@ -55,6 +56,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   Homogenised h;
   h.run = run_solver(case_dir, m, o, deadline, case_shown_as);
   h.fields = read_case_fields(h.run.result_dir, static_cast<std::size_t>(pm.cells));
+  h.cell_stress = recovered_stress(h.fields, m, o);
   // The force through `right`: the load the cell carries. From sigma's face values there,
   // or on a cyclic case, which writes none, from the cell fields.
   if (o.cyclic) {
@@ -91,6 +93,7 @@ PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& c
       ok.strain = r.load.strain;
       r.run = run_solver(case_dirs[k], m, ok, deadline, cases_shown_as[k], r.load.name);
       r.fields = read_case_fields(r.run.result_dir, static_cast<std::size_t>(pm.cells));
+      r.cell_stress = recovered_stress(r.fields, m, ok);
       r.stress = periodic_mean_stress(r.run.result_dir, r.fields, m, pm, ok);
       r.volume_average = volume_average(r.fields, m);
     } catch (...) {

@@ -12,6 +12,7 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
+#include "analysis/stress_measures.hpp"
 #include "analysis/solve.hpp"
 #include "common/deadline.hpp"
 #include "export/foam.hpp"
@@ -39,6 +40,7 @@ struct Homogenised {
   double volume_average_modulus = 0.0;
   SolveRun run;
   CaseFields fields;           // the solution's cell fields
+  std::vector<StressState> cell_stress;  // recovered phase by phase (stress_recovery.hpp)
 };
 
 // Solves the case that write_foam_case wrote into `case_dir` (`pm` is what it returned)
@@ -61,6 +63,7 @@ struct LoadCaseResult {
   MeanStress volume_average;
   SolveRun run;
   CaseFields fields;           // the solution's cell fields
+  std::vector<StressState> cell_stress;  // recovered phase by phase (stress_recovery.hpp)
 };
 
 struct PeriodicHomogenised {

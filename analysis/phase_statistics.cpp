@@ -43,9 +43,8 @@ std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stre
   return out;
 }
 
-std::vector<PhaseStresses> phase_stresses(const CaseFields& fields, const TriMesh& mesh, const std::vector<int>& phase,
-                                          int phases, int loaded_component, bool plane_stress) {
-  const std::vector<StressState> states = stress_states(fields, plane_stress);
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const TriMesh& mesh,
+                                          const std::vector<int>& phase, int phases, int loaded_component) {
   auto loaded = [&](const StressState& s) { return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : s.xy; };
   std::vector<PhaseStresses> out(static_cast<std::size_t>(phases));
   std::vector<std::vector<double>> weights(out.size()), mises(out.size()), principal(out.size()), pressure(out.size());
@@ -80,11 +79,10 @@ std::vector<PhaseStresses> phase_stresses(const CaseFields& fields, const TriMes
   return out;
 }
 
-std::vector<std::vector<Vec2>> von_mises_histograms(const CaseFields& fields, const TriMesh& mesh,
-                                                    const std::vector<int>& phase, int phases, bool plane_stress,
-                                                    int bins) {
+std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+                                                    const std::vector<int>& phase, int phases, int bins) {
   std::vector<double> mises;
-  for (const StressState& s : stress_states(fields, plane_stress)) mises.push_back(von_mises(s));
+  for (const StressState& s : cell_stress) mises.push_back(von_mises(s));
   const auto [lo, hi] = std::minmax_element(mises.begin(), mises.end());
   const double low = mises.empty() ? 0.0 : *lo, width = mises.empty() || *hi == *lo ? 1.0 : (*hi - *lo) / bins;
   std::vector<std::vector<double>> share(static_cast<std::size_t>(phases), std::vector<double>(bins, 0.0));

@@ -27,17 +27,15 @@ struct PhaseStresses {
   double partition = 0.0;  // the phase's mean of the loaded component over the cell's mean
 };
 
-// The loaded component of a load case: 0 xx, 1 yy, 2 xy.
-// Per phase (phase[t] of triangle t, `phases` of them), from the case's cell stresses
-// (plane stress: zz zero).
-std::vector<PhaseStresses> phase_stresses(const CaseFields& fields, const TriMesh& mesh, const std::vector<int>& phase,
-                                          int phases, int loaded_component, bool plane_stress);
+// Per phase (phase[t] of triangle t, `phases` of them), from the cells' stresses; the
+// loaded component of the load case: 0 xx, 1 yy, 2 xy.
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+                                          const std::vector<int>& phase, int phases, int loaded_component);
 
 // Each phase's area-weighted histogram of the von Mises stress: `bins` equal bins over the
 // range of all cells, each point (the bin's centre, the share of the phase's area in it).
-std::vector<std::vector<Vec2>> von_mises_histograms(const CaseFields& fields, const TriMesh& mesh,
-                                                    const std::vector<int>& phase, int phases, bool plane_stress,
-                                                    int bins);
+std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+                                                    const std::vector<int>& phase, int phases, int bins);
 
 // The cell stresses of a solved case as stress states (OpenFOAM's sigmaD; plane stress: zz zero).
 std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stress);

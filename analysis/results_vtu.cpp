@@ -1,20 +1,19 @@
 #include "analysis/results_vtu.hpp"
 
-#include "analysis/phase_statistics.hpp"
 #include "analysis/stress_measures.hpp"
 #include "export/vtu.hpp"
 
 namespace grainmesh {
 
 void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
-                       const std::vector<SolvedFields>& cases, bool plane_stress) {
+                       const std::vector<SolvedFields>& cases) {
   const std::size_t cells = m.mesh.triangles.size();
   std::vector<CellField> fields{{"grain", m.mesh.region}, {"phase", m.phase}};
   for (const SolvedFields& c : cases) {
     const FieldValues& D = c.fields->displacement;
     std::vector<double> stress, mises, principal;
     stress.reserve(6 * cells);
-    for (const StressState& s : stress_states(*c.fields, plane_stress)) {
+    for (const StressState& s : *c.stress) {
       for (double v : vtk_components(s)) stress.push_back(v);
       mises.push_back(von_mises(s));
       principal.push_back(largest_principal(s));

@@ -7,22 +7,24 @@
 #include <vector>
 
 #include "analysis/foam_fields.hpp"
+#include "analysis/stress_measures.hpp"
 #include "mesh/grain_mesh.hpp"
 
 namespace grainmesh {
 
-// A solved case's fields, its arrays named with `suffix` (empty for the mixed load's one
-// case, "_xx", "_yy", "_xy" for the periodic ones).
+// A solved case's displacement and cell stresses, its arrays named with `suffix` (empty
+// for the mixed load's one case, "_xx", "_yy", "_xy" for the periodic ones).
 struct SolvedFields {
   std::string suffix;
   const CaseFields* fields = nullptr;
+  const std::vector<StressState>* stress = nullptr;
 };
 
 // Cell arrays: grain, phase, and per case displacement (vector, m), stress (symmetric
-// tensor, Pa; zz the out-of-plane stress, zero in plane stress), von_mises and
+// tensor, Pa, the recovered cell stress; zz the out-of-plane stress), von_mises and
 // max_principal (Pa); field data phase_names. Throws IoError naming the file when it
 // cannot be written.
 void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
-                       const std::vector<SolvedFields>& cases, bool plane_stress);
+                       const std::vector<SolvedFields>& cases);
 
 }  // namespace grainmesh

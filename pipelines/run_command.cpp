@@ -119,12 +119,11 @@ namespace {
 
 // Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
 // 3.14-3.15); none when picture_width is 0, sigma_xx alone when not `all`.
-void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields, const GrainMesh& m,
-                          int picture_width, bool all) {
+void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
+                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all) {
   if (picture_width == 0) return;
-  const std::vector<CellStress> sigma = cell_stress(fields);
   std::vector<double> sxx, syy, sxy;
-  for (const CellStress& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
+  for (const StressState& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
   std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
       {"stress_xx.png", {sxx, "sigma_xx (Pa)"}}};
   if (all) {
@@ -184,7 +183,7 @@ Json distribution_json(const Distribution& d) {
 // yy, 2 xy).
 struct StressedCase {
   std::string name;
-  const CaseFields* fields;
+  const std::vector<StressState>* cell_stress;
   int loaded;
 };
 
@@ -192,11 +191,11 @@ struct StressedCase {
 // max_principal, hydrostatic (each mean, std, p50, p90, p99, max), partition}}}, Pa, from
 // the cells' stresses; and stress_histogram.png of the first case (when drawing).
 Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<StressedCase>& cases, const Tessellation& t,
-                         const GrainMesh& m, bool plane_stress, int picture_width) {
+                         const GrainMesh& m, int picture_width) {
   Json out;
   const int phases = static_cast<int>(t.phases.size());
   for (const StressedCase& c : cases) {
-    const std::vector<PhaseStresses> ps = phase_stresses(*c.fields, m.mesh, m.phase, phases, c.loaded, plane_stress);
+    const std::vector<PhaseStresses> ps = phase_stresses(*c.cell_stress, m.mesh, m.phase, phases, c.loaded);
     for (int p = 0; p < phases; ++p) {
       const PhaseStresses& s = ps[p];
       out[c.name][t.phases[p].name] = {
@@ -211,7 +210,7 @@ Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<Str
   if (picture_width > 0 && !cases.empty()) {
     Plot plot{.x_label = "von Mises stress (Pa), load case " + cases[0].name, .y_label = "share of the phase's area",
               .series = {}};
-    const auto histograms = von_mises_histograms(*cases[0].fields, m.mesh, m.phase, phases, plane_stress, 40);
+    const auto histograms = von_mises_histograms(*cases[0].cell_stress, m.mesh, m.phase, phases, 40);
     for (int p = 0; p < phases; ++p) plot.series.push_back({t.phases[p].name, histograms[p], true, p});
     write_plot_png(dir / "stress_histogram.png", plot);
   }
@@ -227,7 +226,7 @@ Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& st
                         std::vector<std::string>& warnings) {
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
-  answer.stresses = phase_stresses_json(dir, {{"mixed", &h.fields, 0}}, t, m, foam.plane_stress, picture_width);
+  answer.stresses = phase_stresses_json(dir, {{"mixed", &h.cell_stress, 0}}, t, m, picture_width);
   Json& effective = answer.effective;
   effective = solve_json(h.run, dir);
   effective["boundary"] = "mixed";
@@ -238,8 +237,8 @@ Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& st
                                  {"sigma_xx", h.volume_average.xx},
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields}}, foam.plane_stress);
-  write_field_pictures(dir, h.fields, m, picture_width, all_pictures);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields, &h.cell_stress}});
+  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -282,9 +281,9 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
   const Stiffness& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
   std::vector<StressedCase> stressed;
-  for (int k = 0; k < 3; ++k) stressed.push_back({h.cases[k].load.name, &h.cases[k].fields, k});
+  for (int k = 0; k < 3; ++k) stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k});
   Answer answer;
-  answer.stresses = phase_stresses_json(dir, stressed, t, m, foam.plane_stress, picture_width);
+  answer.stresses = phase_stresses_json(dir, stressed, t, m, picture_width);
   Json& effective = answer.effective;
   effective = {{"boundary", "periodic"},
                  {"stiffness", stiffness_json(C)},
@@ -307,9 +306,9 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
   effective["load_cases"] = cases;
   effective["corrections"] = corrections;
   std::vector<SolvedFields> solved;
-  for (const LoadCaseResult& r : h.cases) solved.push_back({"_" + r.load.name, &r.fields});
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved, foam.plane_stress);
-  write_field_pictures(dir, h.cases[0].fields, m, picture_width, all_pictures);
+  for (const LoadCaseResult& r : h.cases) solved.push_back({"_" + r.load.name, &r.fields, &r.cell_stress});
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
+  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures);
 
   const TensorBounds b = tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = stiffness_json(b.voigt);
