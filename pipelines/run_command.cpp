@@ -179,8 +179,8 @@ Json distribution_json(const Distribution& d) {
   return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
 }
 
-// A solved load case: its name in the report, its fields, its loaded component (0 xx, 1
-// yy, 2 xy).
+// A solved load case: its name in the report, its recovered cell stresses, its loaded
+// component (0 xx, 1 yy, 2 xy).
 struct StressedCase {
   std::string name;
   const std::vector<StressState>* cell_stress;
@@ -189,7 +189,7 @@ struct StressedCase {
 
 // `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,
 // max_principal, hydrostatic (each mean, std, p50, p90, p99, max), partition}}}, Pa, from
-// the cells' stresses; and stress_histogram.png of the first case (when drawing).
+// the recovered cell stresses; and stress_histogram.png of the first case (when drawing).
 Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<StressedCase>& cases, const Tessellation& t,
                          const GrainMesh& m, int picture_width) {
   Json out;
@@ -219,7 +219,6 @@ Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<Str
 
 // The mixed (thesis) load's answer in report.json, with the bounds that hold for it;
 // a broken bound is added to `warnings`.
-
 Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& staged, const Tessellation& t,
                         const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
                         const Deadline& deadline, int picture_width, bool all_pictures,
