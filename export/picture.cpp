@@ -261,8 +261,14 @@ void write_tessellation_png(const std::filesystem::path& file, const Tessellatio
 void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
   Box data;
   for (const PlotSeries& s : plot.series)
-    for (const Vec2 p : s.points)
-      if (is_finite(p)) data.extend(p);
+    for (std::size_t k = 0; k < s.points.size(); ++k) {
+      const Vec2 p = s.points[k];
+      if (!is_finite(p)) continue;
+      data.extend(p);
+      const double e = k < s.error.size() && std::isfinite(s.error[k]) ? s.error[k] : 0.0;
+      data.extend(Vec2{p.x, p.y - e});
+      data.extend(Vec2{p.x, p.y + e});
+    }
   if (data.empty()) throw IoError(file.string() + ": nothing to plot");
   // Some air around the data, and a range even for a single value.
   const Vec2 pad{std::max(0.05 * data.width(), 1e-9 * std::max(1.0, std::abs(data.lo.x))),
@@ -330,11 +336,24 @@ void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
       }
       cairo_set_dash(c, nullptr, 0, 0);
     } else {
-      for (const Vec2 p : s.points) {
+      for (std::size_t k = 0; k < s.points.size(); ++k) {
+        const Vec2 p = s.points[k];
         if (!is_finite(p)) continue;
         const Vec2 q = px(p);
         cairo_arc(c, q.x, q.y, 3.5, 0, 2 * M_PI);
         cairo_fill(c);
+        if (k < s.error.size() && std::isfinite(s.error[k]) && s.error[k] > 0.0) {
+          // The bar, with caps.
+          const Vec2 lo = px({p.x, p.y - s.error[k]}), hi = px({p.x, p.y + s.error[k]});
+          cairo_set_line_width(c, 1.5);
+          cairo_move_to(c, q.x, lo.y);
+          cairo_line_to(c, q.x, hi.y);
+          for (const double y : {lo.y, hi.y}) {
+            cairo_move_to(c, q.x - 5, y);
+            cairo_line_to(c, q.x + 5, y);
+          }
+          cairo_stroke(c);
+        }
       }
       if (!s.name.empty()) {
         cairo_arc(c, right + 25, legend_y, 3.5, 0, 2 * M_PI);

@@ -39,6 +39,7 @@ struct PlotSeries {
   std::vector<Vec2> points;
   bool line = false;    // a polyline through the points (in their order), dashed
   int colour = 0;       // index into a fixed palette
+  std::vector<double> error{};  // points: a bar of +- this at each (e.g. a 95 % CI); empty: none
 };
 struct Plot {
   std::string x_label, y_label;

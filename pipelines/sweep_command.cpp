@@ -352,7 +352,13 @@ void collect_sweep(const std::filesystem::path& dir) {
   for (std::size_t k = keys.size(); k-- > 0;)
     if (keys[k].size() > 9 && keys[k].compare(keys[k].size() - 9, 9, ".fraction") == 0) x_key = k;
   std::map<std::string, std::vector<Vec2>> by_series;
-  std::map<double, std::array<double, 3>> bounds;  // x -> summed voigt, reuss, count
+  std::map<std::string, std::pair<std::vector<Vec2>, std::vector<double>>> means;  // per series: mean, CI95
+  std::map<double, std::array<double, 5>> bounds;  // x -> summed voigt, reuss, HS lower, HS upper; count
+  // Against the achieved fraction of the swept phase (each run's report) where the x key
+  // is a phase's fraction; else against the key's value.
+  const std::string x_phase = !keys.empty() && keys[x_key].rfind("phase.", 0) == 0 && keys[x_key].size() > 15
+                                  ? keys[x_key].substr(6, keys[x_key].size() - 15)
+                                  : std::string();
   bool plotted_c11 = false;
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;
@@ -363,6 +369,7 @@ void collect_sweep(const std::filesystem::path& dir) {
       if (value.is_number()) extras[name].push_back(value.get<double>());
     };
     double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
+    std::vector<double> achieved;  // the swept phase's achieved fraction, per run
     int found = 0;
     for (int r = 0; r < realisations; ++r) {
       const std::string name = run_name(p, r);
@@ -379,6 +386,8 @@ void collect_sweep(const std::filesystem::path& dir) {
       ++found;
       cells += j["mesh"]["cells"].get<double>();
       q_min = std::min(q_min, j["mesh"]["q_min"].get<double>());
+      for (const Json& phase : j["phases"])
+        if (!x_phase.empty() && phase["name"] == x_phase) achieved.push_back(phase["achieved_fraction"].get<double>());
       if (j.contains("statistics"))
         for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
           for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
@@ -413,11 +422,18 @@ void collect_sweep(const std::filesystem::path& dir) {
       std::string series;
       for (std::size_t k = 0; k < keys.size(); ++k)
         if (k != x_key) series += (series.empty() ? "" : ", ") + keys[k] + " " + points[p][keys[k]].get<std::string>();
-      const double x = std::strtod(points[p][keys[x_key]].get<std::string>().c_str(), nullptr);
-      for (double m : plotted) by_series[series.empty() ? "runs" : series].push_back({x, m});
+      const double key_x = std::strtod(points[p][keys[x_key]].get<std::string>().c_str(), nullptr);
+      const bool by_achieved = achieved.size() == plotted.size() && !achieved.empty();
+      const double x = by_achieved ? stats(achieved)[0] : key_x;
+      const std::string series_name = series.empty() ? "runs" : series;
+      for (std::size_t k = 0; k < plotted.size(); ++k)
+        by_series[series_name].push_back({by_achieved ? achieved[k] : key_x, plotted[k] / 1e9});
+      const std::array<double, 3> ps = stats(plotted);
+      means[series_name].first.push_back({x, ps[0] / 1e9});
+      means[series_name].second.push_back(ps[2] / 1e9);
       if (!std::isnan(voigt)) {
         auto& b = bounds[x];
-        b[0] += voigt, b[1] += reuss, b[2] += 1;
+        b[0] += voigt / 1e9, b[1] += reuss / 1e9, b[2] += hs_lo / 1e9, b[3] += hs_hi / 1e9, b[4] += 1;
       }
     }
     const std::array<double, 3> s = stats(modulus);
@@ -474,16 +490,29 @@ void collect_sweep(const std::filesystem::path& dir) {
                  " (not run yet or interrupted: run the sweep again)");
   write_text_file(dir / "summary.csv", csv);
   if (!by_series.empty()) {
-    Plot plot{.x_label = keys[x_key], .y_label = plotted_c11 ? "effective C11 (Pa)" : "effective modulus (Pa)",
+    Plot plot{.x_label = x_phase.empty() ? keys[x_key] : "achieved fraction of " + x_phase,
+              .y_label = std::string(plotted_c11 ? "effective C11" : "effective modulus") +
+                         " (GPa): runs, their mean and 95 % CI",
               .series = {}};
+    // Every realisation a small point; each point's mean with its 95 % CI as a bar.
     int colour = 0;
-    for (auto& [name, pts] : by_series) plot.series.push_back({name, pts, false, colour++});
-    PlotSeries voigt_line{"Voigt", {}, true, 4}, reuss_line{"Reuss", {}, true, 5};
+    for (auto& [name, pts] : by_series) {
+      plot.series.push_back({"", pts, false, colour});
+      const auto& [mean, ci] = means[name];
+      plot.series.push_back({name, mean, false, colour, ci});
+      ++colour;
+    }
+    PlotSeries voigt_line{"Voigt", {}, true, 4}, reuss_line{"Reuss", {}, true, 5},
+        hs_upper{"Hashin-Shtrikman", {}, true, 2}, hs_lower{"", {}, true, 2};
     for (const auto& [x, b] : bounds) {
-      voigt_line.points.push_back({x, b[0] / b[2]});
-      reuss_line.points.push_back({x, b[1] / b[2]});
+      voigt_line.points.push_back({x, b[0] / b[4]});
+      reuss_line.points.push_back({x, b[1] / b[4]});
+      hs_lower.points.push_back({x, b[2] / b[4]});
+      hs_upper.points.push_back({x, b[3] / b[4]});
     }
     if (!bounds.empty()) plot.series.insert(plot.series.end(), {voigt_line, reuss_line});
+    if (!bounds.empty() && std::isfinite(hs_upper.points.front().y))
+      plot.series.insert(plot.series.end(), {hs_upper, hs_lower});
     write_plot_png(dir / "summary.png", plot);
   }
   std::printf("grainmesh sweep --collect: %zu points (%zu of %zu runs) in %s%s\n", rows,
