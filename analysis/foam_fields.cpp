@@ -93,9 +93,12 @@ CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t
   return {read_cell_field(result_dir / "D", "vector", cells), read_cell_field(result_dir / kStressField, "symmTensor", cells)};
 }
 
-std::vector<CellStress> cell_stress(const CaseFields& f) {
-  std::vector<CellStress> out(f.stress.size());
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = {f.stress[k][0], f.stress[k][1], f.stress[k][3]};
+std::vector<StressState> stress_states(const CaseFields& f, bool plane_stress) {
+  std::vector<StressState> out(f.stress.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double* s = f.stress[k];  // OpenFOAM's order: xx xy xz yy yz zz
+    out[k] = {.xx = s[0], .yy = s[3], .zz = plane_stress ? 0.0 : s[5], .xy = s[1]};
+  }
   return out;
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stress_measures.hpp"
+
 namespace grainmesh {
 
 // The components of every value of a field, in OpenFOAM's order, flattened: `width`
@@ -37,11 +39,9 @@ struct CaseFields {
 };
 CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells);
 
-// The in-plane stress of every cell, and the length of the displacement.
-struct CellStress {
-  double xx = 0.0, xy = 0.0, yy = 0.0;
-};
-std::vector<CellStress> cell_stress(const CaseFields& f);
+// The solver's stress of every cell (plane stress: zz zero), and the length of the
+// displacement.
+std::vector<StressState> stress_states(const CaseFields& f, bool plane_stress);
 std::vector<double> displacement_length(const CaseFields& f);
 
 // The case's latest time directory: where the solver wrote its fields. Throws SolveError

@@ -15,7 +15,7 @@
 namespace grainmesh {
 
 MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
-  const std::vector<CellStress> sigma = cell_stress(fields);
+  const std::vector<StressState> sigma = stress_states(fields, /*plane_stress=*/false);  // in-plane parts only
   MeanStress s;
   double area = 0.0;
   for (std::size_t k = 0; k < sigma.size(); ++k) {  // cell k is triangle k

@@ -34,15 +34,6 @@ Distribution distribution(const std::vector<double>& values, const std::vector<d
   return d;
 }
 
-std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stress) {
-  std::vector<StressState> out(fields.stress.size());
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const double* s = fields.stress[k];  // OpenFOAM's order: xx xy xz yy yz zz
-    out[k] = {.xx = s[0], .yy = s[3], .zz = plane_stress ? 0.0 : s[5], .xy = s[1]};
-  }
-  return out;
-}
-
 std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const TriMesh& mesh,
                                           const std::vector<int>& phase, int phases, int loaded_component) {
   auto loaded = [&](const StressState& s) { return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : s.xy; };

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
 #include "mesh/trimesh.hpp"
 
@@ -36,8 +35,5 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_s
 // range of all cells, each point (the bin's centre, the share of the phase's area in it).
 std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins);
-
-// The cell stresses of a solved case as stress states (OpenFOAM's sigmaD; plane stress: zz zero).
-std::vector<StressState> stress_states(const CaseFields& fields, bool plane_stress);
 
 }  // namespace grainmesh

@@ -3,9 +3,10 @@
 // cell next to an interface gets a stress between the two phases' (the saw-tooth along
 // interfaces). Here each cell's displacement gradient is fitted (weighted least squares)
 // to its own phase's neighbours only - every cell sharing a corner with it - and, across
-// an interface edge, to the displacement at the edge's midpoint that makes the normal flux
-// continuous (each side weighted by its stiffness over its distance), then turned into
-// stress with the cell's own Lame constants. The solver's own fields are left as written.
+// an interface edge, to the displacement where the line between the two cells' centres
+// crosses the edge, chosen so that the flux along that line is continuous (each side
+// weighted by its stiffness over its distance); then turned into stress with the cell's
+// own Lame constants. The solver's own fields are left as written.
 #pragma once
 
 #include <vector>

@@ -189,9 +189,8 @@ struct StressedCase {
 
 // `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,
 // max_principal, hydrostatic (each mean, std, p50, p90, p99, max), partition}}}, Pa, from
-// the recovered cell stresses; and stress_histogram.png of the first case (when drawing).
-Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<StressedCase>& cases, const Tessellation& t,
-                         const GrainMesh& m, int picture_width) {
+// the recovered cell stresses.
+Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellation& t, const GrainMesh& m) {
   Json out;
   const int phases = static_cast<int>(t.phases.size());
   for (const StressedCase& c : cases) {
@@ -207,14 +206,18 @@ Json phase_stresses_json(const std::filesystem::path& dir, const std::vector<Str
           {"partition", s.partition}};
     }
   }
-  if (picture_width > 0 && !cases.empty()) {
-    Plot plot{.x_label = "von Mises stress (Pa), load case " + cases[0].name, .y_label = "share of the phase's area",
-              .series = {}};
-    const auto histograms = von_mises_histograms(*cases[0].cell_stress, m.mesh, m.phase, phases, 40);
-    for (int p = 0; p < phases; ++p) plot.series.push_back({t.phases[p].name, histograms[p], true, p});
-    write_plot_png(dir / "stress_histogram.png", plot);
-  }
   return out;
+}
+
+// stress_histogram.png: each phase's distribution of von Mises stress in load case `c`.
+void write_stress_histogram(const std::filesystem::path& file, const StressedCase& c, const Tessellation& t,
+                            const GrainMesh& m) {
+  const int phases = static_cast<int>(t.phases.size());
+  Plot plot{.x_label = "von Mises stress (Pa), load case " + c.name, .y_label = "share of the phase's area",
+            .series = {}};
+  const auto histograms = von_mises_histograms(*c.cell_stress, m.mesh, m.phase, phases, 40);
+  for (int p = 0; p < phases; ++p) plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+  write_plot_png(file, plot);
 }
 
 // The mixed (thesis) load's answer in report.json, with the bounds that hold for it;
@@ -225,7 +228,9 @@ Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& st
                         std::vector<std::string>& warnings) {
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
-  answer.stresses = phase_stresses_json(dir, {{"mixed", &h.cell_stress, 0}}, t, m, picture_width);
+  const StressedCase stressed{"mixed", &h.cell_stress, 0};
+  answer.stresses = phase_stresses_json({stressed}, t, m);
+  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed, t, m);
   Json& effective = answer.effective;
   effective = solve_json(h.run, dir);
   effective["boundary"] = "mixed";
@@ -282,7 +287,8 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
   std::vector<StressedCase> stressed;
   for (int k = 0; k < 3; ++k) stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k});
   Answer answer;
-  answer.stresses = phase_stresses_json(dir, stressed, t, m, picture_width);
+  answer.stresses = phase_stresses_json(stressed, t, m);
+  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed[0], t, m);
   Json& effective = answer.effective;
   effective = {{"boundary", "periodic"},
                  {"stiffness", stiffness_json(C)},

@@ -295,6 +295,19 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
   }
 }
 
+namespace {
+
+// NAME of a key phase.NAME.fraction; empty for any other key.
+std::string fraction_key_phase(const std::string& key) {
+  const std::string head = "phase.", tail = ".fraction";
+  if (key.size() <= head.size() + tail.size() || key.rfind(head, 0) != 0 ||
+      key.compare(key.size() - tail.size(), tail.size(), tail) != 0)
+    return {};
+  return key.substr(head.size(), key.size() - head.size() - tail.size());
+}
+
+}  // namespace
+
 void collect_sweep(const std::filesystem::path& dir) {
   const Json plan = read_json(dir / "plan.json");
   const auto keys = plan.at("keys").get<std::vector<std::string>>();
@@ -350,15 +363,13 @@ void collect_sweep(const std::filesystem::path& dir) {
   // the bounds as lines.
   std::size_t x_key = 0;
   for (std::size_t k = keys.size(); k-- > 0;)
-    if (keys[k].size() > 9 && keys[k].compare(keys[k].size() - 9, 9, ".fraction") == 0) x_key = k;
+    if (!fraction_key_phase(keys[k]).empty()) x_key = k;
   std::map<std::string, std::vector<Vec2>> by_series;
   std::map<std::string, std::pair<std::vector<Vec2>, std::vector<double>>> means;  // per series: mean, CI95
   std::map<double, std::array<double, 5>> bounds;  // x -> summed voigt, reuss, HS lower, HS upper; count
   // Against the achieved fraction of the swept phase (each run's report) where the x key
   // is a phase's fraction; else against the key's value.
-  const std::string x_phase = !keys.empty() && keys[x_key].rfind("phase.", 0) == 0 && keys[x_key].size() > 15
-                                  ? keys[x_key].substr(6, keys[x_key].size() - 15)
-                                  : std::string();
+  const std::string x_phase = keys.empty() ? std::string() : fraction_key_phase(keys[x_key]);
   bool plotted_c11 = false;
   for (std::size_t p = 0; p < points.size(); ++p) {
     std::vector<double> modulus;

@@ -40,3 +40,21 @@ TEST_CASE("von Mises, the largest principal and the hydrostatic stress of known 
   // In plane: (xx + yy) / 2 + sqrt(((xx - yy) / 2)^2 + xy^2).
   CHECK(largest_principal({.xx = 4, .yy = -2, .zz = 0, .xy = 4}) == Approx(1 + 5));
 }
+
+TEST_CASE("von Mises histograms give each phase's share of its area per bin", "[analysis][statistics]") {
+  // Two unit squares of two triangles each: phase 0 at von Mises 1 and 3 (half its area
+  // each), phase 1 all at 3.
+  const TriMesh mesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}, {0, 0, 1, 1}};
+  const std::vector<StressState> stress{{.xx = 1}, {.xx = 3}, {.xx = 3}, {.xx = 3}};
+  const auto h = von_mises_histograms(stress, mesh, {0, 0, 1, 1}, 2, 4);
+  REQUIRE(h.size() == 2);
+  REQUIRE(h[0].size() == 4);
+  // Bins of width 0.5 from 1 to 3: centres 1.25, 1.75, 2.25, 2.75; 3 falls in the last.
+  CHECK(h[0][0].x == Approx(1.25));
+  CHECK(h[0][0].y == Approx(0.5));
+  CHECK(h[0][3].y == Approx(0.5));
+  CHECK(h[1][3].y == Approx(1.0));
+  double sum = 0.0;
+  for (const Vec2& b : h[1]) sum += b.y;
+  CHECK(sum == Approx(1.0));
+}

@@ -107,6 +107,8 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
           const Json& s = report["stresses"]["xx"][name];
           CHECK(s["mean"]["xx"].get<double>() == Approx(sigma).epsilon(0.01));
           CHECK(s["mean"]["yy"].get<double>() == Approx(material.lambda() / material.M() * sigma).epsilon(0.01));
+          CHECK(s["mean"]["zz"].get<double>() == Approx(material.lambda() / material.M() * sigma).epsilon(0.01));
+          CHECK(s["partition"].get<double>() == Approx(1.0).epsilon(0.01));  // sigma_xx the same in both
           const double mises = 2 * material.mu() / material.M() * sigma;
           CHECK(s["von_mises"]["mean"].get<double>() == Approx(mises).epsilon(0.01));
           CHECK(s["von_mises"]["std"].get<double>() < 0.01 * mises);
