@@ -89,8 +89,15 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
   return parse_values(file, text, value, type, faces);
 }
 
-CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells) {
-  return {read_cell_field(result_dir / "D", "vector", cells), read_cell_field(result_dir / kStressField, "symmTensor", cells)};
+CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o) {
+  const std::size_t cells = m.mesh.triangles.size();
+  CaseFields f{read_cell_field(result_dir / "D", "vector", cells),
+               read_cell_field(result_dir / kStressField, "symmTensor", cells)};
+  if (o.delta_T == 0.0) return f;
+  const std::vector<double> thermal = thermal_stress(m, o);
+  for (std::size_t k = 0; k < cells; ++k)
+    for (const int diagonal : {0, 3, 5}) f.stress.values[6 * k + static_cast<std::size_t>(diagonal)] -= thermal[k];
+  return f;
 }
 
 std::vector<StressState> stress_states(const CaseFields& f, bool plane_stress) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/stress_measures.hpp"
+#include "export/foam.hpp"
 
 namespace grainmesh {
 
@@ -31,13 +32,15 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
                              std::size_t faces);
 
 // The cell fields of a solved case, read once (CASE/TIME/D and CASE/TIME/sigmaD,
-// kStressField) and carried to everything that uses them: the area average, the
-// pictures, results.vtu.
+// kStressField) and carried to everything that uses them: the area average, the face
+// forces, the pictures, results.vtu. The stress is the whole stress: under a temperature
+// change sigmaD leaves out the thermal part, threeK alpha delta_T (export/foam.hpp), taken
+// off its diagonal here.
 struct CaseFields {
   FieldValues displacement;  // vector
   FieldValues stress;        // symmTensor: xx xy xz yy yz zz
 };
-CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells);
+CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o);
 
 // The solver's stress of every cell (plane stress: zz zero), and the length of the
 // displacement.

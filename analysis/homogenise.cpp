@@ -28,16 +28,40 @@ MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
   return {s.xx / area, s.yy / area, s.xy / area};
 }
 
-std::array<LoadCase, 3> periodic_load_cases(double strain) {
-  return {LoadCase{"xx", {strain, 0.0, 0.0}}, LoadCase{"yy", {0.0, strain, 0.0}},
-          LoadCase{"xy", {0.0, 0.0, 0.5 * strain}}};
+std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
+  const double strain = load_strain(m.cell, m.phases, o);
+  std::vector<LoadCase> cases{LoadCase{"xx", {strain, 0.0, 0.0}}, LoadCase{"yy", {0.0, strain, 0.0}},
+                              LoadCase{"xy", {0.0, 0.0, 0.5 * strain}}};
+  if (o.delta_T == 0.0) return cases;
+  double area = 0.0, free = 0.0;
+  for (std::size_t t = 0; t < m.phase.size(); ++t) {
+    const double a = triangle_area(m.mesh, static_cast<int>(t));
+    area += a;
+    free += a * free_expansion(m.phases[m.phase[t]], o.plane_stress);
+  }
+  const double e = free / area * o.delta_T;
+  cases.push_back(LoadCase{"thermal", {e, e, 0.0}, o.delta_T});
+  return cases;
+}
+
+FoamOptions load_case_options(const FoamOptions& o, const LoadCase& c) {
+  FoamOptions out = o;
+  out.cyclic = true;
+  out.strain = c.strain;
+  out.delta_T = c.delta_T;
+  return out;
 }
 
 namespace {
 
-// The mean stress of a solved periodic case from the forces through right and top.
-MeanStress periodic_mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh& m,
-                                const PolyMesh& pm, const FoamOptions& o) {
+// The mean stress of a solved periodic case from the forces through right and top, and
+// each cell's virial stress from the same forces.
+struct Balanced {
+  MeanStress mean;
+  std::vector<StressState> virial;
+};
+Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh& m,
+                         const PolyMesh& pm, const FoamOptions& o) {
   const std::size_t cells = static_cast<std::size_t>(pm.cells);
   const DiscreteTraction traction(pm, m, o, fields.displacement,
                                   read_cell_field(result_dir / kGradientField, "tensor", cells), fields.stress);
@@ -45,7 +69,7 @@ MeanStress periodic_mean_stress(const std::filesystem::path& result_dir, const C
   const Vec2 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
   const Vec2 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
   // The shear through right and through top: equal in the continuum, nearly so here.
-  return {right.x, top.y, 0.5 * (right.y + top.x)};
+  return {{right.x, top.y, 0.5 * (right.y + top.x)}, traction.virial_stress()};
 }
 
 }  // namespace
@@ -55,12 +79,12 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                                  const std::filesystem::path& case_shown_as) {
   Homogenised h;
   h.run = run_solver(case_dir, m, o, deadline, case_shown_as);
-  h.fields = read_case_fields(h.run.result_dir, static_cast<std::size_t>(pm.cells));
+  h.fields = read_case_fields(h.run.result_dir, m, o);
   h.cell_stress = recovered_stress(h.fields, m, o);
   // The force through `right`: the load the cell carries. From sigma's face values there,
   // or on a cyclic case, which writes none, from the cell fields.
   if (o.cyclic) {
-    h.sigma_xx = periodic_mean_stress(h.run.result_dir, h.fields, m, pm, o).xx;
+    h.sigma_xx = periodic_stress(h.run.result_dir, h.fields, m, pm, o).mean.xx;
   } else {
     const int right = patch_index(pm, "right");
     const PolyMesh::Patch& patch = pm.patches[right];
@@ -78,23 +102,27 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   return h;
 }
 
-PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& case_dirs, const ExportMesh& m,
+PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
-                                   const std::array<std::filesystem::path, 3>& cases_shown_as) {
-  const double strain = load_strain(m.cell, m.phases, o);
+                                   const std::vector<std::filesystem::path>& cases_shown_as) {
+  const std::vector<LoadCase> loads = periodic_load_cases(m, o);
+  const int n = static_cast<int>(loads.size());
+  if (case_dirs.size() != loads.size()) throw GeometryError("solve_periodic: a case directory per load case is needed");
   PeriodicHomogenised h;
-  std::array<std::exception_ptr, 3> failed;
+  h.cases.resize(loads.size());
+  std::vector<std::exception_ptr> failed(loads.size());
   auto solve = [&](int k) {
     try {
       LoadCaseResult& r = h.cases[k];
-      r.load = periodic_load_cases(strain)[k];
-      FoamOptions ok = o;
-      ok.cyclic = true;
-      ok.strain = r.load.strain;
-      r.run = run_solver(case_dirs[k], m, ok, deadline, cases_shown_as[k], r.load.name);
-      r.fields = read_case_fields(r.run.result_dir, static_cast<std::size_t>(pm.cells));
+      r.load = loads[k];
+      const FoamOptions ok = load_case_options(o, r.load);
+      const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
+      r.run = run_solver(case_dirs[k], m, ok, deadline, shown, r.load.name);
+      r.fields = read_case_fields(r.run.result_dir, m, ok);
       r.cell_stress = recovered_stress(r.fields, m, ok);
-      r.stress = periodic_mean_stress(r.run.result_dir, r.fields, m, pm, ok);
+      Balanced balanced = periodic_stress(r.run.result_dir, r.fields, m, pm, ok);
+      r.stress = balanced.mean;
+      r.virial_stress = std::move(balanced.virial);
       r.volume_average = volume_average(r.fields, m);
     } catch (...) {
       failed[k] = std::current_exception();
@@ -102,12 +130,13 @@ PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& c
   };
   // Side by side, `parallel` at a time (each solver is one process), each taking the next
   // case as it finishes one; the shear case first, as it takes longest.
-  const std::array<int, 3> order{2, 0, 1};
+  std::vector<int> order{2, 0, 1};
+  if (n == 4) order.insert(order.begin() + 1, 3);
   std::atomic<int> next{0};
   std::vector<std::thread> running;
-  for (int w = 0; w < std::clamp(parallel, 1, 3); ++w)
+  for (int w = 0; w < std::clamp(parallel, 1, n); ++w)
     running.emplace_back([&] {
-      for (int i = next++; i < 3; i = next++) solve(order[static_cast<std::size_t>(i)]);
+      for (int i = next++; i < n; i = next++) solve(order[static_cast<std::size_t>(i)]);
     });
   for (std::thread& t : running) t.join();
   for (const std::exception_ptr& e : failed)

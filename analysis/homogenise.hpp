@@ -49,13 +49,23 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                                  const FoamOptions& o, const Deadline& deadline = {},
                                  const std::filesystem::path& case_shown_as = {});
 
-// The load cases of the periodic homogenisation: a macroscopic strain `strain` in xx, in
-// yy, and an engineering shear `strain` in xy (a tensor component of half that).
+// The load cases of the periodic homogenisation of `m` under `o`: a macroscopic strain
+// e = load_strain (o.displacement / width) in xx, in yy, and an engineering shear e in xy
+// (a tensor component of half that); with a temperature change (o.delta_T), a fourth,
+// `thermal`: the change at the mean strain the phases would take free, each expanding on
+// its own (the area mean of free_expansion delta_T, in xx and yy). Near the answer, it
+// is the answer for one material (no stress); and the solve needs a strain: a cell held
+// at zero mean strain under a uniform thermal stress has a source of rounding noise
+// alone, which its singular periodic system (a translation is free) turns into drift.
 struct LoadCase {
-  std::string name;               // xx, yy, xy: also the case directory's suffix
+  std::string name;               // xx, yy, xy, thermal: also the case directory's suffix
   std::array<double, 3> strain;   // xx, yy, xy (tensor components)
+  double delta_T = 0.0;           // K
 };
-std::array<LoadCase, 3> periodic_load_cases(double strain);
+std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions& o);
+// The options a load case's case is written and solved with: `o`'s, cyclic, with the
+// case's strain and temperature change.
+FoamOptions load_case_options(const FoamOptions& o, const LoadCase& c);
 
 struct LoadCaseResult {
   LoadCase load;
@@ -64,21 +74,23 @@ struct LoadCaseResult {
   SolveRun run;
   CaseFields fields;           // the solution's cell fields
   std::vector<StressState> cell_stress;  // recovered phase by phase (stress_recovery.hpp)
+  std::vector<StressState> virial_stress;  // from the face forces (DiscreteTraction::virial_stress)
 };
 
 struct PeriodicHomogenised {
-  std::array<LoadCaseResult, 3> cases;
+  std::vector<LoadCaseResult> cases;     // as periodic_load_cases: xx, yy, xy (, thermal)
   Stiffness stiffness{};                 // column j from load case j (the shear per engineering strain)
   Stiffness volume_average_stiffness{};  // the same from the area averages
 };
 
 // Solves the periodic load cases written by write_foam_case into `case_dirs` (in the
-// order of periodic_load_cases, each with o.cyclic and its strain; `pm` the mesh, the
-// same for all), up to `parallel` at a time, and assembles the stiffness. A failing
-// case throws SolveError naming it (the first in order when several fail).
-PeriodicHomogenised solve_periodic(const std::array<std::filesystem::path, 3>& case_dirs, const ExportMesh& m,
+// order of periodic_load_cases(m, o), each with load_case_options; `pm`
+// the mesh, the same for all), up to `parallel` at a time, and assembles the stiffness.
+// A failing case throws SolveError naming it (the first in order when several fail).
+// `cases_shown_as`: where the cases are to be found if they fail (or empty).
+PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline = {},
-                                   const std::array<std::filesystem::path, 3>& cases_shown_as = {});
+                                   const std::vector<std::filesystem::path>& cases_shown_as = {});
 
 // Engineering constants of an in-plane stiffness (from its compliance S = C^-1): E_x =
 // 1 / S11, E_y = 1 / S22, nu_xy = -S21 / S11, nu_yx = -S12 / S22, G_xy = 1 / S66; and

@@ -35,8 +35,11 @@ Distribution distribution(const std::vector<double>& values, const std::vector<d
 }
 
 std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const TriMesh& mesh,
-                                          const std::vector<int>& phase, int phases, int loaded_component) {
-  auto loaded = [&](const StressState& s) { return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : s.xy; };
+                                          const std::vector<int>& phase, int phases, int loaded_component,
+                                          const std::vector<StressState>* balanced) {
+  auto loaded = [&](const StressState& s) {
+    return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : loaded_component == 2 ? s.xy : 0.0;
+  };
   std::vector<PhaseStresses> out(static_cast<std::size_t>(phases));
   std::vector<std::vector<double>> weights(out.size()), mises(out.size()), principal(out.size()), pressure(out.size());
   double cell_area = 0.0, cell_loaded = 0.0;
@@ -46,13 +49,15 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states
     const std::size_t p = static_cast<std::size_t>(phase[k]);
     PhaseStresses& ps = out[p];
     ps.area_fraction += a;
-    ps.mean.xx += a * s.xx, ps.mean.yy += a * s.yy, ps.mean.zz += a * s.zz, ps.mean.xy += a * s.xy;
+    // The in-plane mean from the balanced stresses where given; zz is the cells' own.
+    const StressState& b = balanced ? (*balanced)[k] : s;
+    ps.mean.xx += a * b.xx, ps.mean.yy += a * b.yy, ps.mean.zz += a * s.zz, ps.mean.xy += a * b.xy;
     weights[p].push_back(a);
     mises[p].push_back(von_mises(s));
     principal[p].push_back(largest_principal(s));
     pressure[p].push_back(hydrostatic(s));
     cell_area += a;
-    cell_loaded += a * loaded(s);
+    cell_loaded += a * loaded(b);
   }
   const double cell_mean = cell_loaded / cell_area;
   for (std::size_t p = 0; p < out.size(); ++p) {

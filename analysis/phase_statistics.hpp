@@ -27,9 +27,13 @@ struct PhaseStresses {
 };
 
 // Per phase (phase[t] of triangle t, `phases` of them), from the cells' stresses; the
-// loaded component of the load case: 0 xx, 1 yy, 2 xy.
+// loaded component of the load case: 0 xx, 1 yy, 2 xy, -1 none (the partition then 0).
+// With `balanced` stresses (the face forces' virial, DiscreteTraction::virial_stress), the
+// in-plane mean tensor and the partition are theirs: the phases' means then add up,
+// area-weighted, to the cell's mean stress exactly.
 std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
-                                          const std::vector<int>& phase, int phases, int loaded_component);
+                                          const std::vector<int>& phase, int phases, int loaded_component,
+                                          const std::vector<StressState>* balanced = nullptr);
 
 // Each phase's area-weighted histogram of the von Mises stress: `bins` equal bins over the
 // range of all cells, each point (the bin's centre, the share of the phase's area in it).

@@ -12,7 +12,6 @@
 
 namespace grainmesh {
 
-
 SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
                     const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
   if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
@@ -24,7 +23,8 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   const std::vector<std::string> environment = foam_environment();
 
   // A thousand times the displacement the load can give is divergence, not an answer.
-  const double load_scale = load_strain(m.cell, m.phases, o) * std::max(m.cell.width(), m.cell.height());
+  const double load_scale = std::max(load_strain(m.cell, m.phases, o), thermal_strain(m.phases, o)) *
+                            std::max(m.cell.width(), m.cell.height());
   const CaseStop stop = case_stop(m, o);
   SolveMonitor::Options watch{.tolerance = kSolverTolerance,
                               .stall_corrections = 500,

@@ -39,7 +39,11 @@ std::vector<StressState> recovered_stress(const CaseFields& fields, const Export
   std::vector<Vec2> centre(cells);
   for (std::size_t t = 0; t < cells; ++t) centre[t] = triangle_centroid(mesh, static_cast<int>(t));
   std::vector<Lame> lames;
-  for (const FoamPhase& p : m.phases) lames.push_back(lame(p, o.plane_stress));
+  std::vector<double> thermal;  // threeK alpha delta_T of each phase
+  for (const FoamPhase& p : m.phases) {
+    lames.push_back(lame(p, o.plane_stress));
+    thermal.push_back(thermal_stress_per_kelvin(p, o.plane_stress) * o.delta_T);
+  }
   auto D = [&](int t) { return fields.displacement[static_cast<std::size_t>(t)]; };
   std::vector<GradientFit> fit(cells);
 
@@ -59,7 +63,8 @@ std::vector<StressState> recovered_stress(const CaseFields& fields, const Export
   }
   // Across an interface edge, for both cells: the displacement where the line between the
   // two centres crosses it, at which the flux along that line (stiffness times difference
-  // over distance) is the same from both sides; exact for a linear field in one phase.
+  // over distance, less the thermal stress along the edge's normal) is the same from both
+  // sides; exact for a linear field in one phase.
   for (const MeshEdge& e : mesh_edges(mesh)) {
     const int p = e.left, n = e.right;
     if (n < 0 || m.phase[p] == m.phase[n]) continue;
@@ -67,8 +72,13 @@ std::vector<StressState> recovered_stress(const CaseFields& fields, const Export
     auto distance = [&](Vec2 c) { return std::abs(cross(along, c - mesh.points[e.a])) / norm(along); };
     const double dp = distance(centre[p]), dn = distance(centre[n]);
     const Vec2 crossing = centre[p] + (dp / (dp + dn)) * (centre[n] - centre[p]);
-    const double wp = lames[m.phase[p]].gamma() / dp, wn = lames[m.phase[n]].gamma() / dn;
-    const double fx = (wp * D(p)[0] + wn * D(n)[0]) / (wp + wn), fy = (wp * D(p)[1] + wn * D(n)[1]) / (wp + wn);
+    const double wp = lames[m.phase[p]].gamma() / (dp * metres), wn = lames[m.phase[n]].gamma() / (dn * metres);
+    // The unit normal from p to n, and the jump the thermal stresses' difference makes.
+    Vec2 normal = Vec2{along.y, -along.x} / norm(along);
+    if (dot(normal, centre[n] - centre[p]) < 0.0) normal = -normal;
+    const Vec2 push = (thermal[m.phase[p]] - thermal[m.phase[n]]) * normal;
+    const double fx = (wp * D(p)[0] + wn * D(n)[0] + push.x) / (wp + wn),
+                 fy = (wp * D(p)[1] + wn * D(n)[1] + push.y) / (wp + wn);
     for (const int c : {p, n}) fit[c].add((crossing - centre[c]) * metres, fx - D(c)[0], fy - D(c)[1]);
   }
 
@@ -77,10 +87,10 @@ std::vector<StressState> recovered_stress(const CaseFields& fields, const Export
     std::array<double, 4> g;
     if (!fit[t].solve(g)) continue;
     const Lame& l = lames[m.phase[t]];
-    const double trace = g[0] + g[3];
-    out[t] = {.xx = l.lambda * trace + 2 * l.mu * g[0],
-              .yy = l.lambda * trace + 2 * l.mu * g[3],
-              .zz = o.plane_stress ? 0.0 : l.lambda * trace,
+    const double trace = g[0] + g[3], heat = thermal[m.phase[t]];
+    out[t] = {.xx = l.lambda * trace + 2 * l.mu * g[0] - heat,
+              .yy = l.lambda * trace + 2 * l.mu * g[3] - heat,
+              .zz = o.plane_stress ? 0.0 : l.lambda * trace - heat,
               .xy = l.mu * (g[1] + g[2])};
   }
   return out;

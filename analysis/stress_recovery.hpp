@@ -5,8 +5,9 @@
 // to its own phase's neighbours only - every cell sharing a corner with it - and, across
 // an interface edge, to the displacement where the line between the two cells' centres
 // crosses the edge, chosen so that the flux along that line is continuous (each side
-// weighted by its stiffness over its distance); then turned into stress with the cell's
-// own Lame constants. The solver's own fields are left as written.
+// weighted by its stiffness over its distance, the phases' thermal stresses pushing
+// apart along the edge's normal); then turned into stress with the cell's own Lame
+// constants, less its thermal stress. The solver's own fields are left as written.
 #pragma once
 
 #include <vector>

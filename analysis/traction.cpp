@@ -52,8 +52,10 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, cons
       sigma_(std::move(sigma)) {
   centre_.resize(pm.cells);
   gamma_.resize(pm.cells);
+  volume_.resize(pm.cells);
   for (int c = 0; c < pm.cells; ++c) {
     centre_[c] = scale_ * triangle_centroid(m.mesh, c);
+    volume_[c] = triangle_area(m.mesh, c) * thickness_ * scale_ * scale_ * scale_;
     gamma_[c] = lame(m.phases[m.phase[c]], o.plane_stress).gamma();
   }
   patch_of_face_.assign(pm.faces(), -1);
@@ -139,6 +141,31 @@ Vec2 DiscreteTraction::cell_imbalance(int c) const {
     sum += owned ? F : -F;
   }
   return sum;
+}
+
+std::vector<StressState> DiscreteTraction::virial_stress() const {
+  std::vector<StressState> out(static_cast<std::size_t>(pm_.cells));
+  auto add = [&](int c, Vec2 face_centre, Vec2 F) {
+    const Vec2 r = face_centre - centre_[c];
+    StressState& s = out[static_cast<std::size_t>(c)];
+    s.xx += r.x * F.x, s.yy += r.y * F.y, s.xy += 0.5 * (r.x * F.y + r.y * F.x);
+  };
+  for (int f = 0; f < pm_.faces(); ++f) {
+    const int p = patch_of_face_[f];
+    if (p >= 0 && pm_.patches[p].type == "empty") continue;
+    if (p >= 0 && pm_.patches[p].type != "cyclic")
+      throw GeometryError("virial_stress: patch " + pm_.patches[p].name + " is neither cyclic nor empty");
+    const int P = pm_.owner[f];
+    const Vec2 F = face_force(f);
+    const Vec2 centre = face_geometry(pm_, f, scale_, thickness_, centre_[P]).centre;
+    add(P, centre, F);
+    if (p < 0) add(pm_.neighbour[f], centre, -F);  // a cyclic face's partner adds its own
+  }
+  for (int c = 0; c < pm_.cells; ++c) {
+    StressState& s = out[static_cast<std::size_t>(c)];
+    s.xx /= volume_[c], s.yy /= volume_[c], s.xy /= volume_[c];
+  }
+  return out;
 }
 
 Vec2 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,

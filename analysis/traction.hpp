@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/foam_fields.hpp"
+#include "analysis/stress_measures.hpp"
 #include "common/geometry.hpp"
 #include "export/foam.hpp"
 
@@ -35,6 +36,12 @@ class DiscreteTraction {
   // The sum of the forces out of cell c through all its faces, where every face of it is
   // internal, cyclic or empty (else NaN): zero at convergence.
   Vec2 cell_imbalance(int c) const;
+  // Each cell's stress as its face forces give it: the virial (1 / V) sum over its faces
+  // of (x_f - x_c) F_f, symmetrised (xx, yy, xy; zz 0), on a mesh whose faces are all
+  // internal, cyclic or empty (else GeometryError). Balanced cells make it exact in the
+  // sum: the cells' virials add up, area-weighted, to the forces through the sides, so a
+  // phase's area mean of it is a mean stress that agrees with the cell's exactly.
+  std::vector<StressState> virial_stress() const;
 
  private:
   struct Neighbour {
@@ -48,6 +55,7 @@ class DiscreteTraction {
   double scale_, thickness_;
   std::vector<Vec2> centre_;          // cell centres, metres
   std::vector<double> gamma_;         // 2 mu + lambda per cell
+  std::vector<double> volume_;        // cubic metres
   bool harmonic_;
   FieldValues D_, grad_, sigma_;
   std::vector<int> patch_of_face_;    // boundary faces: their patch; internal: -1

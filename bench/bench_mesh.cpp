@@ -51,7 +51,7 @@ Tessellation wc_co_cell(int grains) {
   o.lloyd_iterations = 3;
   o.phase_mode = PhaseMode::grain;
   o.arrangement = Arrangement::dispersed;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.15, false, 211e9, 0.31}};
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.15, false, 211e9, 0.31, {}}};
   Rng rng(1);
   return tessellate(o, rng);
 }
@@ -146,7 +146,7 @@ Tessellation fibre_regions(double h) {
                                   {1.0 / 6, 0.75}, {0.5, 0.75}, {5.0 / 6, 0.75}};
   Tessellation t;
   t.periodic = false;
-  t.phases = {Phase{"matrix", 0.0, true, 3.0, 0.35}, Phase{"fibre", 0.19, false, 70.0, 0.22}};
+  t.phases = {Phase{"matrix", 0.0, true, 3.0, 0.35, {}}, Phase{"fibre", 0.19, false, 70.0, 0.22, {}}};
   t.vertices = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
   Region matrix{.grain = 0, .phase = 0, .rings = {{0, 1, 2, 3}}};
   for (int k = 0; k < 4; ++k) t.edges.push_back({k, (k + 1) % 4, 0, -1});

@@ -34,7 +34,7 @@ Json measure(const Case& c) {
   o.grains = c.grains;
   o.lloyd_iterations = c.lloyd;
   o.phase_mode = c.mode;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.15, false, 211e9, 0.31}};
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.15, false, 211e9, 0.31, {}}};
   o.matrix_phase = 1;
   Rng rng(1);
   const auto start = std::chrono::steady_clock::now();

@@ -44,6 +44,23 @@ Lame lame(const FoamPhase& p, bool plane_stress) {
   return {plane_stress ? E * nu / ((1 + nu) * (1 - nu)) : E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};
 }
 
+double thermal_stress_per_kelvin(const FoamPhase& p, bool plane_stress) {
+  const double E = p.youngs_modulus, nu = p.poisson_ratio;
+  return (plane_stress ? E / (1 - nu) : E / (1 - 2 * nu)) * p.alpha;
+}
+
+double free_expansion(const FoamPhase& p, bool plane_stress) {
+  return plane_stress ? p.alpha : (1 + p.poisson_ratio) * p.alpha;
+}
+
+std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& o) {
+  std::vector<double> per_phase;
+  for (const FoamPhase& p : m.phases) per_phase.push_back(thermal_stress_per_kelvin(p, o.plane_stress) * o.delta_T);
+  std::vector<double> out(m.phase.size());
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = per_phase[static_cast<std::size_t>(m.phase[t])];
+  return out;
+}
+
 double stiffness_contrast(const ExportMesh& m, const FoamOptions& o) {
   double stiff_min = 1e300, stiff_max = 0.0;
   for (const FoamPhase& p : m.phases) {
@@ -385,6 +402,18 @@ void write_scalar_field(const std::filesystem::path& file, const std::string& ob
   f.text("}\n").write();
 }
 
+// The same with one value in every cell.
+void write_uniform_scalar_field(const std::filesystem::path& file, const std::string& object,
+                                const std::string& dimensions, double value, const PolyMesh& pm) {
+  FoamFile f(file, "volScalarField", "0", object, false);
+  f.text("dimensions      " + dimensions + ";\n\ninternalField   uniform ").number(value).text(";\n\nboundaryField\n{\n");
+  for (const PolyMesh::Patch& p : pm.patches) {
+    const std::string c = constraint_entry(p);
+    f.text("    " + p.name + "\n    {\n        " + (c.empty() ? "type zeroGradient;" : c) + "\n    }\n");
+  }
+  f.text("}\n").write();
+}
+
 std::string dictionary_header(const std::string& location, const std::string& object) {
   return "/*--------------------------------*- C++ -*----------------------------------*\\\n"
          "  Written by grainmesh\n"
@@ -489,7 +518,8 @@ CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
   // residual near 1e-7 under a normal strain, lower under shear): its stop a hundred times
   // tighter, so that it rarely needs continuing (analysis/solve.cpp).
   const double tolerance = o.cyclic ? 0.01 * kSolverTolerance : kSolverTolerance;
-  if (!one_material) return {.alone = -1, .tolerance = tolerance};
+  // A temperature change loads both components alike.
+  if (!one_material || o.delta_T != 0.0) return {.alone = -1, .tolerance = tolerance};
   if (!o.cyclic) return o.uniaxial ? CaseStop{} : CaseStop{.alone = 0, .tolerance = 0.01 * tolerance};
   const std::array<double, 3> e = cyclic_strain(m, o);
   if (e[2] != 0.0 || (e[0] != 0.0 && e[1] != 0.0)) return {.alone = -1, .tolerance = tolerance};
@@ -510,9 +540,15 @@ double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const 
   return std::abs(o.traction) / softest;
 }
 
+double thermal_strain(const std::vector<FoamPhase>& phases, const FoamOptions& o) {
+  double strain = 0.0;
+  for (const FoamPhase& p : phases) strain = std::max(strain, std::abs(free_expansion(p, o.plane_stress) * o.delta_T));
+  return strain;
+}
+
 std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases) {
   std::vector<FoamPhase> out;
-  for (const Phase& p : phases) out.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  for (const Phase& p : phases) out.push_back({p.name, p.youngs_modulus, p.poisson_ratio, p.alpha.value_or(0.0)});
   return out;
 }
 
@@ -538,9 +574,10 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
     throw ConfigError("export.convert_to_meters: the cell is " + in_metres +
                       ", below 1 nm: are the lengths in metres? then set export.convert_to_meters = 1");
   // Linear elasticity is a small-strain theory: a mean strain above 1 % is a slip too.
-  if (o.traction == 0.0 && o.displacement == 0.0) throw ConfigError("load.displacement: is 0, which loads nothing");
+  if (o.traction == 0.0 && o.displacement == 0.0 && o.delta_T == 0.0)
+    throw ConfigError("load.displacement: is 0, which loads nothing");
   const double strain = load_strain(cell, phases, o);
-  if (strain > 0.01 && o.traction == 0.0)
+  if (strain > 0.01 && o.traction == 0.0 && o.delta_T == 0.0)  // a thermal case's strain is the phases' own
     throw ConfigError("load.displacement: " + to_text(o.displacement) + " over a cell " + to_text(cell.width()) +
                       " wide is a mean strain of " + to_text(strain, 3) +
                       ", above 1 % (linear elasticity is for small strains): give it in the mesh's units, like the cell");
@@ -561,6 +598,13 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
     if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5))
       throw ConfigError("phase." + p.name + ".nu: must lie in (-1, 0.5), got " + to_text(p.poisson_ratio));
   }
+  const bool thermal = o.delta_T != 0.0;
+  if (!std::isfinite(o.delta_T)) throw ConfigError("load.delta_T: must be a finite number (K), got " + to_text(o.delta_T));
+  if (thermal && (!o.cyclic || o.traction != 0.0))
+    throw ConfigError("load.delta_T: a thermal case is a periodic cell's cyclic case (homogenise.boundary = periodic)");
+  for (const FoamPhase& p : m.phases)
+    if (thermal && !(p.alpha >= 0.0 && std::isfinite(p.alpha)))
+      throw ConfigError("phase." + p.name + ".alpha: must be a finite number >= 0 (1/K), got " + to_text(p.alpha));
   if (m.phase.size() != m.mesh.triangles.size()) throw GeometryError("export: the mesh needs a phase per triangle");
   for (int ph : m.phase)
     if (ph < 0 || static_cast<std::size_t>(ph) >= m.phases.size())
@@ -633,8 +677,22 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
                  "// E and nu vary by phase: read from 0/E and 0/nu.\nrho\n{\n    type        uniform;\n"
                  "    value       1;\n}\n\nnu\n{\n    type        field;\n}\n\nE\n{\n    type        field;\n}\n\n"
                  "planeStress     " + std::string(o.plane_stress ? "yes" : "no") + ";\n");
+  if (thermal) {
+    // A uniform temperature change: T holds it in every cell and keeps it (its equation is
+    // not iterated, see fvSolution); alpha per cell from the phases.
+    std::vector<double> alpha(pm.cells);
+    for (int t = 0; t < pm.cells; ++t) alpha[t] = m.phases[m.phase[t]].alpha;
+    write_scalar_field(dir / "0/alpha", "alpha", "[0 0 0 -1 0 0 0]", alpha, pm, o.binary);
+    write_uniform_scalar_field(dir / "0/T", "T", "[0 0 0 1 0 0 0]", o.delta_T, pm);
+  }
   write_text(dir / "constant/thermalProperties",
-             dictionary_header("constant", "thermalProperties") + "thermalStress   no;\n");
+             dictionary_header("constant", "thermalProperties") +
+                 (thermal ? "// The temperature change in 0/T (uniform), alpha per cell in 0/alpha. C and k only\n"
+                            "// set how T would diffuse; it is uniform and stays so.\nthermalStress   yes;\n\n"
+                            "C\n{\n    type        uniform;\n    value       1;\n}\n\n"
+                            "k\n{\n    type        uniform;\n    value       1;\n}\n\n"
+                            "alpha\n{\n    type        field;\n}\n"
+                          : "thermalStress   no;\n"));
   write_control_dict(dir, m, o, kMaxCorrections);
   const std::string stiffness = harmonic
       ? "    // The stiffness interpolated harmonically across faces: exact at phase interfaces.\n"
@@ -644,15 +702,23 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
   write_text(dir / "system/fvSchemes",
              dictionary_header("system", "fvSchemes") +
                  "d2dt2Schemes\n{\n    default         steadyState;\n}\n\nddtSchemes\n{\n    default         Euler;\n}\n\n"
-                 "gradSchemes\n{\n    default         leastSquares;\n}\n\n"
+                 "gradSchemes\n{\n    default         leastSquares;\n" +
+                 (thermal ? "    // The thermal force as a sum over faces: each cell's share of the interfaces.\n"
+                            "    grad((threeKalpha*T)) Gauss linear;\n"
+                          : "") +
+                 "}\n\n"
                  "divSchemes\n{\n    default         none;\n    div(sigmaD)     Gauss linear;\n}\n\n"
                  "laplacianSchemes\n{\n    default         none;\n" + stiffness +
-                 "    laplacian(kappa,T) Gauss linear corrected;\n}\n\n"
+                 "    laplacian(DT,T) Gauss linear corrected;\n}\n\n"
                  "interpolationSchemes\n{\n    default         linear;\n}\n\nsnGradSchemes\n{\n    default         none;\n}\n");
   write_text(dir / "system/fvSolution",
              dictionary_header("system", "fvSolution") +
-                 "solvers\n{\n    \"(D|T)\"\n    {\n        solver          GAMG;\n        tolerance       1e-12;\n"
-                 "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n}\n\n"
+                 "solvers\n{\n    D\n    {\n        solver          GAMG;\n        tolerance       1e-12;\n"
+                 "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n" +
+                 (thermal ? "    // T is uniform: met at once, never iterated.\n    T\n    {\n        solver          PCG;\n"
+                            "        preconditioner  none;\n        tolerance       1e300;\n        relTol          0;\n    }\n"
+                          : "") +
+                 "}\n\n"
                  "// One correction per (pseudo-)time step: system/controlDict says when to stop.\n"
                  "stressAnalysis\n{\n    compactNormalStress yes;\n    nCorrectors     1;\n    D               " +
                  number_text(kSolverTolerance) + ";\n}\n");

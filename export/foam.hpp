@@ -48,6 +48,7 @@ struct FoamPhase {
   std::string name;
   double youngs_modulus = 0.0;  // E, Pa
   double poisson_ratio = 0.0;   // nu, in (-1, 0.5)
+  double alpha = 0.0;           // linear thermal expansion, 1/K
 };
 
 // What the export needs of a mesh: triangles with a grain (mesh.region) and a phase each,
@@ -79,6 +80,11 @@ struct FoamOptions {
   double traction = 0.0;           // Pa; when not 0, `right` carries this normal traction instead
   bool uniaxial = false;
   bool plane_stress = false;       // default plane strain
+  // A uniform temperature change (K; e.g. -1000 for cooling from sintering): the case
+  // solves solidDisplacementFoam's thermal stress, the phases' alpha from 0/alpha. Only
+  // on a cyclic case, at its `strain`; the free expansion follows by superposition with
+  // the mechanical cases (analysis/thermal.hpp).
+  double delta_T = 0.0;
   // How the stiffness 2 mu + lambda is interpolated to faces in laplacian(DD,D).
   // Harmonic is exact across an interface, but solidDisplacementFoam's explicit
   // correction is interpolated linearly, and the two together diverge once the phases'
@@ -124,6 +130,18 @@ struct Lame {
 };
 Lame lame(const FoamPhase& phase, bool plane_stress);
 
+// The stress a phase's free thermal strain would carry per kelvin of temperature change,
+// as solidDisplacementFoam has it: threeK alpha, threeK = E / (1 - 2 nu) in plane strain
+// (3 lambda + 2 mu), E / (1 - nu) in plane stress (the in-plane 2 (lambda + mu)). The
+// stress is C : grad(D) - threeK alpha delta_T I (plane stress: its in-plane part).
+double thermal_stress_per_kelvin(const FoamPhase& phase, bool plane_stress);
+// The in-plane strain a phase takes when free to expand, per kelvin: (1 + nu) alpha under
+// plane strain (held out of plane), alpha under plane stress.
+double free_expansion(const FoamPhase& phase, bool plane_stress);
+// Per cell of `m`: threeK alpha delta_T of its phase (Pa), what the solver's sigmaD
+// leaves out of the stress; all zero without a temperature change.
+std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& options);
+
 // A grain mesh with its tessellation's cell and phases.
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
 
@@ -138,6 +156,10 @@ std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);
 // The mean strain a load gives the cell, at most: |displacement| / width, |traction|
 // over the softest phase's E, or the largest component of a cyclic case's strain.
 double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& options);
+
+// The largest free thermal strain of a phase under the case's temperature change:
+// |free_expansion delta_T| (0 without one).
+double thermal_strain(const std::vector<FoamPhase>& phases, const FoamOptions& options);
 
 // Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
 // on a periodic cell (and with a displacement load), a cell of at least 1 nm in metres, a

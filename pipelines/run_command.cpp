@@ -13,6 +13,7 @@
 #include "analysis/homogenise.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
+#include "analysis/thermal.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam.hpp"
@@ -37,7 +38,7 @@ double since(std::chrono::steady_clock::time_point t) {
 }  // namespace
 
 const std::vector<std::string>& run_own_config_keys() {
-  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures"};
+  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "load.delta_T"};
   return keys;
 }
 
@@ -95,6 +96,21 @@ std::string config_fingerprint(const Config& c) {
 
 FoamOptions read_run_foam_options(const Config& c) {
   FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  o.delta_T = c.number("load.delta_T", 0.0);
+  if (!std::isfinite(o.delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
+  if (o.delta_T != 0.0) {
+    // Every phase's expansion, from the config (the tessellation reads the same keys).
+    for (const std::string& name : c.names_in("phase")) {
+      const std::string key = "phase." + name + ".alpha";
+      if (!c.has(key))
+        c.fail(key, "missing: load.delta_T = " + c.text("load.delta_T") +
+                        " needs every phase's linear thermal expansion (1/K, e.g. 5e-6 for WC, 14e-6 for Co)");
+      if (!(c.number(key) >= 0.0)) c.fail(key, "must be >= 0 (1/K), got " + c.text(key));
+    }
+    if (read_boundary(c) != Boundary::periodic)
+      c.fail("load.delta_T", "needs homogenise.boundary = periodic: the thermal load is solved on a periodic cell, "
+                             "free to expand on average");
+  }
   if (read_boundary(c) != Boundary::periodic) return o;
   if (!c.flag("domain.periodic", false))
     c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
@@ -180,11 +196,12 @@ Json distribution_json(const Distribution& d) {
 }
 
 // A solved load case: its name in the report, its recovered cell stresses, its loaded
-// component (0 xx, 1 yy, 2 xy).
+// component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero).
 struct StressedCase {
   std::string name;
   const std::vector<StressState>* cell_stress;
   int loaded;
+  const std::vector<StressState>* balanced = nullptr;  // the virial stresses, for the means (periodic)
 };
 
 // `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,
@@ -194,7 +211,7 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
   Json out;
   const int phases = static_cast<int>(t.phases.size());
   for (const StressedCase& c : cases) {
-    const std::vector<PhaseStresses> ps = phase_stresses(*c.cell_stress, m.mesh, m.phase, phases, c.loaded);
+    const std::vector<PhaseStresses> ps = phase_stresses(*c.cell_stress, m.mesh, m.phase, phases, c.loaded, c.balanced);
     for (int p = 0; p < phases; ++p) {
       const PhaseStresses& s = ps[p];
       out[c.name][t.phases[p].name] = {
@@ -202,8 +219,9 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
           {"mean", {{"xx", s.mean.xx}, {"yy", s.mean.yy}, {"zz", s.mean.zz}, {"xy", s.mean.xy}}},
           {"von_mises", distribution_json(s.von_mises)},
           {"max_principal", distribution_json(s.max_principal)},
-          {"hydrostatic", distribution_json(s.hydrostatic)},
-          {"partition", s.partition}};
+          {"hydrostatic", distribution_json(s.hydrostatic)}};
+      // No partition where the cell's mean stress is zero (the thermal residual).
+      if (c.loaded >= 0) out[c.name][t.phases[p].name]["partition"] = s.partition;
     }
   }
   return out;
@@ -263,6 +281,40 @@ Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& st
   return answer;
 }
 
+// What a thermal load adds to the answer: effective.thermal_expansion {a11, a22, a12}
+// (1/K), effective.thermal {delta_T, levin, levin_difference}, and
+// stresses.thermal (the residual stress, free expansion) and stresses.thermal_xx (cooled,
+// then the load.displacement of the xx case); a free expansion that breaks Levin's
+// relation by more than 1 % is a warning.
+void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffness& C, const Tessellation& t,
+                        const GrainMesh& m, const ExportMesh& e, const FoamOptions& foam,
+                        std::vector<std::string>& warnings) {
+  const auto expansion_json = [](const std::array<double, 3>& a) {
+    return Json{{"a11", a[0]}, {"a22", a[1]}, {"a12", a[2]}};
+  };
+  Json& effective = answer.effective;
+  effective["thermal_expansion"] = expansion_json(r.expansion);
+  Json thermal{{"delta_T", r.delta_T}};
+  if (const auto levin = levin_expansion(e.phases, C, foam.plane_stress)) {
+    double scale = 0.0, difference = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      scale = std::max(scale, std::abs((*levin)[k]));
+      difference = std::max(difference, std::abs(r.expansion[k] - (*levin)[k]));
+    }
+    thermal["levin"] = expansion_json(*levin);
+    thermal["levin_difference"] = difference / scale;
+    if (difference > 0.01 * scale)
+      warnings.push_back("effective.thermal_expansion differs from Levin's exact relation by " +
+                         to_text(100.0 * difference / scale, 2) + " % of its largest component: refine the mesh at "
+                         "the interfaces (mesh.boundary_size; see README, Thermal residual stress)");
+  }
+  effective["thermal"] = thermal;
+  const Json stresses = phase_stresses_json(
+      {{"thermal", &r.cell_stress, -1, &r.virial_stress}, {"thermal_xx", &r.loaded_stress, 0, &r.loaded_virial_stress}},
+      t, m);
+  for (const auto& [name, value] : stresses.items()) answer.stresses[name] = value;
+}
+
 Json stiffness_json(const Stiffness& c) {
   return {{"C11", c[0][0]}, {"C22", c[1][1]}, {"C12", c[0][1]}, {"C21", c[1][0]}, {"C66", c[2][2]},
           {"C16", c[0][2]}, {"C26", c[1][2]}, {"C61", c[2][0]}, {"C62", c[2][1]}};
@@ -274,18 +326,18 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
                            const GrainMesh& m, const ExportMesh& e, const PolyMesh& pm, const FoamOptions& foam,
                            const Deadline& deadline, int picture_width, bool all_pictures,
                            std::vector<std::string>& warnings) {
-  std::array<std::filesystem::path, 3> dirs, shown;
-  for (int k = 0; k < 3; ++k) {
-    const std::string name = periodic_case_dir(periodic_load_cases(1.0)[k]);
-    dirs[k] = dir / name;
-    shown[k] = staged.failed_dir() / name;
+  std::vector<std::filesystem::path> dirs, shown;
+  for (const LoadCase& lc : periodic_load_cases(e, foam)) {
+    dirs.push_back(dir / periodic_case_dir(lc));
+    shown.push_back(staged.failed_dir() / periodic_case_dir(lc));
   }
   const int parallel = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
   const Stiffness& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
   std::vector<StressedCase> stressed;
-  for (int k = 0; k < 3; ++k) stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k});
+  for (int k = 0; k < 3; ++k)
+    stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k, &h.cases[k].virial_stress});
   Answer answer;
   answer.stresses = phase_stresses_json(stressed, t, m);
   if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed[0], t, m);
@@ -305,13 +357,23 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
     c["name"] = r.load.name;
     c["strain"] = {{"xx", r.load.strain[0]}, {"yy", r.load.strain[1]}, {"xy", r.load.strain[2]}};
     c["stress"] = {{"xx", r.stress.xx}, {"yy", r.stress.yy}, {"xy", r.stress.xy}};
+    if (r.load.delta_T != 0.0) c["delta_T"] = r.load.delta_T;
     cases.push_back(c);
     corrections = std::max(corrections, r.run.corrections);
   }
   effective["load_cases"] = cases;
   effective["corrections"] = corrections;
   std::vector<SolvedFields> solved;
-  for (const LoadCaseResult& r : h.cases) solved.push_back({"_" + r.load.name, &r.fields, &r.cell_stress});
+  for (int k = 0; k < 3; ++k) solved.push_back({"_" + h.cases[k].load.name, &h.cases[k].fields, &h.cases[k].cell_stress});
+  std::optional<ThermalResidual> thermal;
+  if (foam.delta_T != 0.0) {
+    thermal = thermal_residual(h);
+    add_thermal_answer(answer, *thermal, C, t, m, e, foam, warnings);
+    solved.push_back({"_thermal", &thermal->fields, &thermal->cell_stress});
+    solved.push_back({"_thermal_xx", &thermal->loaded_fields, &thermal->loaded_stress});
+    if (picture_width > 0)
+      write_stress_histogram(dir / "stress_histogram_thermal.png", {"thermal", &thermal->cell_stress, -1}, t, m);
+  }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures);
 
@@ -421,12 +483,10 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     std::filesystem::create_directories(dir / "case");
     pm = write_foam_case(dir / "case", e, foam);
   } else {
-    for (const LoadCase& lc : periodic_load_cases(load_strain(e.cell, e.phases, foam))) {
-      FoamOptions o = foam;
-      o.strain = lc.strain;
+    for (const LoadCase& lc : periodic_load_cases(e, foam)) {
       case_dirs.push_back(periodic_case_dir(lc));
       std::filesystem::create_directories(dir / case_dirs.back());
-      pm = write_foam_case(dir / case_dirs.back(), e, o);
+      pm = write_foam_case(dir / case_dirs.back(), e, load_case_options(foam, lc));
     }
   }
   const double export_seconds = since(clock);
@@ -513,10 +573,15 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     std::printf(", %d corrections\n", eff["corrections"].get<int>());
   } else if (solve) {
     const Json& C = report["effective"]["stiffness"];
-    std::printf("  solved: effective stiffness C11 %.4g, C22 %.4g, C12 %.4g, C66 %.4g Pa (3 load cases, at most %d "
+    std::printf("  solved: effective stiffness C11 %.4g, C22 %.4g, C12 %.4g, C66 %.4g Pa (%zu load cases, at most %d "
                 "corrections)\n",
                 C["C11"].get<double>(), C["C22"].get<double>(), C["C12"].get<double>(), C["C66"].get<double>(),
-                report["effective"]["corrections"].get<int>());
+                report["effective"]["load_cases"].size(), report["effective"]["corrections"].get<int>());
+    if (foam.delta_T != 0.0) {
+      const Json& a = report["effective"]["thermal_expansion"];
+      std::printf("  thermal: free expansion a11 %.4g, a22 %.4g 1/K; residual stresses in report.json (stresses.thermal)\n",
+                  a["a11"].get<double>(), a["a22"].get<double>());
+    }
   }
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");

@@ -351,8 +351,9 @@ void collect_sweep(const std::filesystem::path& dir) {
   // The rows, and each row's tensor columns: written once it is known whether any run has them.
   std::vector<std::pair<std::string, std::string>> lines;
   // Per-run numbers summarised per point, by column name, the names in the order first
-  // met: the WC-Co descriptors (e.g. contiguity_WC) and the phase stresses (e.g.
-  // mixed_WC_mean_xx, mixed_WC_von_mises_p99).
+  // met: the WC-Co descriptors (e.g. contiguity_WC), the phase stresses (e.g.
+  // mixed_WC_mean_xx, mixed_WC_von_mises_p99, thermal_Co_mean_yy) and the thermal
+  // expansion (thermal_expansion_a11).
   std::vector<std::map<std::string, std::array<double, 3>>> extra_rows;
   std::vector<std::string> extra_names;
   bool any_tensor = false;
@@ -404,14 +405,20 @@ void collect_sweep(const std::filesystem::path& dir) {
           for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
       if (j.contains("stresses"))
         for (const auto& [load, phases] : j["stresses"].items()) {
-          const std::string component = load == "yy" ? "yy" : load == "xy" ? "xy" : "xx";  // the loaded one
+          // The loaded component; both in-plane normal ones of the thermal residual.
+          const std::vector<std::string> components =
+              load == "thermal" ? std::vector<std::string>{"xx", "yy"}
+                                : std::vector<std::string>{load == "yy" ? "yy" : load == "xy" ? "xy" : "xx"};
           for (const auto& [phase, s] : phases.items()) {
-            add(load + "_" + phase + "_mean_" + component, s["mean"][component]);
+            for (const std::string& component : components)
+              add(load + "_" + phase + "_mean_" + component, s["mean"][component]);
             add(load + "_" + phase + "_von_mises_p99", s["von_mises"]["p99"]);
           }
         }
       if (!j.contains("effective")) continue;
       const Json& e = j["effective"];
+      if (e.contains("thermal_expansion"))
+        for (const char* a : {"a11", "a22", "a12"}) add(std::string("thermal_expansion_") + a, e["thermal_expansion"][a]);
       if (e.contains("stiffness")) {
         any_tensor = true;
         for (std::size_t q = 0; q < kTensor.size(); ++q)

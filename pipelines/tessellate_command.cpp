@@ -22,7 +22,7 @@ const std::vector<std::string>& tessellate_config_keys() {
       "tessellation.grains",    "tessellation.grain_size", "tessellation.seeds", "tessellation.seed",
       "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
-      "phase.*.fraction",       "phase.*.E",               "phase.*.nu",
+      "phase.*.fraction",       "phase.*.E",               "phase.*.nu",              "phase.*.alpha",
       "output.picture_width",   kTimeLimitKey};
   return keys;
 }
@@ -48,7 +48,8 @@ std::vector<Phase> read_phases(const Config& c) {
   int rests = 0;
   for (const auto& name : names) {
     const std::string key = "phase." + name + ".";
-    Phase p{.name = name};
+    Phase p;
+    p.name = name;
     if (!c.has(key + "fraction")) {
       std::string given;  // the key that brought the name in
       for (const auto& [k, v] : c.entries())
@@ -69,6 +70,10 @@ std::vector<Phase> read_phases(const Config& c) {
     if (!c.has(key + "nu")) c.fail(key + "nu", "missing (required)");
     p.poisson_ratio = c.number(key + "nu");
     if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) c.fail(key + "nu", "must lie in (-1, 0.5), got " + c.text(key + "nu"));
+    if (c.has(key + "alpha")) {
+      p.alpha = c.number(key + "alpha");
+      if (!std::isfinite(*p.alpha)) c.fail(key + "alpha", "must be a finite number (1/K), got " + c.text(key + "alpha"));
+    }
     phases.push_back(p);
   }
   const std::string last = "phase." + names.back() + ".fraction";

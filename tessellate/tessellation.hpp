@@ -2,6 +2,7 @@
 // W x H cell as a planar graph the mesh stage meshes region by region.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct Phase {
   bool rest = false;          // takes whatever the other phases leave
   double youngs_modulus = 0;  // E, Pa (or the caller's stress unit)
   double poisson_ratio = 0;   // nu
+  std::optional<double> alpha;  // linear thermal expansion, 1/K (needed by a thermal load only)
 };
 
 enum class PhaseMode { grain, binder };

@@ -85,9 +85,11 @@ std::string tessellation_to_json(const Tessellation& t) {
   j["version"] = 1;
   j["domain"] = {{"width", t.width}, {"height", t.height}, {"periodic", t.periodic}};
   Json phases = Json::array();
-  for (const Phase& p : t.phases)
+  for (const Phase& p : t.phases) {
     phases.push_back({{"name", p.name}, {"target_fraction", p.fraction}, {"rest", p.rest},
                       {"E", p.youngs_modulus}, {"nu", p.poisson_ratio}});
+    if (p.alpha) phases.back()["alpha"] = *p.alpha;
+  }
   j["phases"] = phases;
   Json grains = Json::array();
   for (const Grain& g : t.grains)
@@ -134,9 +136,11 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
     t.width = d.at("width").get<double>();
     t.height = d.at("height").get<double>();
     t.periodic = d.at("periodic").get<bool>();
-    for (const Json& p : j.at("phases"))
+    for (const Json& p : j.at("phases")) {
       t.phases.push_back(Phase{p.at("name").get<std::string>(), p.at("target_fraction").get<double>(),
-                               p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>()});
+                               p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>(), {}});
+      if (p.contains("alpha")) t.phases.back().alpha = p.at("alpha").get<double>();
+    }
     for (const Json& g : j.at("grains"))
       t.grains.push_back(Grain{read_int(g.at("id")), read_int(g.at("phase")), read_point(g.at("seed")),
                                g.at("area").get<double>(), read_ints(g.at("neighbours")),

@@ -56,7 +56,7 @@ Tessellation microstructure(bool periodic) {
   o.grains = 40;
   o.periodic = periodic;
   o.lloyd_iterations = 3;
-  o.phases = {Phase{"WC", 0.0, true, 800e9, 0.1}, Phase{"Co", 0.2, false, 300e9, 0.1}};
+  o.phases = {Phase{"WC", 0.0, true, 800e9, 0.1, {}}, Phase{"Co", 0.2, false, 300e9, 0.1, {}}};
   Rng rng(5);
   return tessellate(o, rng);
 }
@@ -169,7 +169,7 @@ Tessellation two_layers(bool across, const std::vector<Phase>& phases) {
 
 TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across and along its layers",
           "[export][openfoam][physics]") {
-  const std::vector<Phase> phases{Phase{"stiff", 0.5, false, 200e9, 0.3}, Phase{"soft", 0.5, false, 90e9, 0.2}};
+  const std::vector<Phase> phases{Phase{"stiff", 0.5, false, 200e9, 0.3, {}}, Phase{"soft", 0.5, false, 90e9, 0.2, {}}};
   // Plane-strain modulus M and Lame lambda of each phase; the layers are equally thick.
   double M[2], L[2];
   for (int p = 0; p < 2; ++p) {
@@ -275,6 +275,37 @@ TEST_CASE("the displacement starts from the field a uniform cell takes under the
     // Held at left and bottom, the cell's far sides moved by the mean strain times its size.
     CHECK(worst <= 1e-12 * std::abs(strain[0]) * e.cell.width() * o.convert_to_meters);
   }
+}
+
+TEST_CASE("a thermal case carries the temperature change and each cell's alpha, and only on cyclic pairs",
+          "[export][thermal]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.15, .phase_size = {}});
+  ExportMesh e = grain_export_mesh(t, m);
+  e.phases[0].alpha = 5e-6;
+  e.phases[1].alpha = 14e-6;
+  test::ScratchDir dir("thermal-case");
+  const FoamOptions o{.cyclic = true, .strain = {-1e-3, -1e-3, 0.0}, .delta_T = -700.0};
+  const PolyMesh pm = write_foam_case(dir.path(), e, o);
+  const std::size_t cells = static_cast<std::size_t>(pm.cells);
+  const FieldValues alpha = read_cell_field(dir / "0/alpha", "scalar", cells);
+  const FieldValues T = read_cell_field(dir / "0/T", "scalar", cells);
+  for (std::size_t k = 0; k < cells; ++k) {
+    CHECK(alpha[k][0] == e.phases[e.phase[k]].alpha);
+    CHECK(T[k][0] == -700.0);
+  }
+  const std::string thermal = test::read_file(dir / "constant/thermalProperties");
+  CHECK(thermal.find("thermalStress   yes;") != std::string::npos);
+  CHECK(test::read_file(dir / "system/fvSchemes").find("grad((threeKalpha*T)) Gauss linear;") != std::string::npos);
+  // The thermal stress the solver's sigmaD leaves out: threeK alpha delta_T per cell.
+  const std::vector<double> s = thermal_stress(e, o);
+  const FoamPhase& wc = e.phases[0];
+  CHECK(s[static_cast<std::size_t>(std::find(e.phase.begin(), e.phase.end(), 0) - e.phase.begin())] ==
+        Approx(wc.youngs_modulus / (1 - 2 * wc.poisson_ratio) * wc.alpha * -700.0));
+  // Not on patches, and not with a negative alpha.
+  CHECK_THROWS_AS(write_foam_case(dir.path() / "x", e, {.delta_T = -700.0}), ConfigError);
+  e.phases[1].alpha = -1e-6;
+  CHECK_THROWS_WITH(write_foam_case(dir.path() / "y", e, o), Catch::Contains("phase.Co.alpha: must be"));
 }
 
 TEST_CASE("a case that stops itself before its effective stress has settled is continued until it has",

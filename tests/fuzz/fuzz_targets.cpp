@@ -33,8 +33,8 @@ const Tessellation& small_tessellation() {
   static const Tessellation t = [] {
     TessellationOptions o;
     o.grains = 4;
-    o.phases = {Phase{.name = "a", .fraction = 0.5, .rest = false, .youngs_modulus = 1, .poisson_ratio = 0.3},
-                Phase{.name = "b", .fraction = 0, .rest = true, .youngs_modulus = 2, .poisson_ratio = 0.3}};
+    o.phases = {Phase{.name = "a", .fraction = 0.5, .rest = false, .youngs_modulus = 1, .poisson_ratio = 0.3, .alpha = {}},
+                Phase{.name = "b", .fraction = 0, .rest = true, .youngs_modulus = 2, .poisson_ratio = 0.3, .alpha = {}}};
     Rng rng(1);
     return tessellate(o, rng);
   }();

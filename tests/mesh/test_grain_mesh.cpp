@@ -26,7 +26,7 @@ Tessellation cell(int grains, double w, bool periodic, PhaseMode mode, int lloyd
   o.lloyd_iterations = lloyd;
   o.phase_mode = mode;
   o.matrix_phase = 1;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.12, false, 211e9, 0.31}};
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.12, false, 211e9, 0.31, {}}};
   Rng rng(seed);
   return tessellate(o, rng);
 }
@@ -90,7 +90,7 @@ TEST_CASE("binder-mode meshes conform to their tessellation", "[mesh][grain]") {
       o.lloyd_iterations = 2;
       o.phase_mode = PhaseMode::binder;
       o.matrix_phase = 1;
-      o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.3, false, 211e9, 0.31}};
+      o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.3, false, 211e9, 0.31, {}}};
       Rng rng(seed);
       check_mesh(tessellate(o, rng), 30);
     }
@@ -106,7 +106,7 @@ Tessellation thesis_cell(int lloyd, std::uint64_t seed) {
   o.grains = 200;
   o.lloyd_iterations = lloyd;
   o.arrangement = Arrangement::dispersed;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.15, false, 211e9, 0.31}};
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.15, false, 211e9, 0.31, {}}};
   Rng rng(seed);
   return tessellate(o, rng);
 }
@@ -173,7 +173,7 @@ TEST_CASE("binder at 5 %: two elements across the thinnest layers and q_min >= 0
     o.lloyd_iterations = 3;
     o.phase_mode = PhaseMode::binder;
     o.matrix_phase = 1;
-    o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24}, Phase{"Co", 0.05, false, 211e9, 0.31}};
+    o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.05, false, 211e9, 0.31, {}}};
     Rng rng(seed);
     const Tessellation t = tessellate(o, rng);
     const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 100), .phase_size = {}});

@@ -12,6 +12,7 @@
 #include "export/foam.hpp"
 #include "export/vtu.hpp"
 #include "helpers.hpp"
+#include "pipelines/laminate.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -21,40 +22,6 @@ namespace {
 
 Json report_of(const fs::path& dir) { return Json::parse(test::read_file(dir / "report.json")); }
 
-struct Material {
-  double E, nu;
-  double mu() const { return E / (2 * (1 + nu)); }
-  double lambda() const { return E * nu / ((1 + nu) * (1 - 2 * nu)); }  // plane strain
-  double M() const { return lambda() + 2 * mu(); }
-};
-
-// The exact plane-strain stiffness of a laminate with layers normal to x, `soft` of the
-// area soft: C11, C22, C12, C66.
-std::array<double, 4> laminate(const Material& hard, const Material& soft, double f) {
-  auto mean = [&](auto g) { return (1 - f) * g(hard) + f * g(soft); };
-  const double inv_M = mean([](const Material& m) { return 1 / m.M(); });
-  const double l_M = mean([](const Material& m) { return m.lambda() / m.M(); });
-  return {1 / inv_M, mean([](const Material& m) { return m.M() - m.lambda() * m.lambda() / m.M(); }) + l_M * l_M / inv_M,
-          l_M / inv_M, 1 / mean([](const Material& m) { return 1 / m.mu(); })};
-}
-
-// A periodic cell of ten strips (seeds in a row: layers normal to x; in a column: normal
-// to y), three of them soft.
-// The mesh is refined along the grain boundaries (`boundary_size`): solidDisplacementFoam's
-// error lives in the cells next to a phase interface (README, Homogenisation).
-std::string laminate_config(const Material& hard, const Material& soft, bool normal_to_x, double boundary_size) {
-  std::string seeds;
-  for (int i = 0; i < 10; ++i) {
-    const double along = (i + 0.5) / 10.0;
-    seeds += (i ? ", " : "") + (normal_to_x ? std::to_string(2 * along) + " 0.5" : "0.5 " + std::to_string(2 * along));
-  }
-  return "[domain]\nwidth = " + std::string(normal_to_x ? "2" : "1") + "\nheight = " + (normal_to_x ? "1" : "2") +
-         "\nperiodic = true\n[tessellation]\nseeds = " + seeds + "\nphase_mode = grain\n[phase.hard]\nfraction = rest\nE = " +
-         std::to_string(hard.E) + "\nnu = " + std::to_string(hard.nu) + "\n[phase.soft]\nfraction = 0.3\nE = " +
-         std::to_string(soft.E) + "\nnu = " + std::to_string(soft.nu) + "\n[mesh]\nboundary_size = " +
-         std::to_string(boundary_size) + "\n";
-}
-
 double C(const Json& e, const std::string& name) { return e["stiffness"][name].get<double>(); }
 
 }  // namespace
@@ -63,7 +30,7 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
           "modulus their C11 across and along",
           "[homogenise][physics][cli]") {
   test::ScratchDir dir("laminate");
-  const Material hard{600e9, 0.2};
+  const test::Material hard{600e9, 0.2};
   // The strips are 0.2 wide; at a contrast of 20 the interface error is larger, and
   // the mesh finer there.
   // (The sanitizer build meshes ten times slower: the contrast of 3 alone there.)
@@ -72,12 +39,12 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
 #else
   for (const auto& [ratio, boundary_size] : {std::pair{3.0, 0.01}, std::pair{20.0, 0.0025}}) {
 #endif
-    const Material soft{hard.E / ratio, 0.3};
-    const std::array<double, 4> exact = laminate(hard, soft, 0.3);  // C11 C22 C12 C66, layers normal to x
+    const test::Material soft{hard.E / ratio, 0.3};
+    const std::array<double, 4> exact = test::laminate(hard, soft, 0.3);  // C11 C22 C12 C66, layers normal to x
     for (const bool normal_to_x : {true, false}) {
       INFO("ratio " << ratio << (normal_to_x ? ", layers normal to x" : ", layers normal to y"));
       const fs::path ini = dir / ("lam" + std::to_string(static_cast<int>(ratio)) + (normal_to_x ? "x" : "y") + ".ini");
-      std::ofstream(ini) << laminate_config(hard, soft, normal_to_x, boundary_size);
+      std::ofstream(ini) << test::laminate_config(hard, soft, normal_to_x, boundary_size);
       const fs::path periodic = ini.string() + ".periodic", mixed = ini.string() + ".mixed";
       const auto p = test::run_grainmesh({"run", ini.string(), "-o", periodic.string(), "--solve", "--set",
                                           "homogenise.boundary=periodic"});
@@ -127,7 +94,7 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
           "bounds",
           "[homogenise][physics][cli]") {
   test::ScratchDir dir("isotropic");
-  const Material m{800e9, 0.1};
+  const test::Material m{800e9, 0.1};
   const auto one = test::run_grainmesh({"run", "-o", (dir / "one").string(), "--solve", "--set",
                                         "homogenise.boundary=periodic", "--set", "phase.matrix.E=800e9"});
   INFO(one.err);

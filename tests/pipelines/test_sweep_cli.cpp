@@ -123,13 +123,17 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   CHECK(collect.err.find("plan.json: realisations is 1e+80, not a count from 1 to 100000") != std::string::npos);
 }
 
-TEST_CASE("a periodic sweep summarises every stiffness component and engineering constant with its 95 % CI",
+TEST_CASE("a periodic sweep summarises every stiffness component and engineering constant, the thermal expansion "
+          "and the residual stresses with their 95 % CI",
           "[cli][sweep][homogenise]") {
   test::ScratchDir dir("sweep-periodic");
   write_sweep(dir / "sweep.ini", "tessellation.grains = 20\nrealisations = 3\n");
   const std::string out = (dir / "out").string();
+  // Cooled as well: the thermal expansion and residual stresses are summarised too.
   const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "2", "--solve", "--set",
-                                "homogenise.boundary=periodic", "--set", "output.pictures=false"});
+                                "homogenise.boundary=periodic", "--set", "output.pictures=false", "--set",
+                                "load.delta_T=-1000", "--set", "phase.particulate.alpha=5e-6", "--set",
+                                "phase.matrix.alpha=14e-6"});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const auto c = run_grainmesh({"sweep", "--collect", out});
@@ -184,8 +188,15 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
     p99.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["stresses"]["xy"]["matrix"]
                       ["von_mises"]["p99"].get<double>());
   CHECK(value("xy_matrix_von_mises_p99_mean") == Approx((p99[0] + p99[1] + p99[2]) / 3).epsilon(1e-9));
-  for (const char* column : {"xx_particulate_mean_xx_ci95", "yy_matrix_mean_yy_mean", "xy_particulate_mean_xy_std"})
+  for (const char* column : {"xx_particulate_mean_xx_ci95", "yy_matrix_mean_yy_mean", "xy_particulate_mean_xy_std",
+                             "thermal_matrix_mean_xx_mean", "thermal_particulate_mean_yy_ci95",
+                             "thermal_matrix_von_mises_p99_std", "thermal_expansion_a22_ci95"})
     CHECK(std::find(names.begin(), names.end(), column) != names.end());
+  std::vector<double> a11;
+  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+    a11.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["effective"]
+                      ["thermal_expansion"]["a11"].get<double>());
+  CHECK(value("thermal_expansion_a11_mean") == Approx((a11[0] + a11[1] + a11[2]) / 3).epsilon(1e-9));
   CHECK(fs::exists(dir / "out/summary.png"));
   CHECK_FALSE(fs::exists(dir / "out/p000-r00/stress_xx.png"));
 }

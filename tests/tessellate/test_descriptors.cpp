@@ -16,7 +16,7 @@ using namespace grainmesh;
 namespace {
 
 Phase phase(const std::string& name, double fraction, bool rest = false) {
-  return Phase{.name = name, .fraction = fraction, .rest = rest, .youngs_modulus = 1.0, .poisson_ratio = 0.3};
+  return Phase{.name = name, .fraction = fraction, .rest = rest, .youngs_modulus = 1.0, .poisson_ratio = 0.3, .alpha = {}};
 }
 
 // A periodic grid of n x m rectangles a x b, each its own grain of phase `of(i, j)`

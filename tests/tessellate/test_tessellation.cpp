@@ -19,7 +19,7 @@ using namespace grainmesh;
 namespace {
 
 Phase phase(const std::string& name, double fraction, bool rest = false) {
-  return Phase{.name = name, .fraction = fraction, .rest = rest, .youngs_modulus = 1.0, .poisson_ratio = 0.3};
+  return Phase{.name = name, .fraction = fraction, .rest = rest, .youngs_modulus = 1.0, .poisson_ratio = 0.3, .alpha = {}};
 }
 
 TessellationOptions options(int grains, double w, double h) {
