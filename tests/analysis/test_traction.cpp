@@ -88,8 +88,8 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
     if (load.name == "xx") CHECK(right.x > 0.0);
     if (load.name == "yy") CHECK(top.y > 0.0);
     if (load.name == "xy") CHECK((right.y > 0.0 && top.x > 0.0));
-    // Cooled at the phases' mean free strain: the stiffer, less-shrinking carbide holds the
-    // cell open, so the sides carry tension.
-    if (load.name == "thermal") CHECK((right.x > 0.0 && top.y > 0.0));
+    // Cooled and held at the area mean of the phases' free contractions: more than the cell
+    // contracts free, as the stiffer carbide contracts less, so the sides are in compression.
+    if (load.name == "thermal") CHECK((right.x < 0.0 && top.y < 0.0));
   }
 }

@@ -135,7 +135,7 @@ TEST_CASE("a temperature change on one material: no residual stress, the free ex
 }
 
 TEST_CASE("a laminate cooled: the exact layer stresses and free expansion, the phase means balanced, Levin's relation "
-          "met; cooled and then pulled by superposition",
+          "met, cooled and then pulled by superposition",
           "[thermal][physics][cli]") {
   test::ScratchDir dir("thermal-laminate");
   const test::Material hard{600e9, 0.2, 5e-6}, soft{200e9, 0.3, 14e-6};
