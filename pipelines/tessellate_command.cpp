@@ -22,6 +22,7 @@ const std::vector<std::string>& tessellate_config_keys() {
       "tessellation.grains",    "tessellation.grain_size", "tessellation.seeds", "tessellation.seed",
       "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
+      "tessellation.contiguity", "tessellation.contiguity_phase",
       "phase.*.fraction",       "phase.*.E",               "phase.*.nu",              "phase.*.alpha",
       "output.picture_width",   kTimeLimitKey};
   return keys;
@@ -154,6 +155,24 @@ TessellateJob read_tessellate_job(const Config& c) {
   } else if (c.has("tessellation.matrix_phase")) {
     c.fail("tessellation.matrix_phase", "only used with tessellation.phase_mode = binder");
   }
+  if (c.has("tessellation.contiguity")) {
+    const double target = c.number("tessellation.contiguity");
+    if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
+    if (o.phase_mode != PhaseMode::grain)
+      c.fail("tessellation.contiguity", "a target only in grain mode (in binder mode the binder keeps the grains apart)");
+    if (c.has("tessellation.arrangement") && o.arrangement != Arrangement::random)
+      c.fail("tessellation.contiguity", "give tessellation.arrangement or tessellation.contiguity, not both");
+    o.contiguity = target;
+    // The phase it is of: named, else the rest phase, else the first.
+    const std::string name = c.optional_text("tessellation.contiguity_phase").value_or("");
+    for (std::size_t p = 0; p < o.phases.size(); ++p)
+      if (name.empty() ? o.phases[p].rest : o.phases[p].name == name) o.contiguity_phase = static_cast<int>(p);
+    if (!name.empty() && o.contiguity_phase < 0)
+      c.fail("tessellation.contiguity_phase", "no phase is named '" + name + "'");
+    if (o.contiguity_phase < 0) o.contiguity_phase = 0;
+  } else if (c.has("tessellation.contiguity_phase")) {
+    c.fail("tessellation.contiguity_phase", "only used with tessellation.contiguity");
+  }
   const long long width = c.integer("output.picture_width", job.picture_width);
   if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
   o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
@@ -161,16 +180,40 @@ TessellateJob read_tessellate_job(const Config& c) {
   return job;
 }
 
+namespace {
+
+// A contiguity target missed: refused, with the range the trades reach.
+void check_contiguity(const Tessellation& t, const TessellateJob& job, const Config& c) {
+  const TessellationOptions& o = job.options;
+  if (!o.contiguity) return;
+  const double reached = t.stats.phases[o.contiguity_phase].contiguity;
+  if (std::abs(reached - *o.contiguity) <= kContiguityTolerance) return;
+  const std::string phase = t.phases[o.contiguity_phase].name;
+  const auto& range = t.stats.contiguity_range;
+  c.fail("tessellation.contiguity",
+         to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
+             std::to_string(job.seed) + "): " +
+             (range ? "trading like-sized grains' labels moves its contiguity from " + to_text(range->first, 3) + " to " +
+                          to_text(range->second, 3)
+                    : "it reached " + to_text(reached, 3)) +
+             "; ask within that, or change the fractions or the grains");
+}
+
+}  // namespace
+
 Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
   Rng rng(job.seed);
+  Tessellation t;
   try {
-    return tessellate(job.options, rng);
+    t = tessellate(job.options, rng);
   } catch (const ConfigError& e) {
     // The only option tessellate() can find unreachable is the binder fraction.
     const TessellationOptions& o = job.options;
     const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
     c.fail(key, e.what());
   }
+  check_contiguity(t, job, c);
+  return t;
 }
 
 void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& c) {

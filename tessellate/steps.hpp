@@ -115,6 +115,24 @@ std::vector<int> assign_phases(const std::vector<double>& areas, const std::vect
                                const std::vector<Phase>& all, const std::vector<int>& phases, double total_area,
                                Arrangement arrangement, Rng& rng);
 
+// --- contiguity.cpp ------------------------------------------------------------------
+
+// Each grain's neighbours and the length of boundary it shares with each (summed over
+// their edges; a grain's boundary with itself left out).
+using SharedBoundaries = std::vector<std::vector<std::pair<int, double>>>;
+
+// The contiguity 2 L_aa / (2 L_aa + L_ab) of `phase` under `label` (0 without boundary).
+double labelled_contiguity(const std::vector<int>& label, const SharedBoundaries& shared, int phase);
+
+// Moves the contiguity of `phase` toward `target` by trading labels: a grain of the phase
+// and a like-sized grain of another phase swap theirs, the phase's summed area staying
+// within `slack` of `target_area` (or within where it started, when further). Greedy:
+// each of the phase's grains in an order drawn from `rng` takes the trade that brings the
+// contiguity nearest the target, sweep after sweep until within 0.002 or no trade helps.
+// Returns the contiguity reached.
+double arrange_contiguity(std::vector<int>& label, const std::vector<double>& areas, const SharedBoundaries& shared,
+                          int phase, double target, double target_area, double slack, Rng& rng);
+
 // The convex set of points of a convex-ish polygon at distance >= t inside every edge's
 // line (the inward offset). Empty when nothing is left.
 std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t);

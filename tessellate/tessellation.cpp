@@ -129,6 +129,50 @@ void check_options(const TessellationOptions& o) {
   if (rests == 1 && sum > 1.0 + 1e-12) throw ConfigError("phase fractions exceed 1");
   if (o.phase_mode == PhaseMode::binder && (o.matrix_phase < 0 || o.matrix_phase >= static_cast<int>(o.phases.size())))
     throw ConfigError("binder mode needs a matrix phase");
+  if (o.contiguity && (o.phase_mode != PhaseMode::grain || !(*o.contiguity > 0.0 && *o.contiguity < 1.0) ||
+                       o.contiguity_phase < 0 || o.contiguity_phase >= static_cast<int>(o.phases.size())))
+    throw ConfigError("a contiguity target lies in (0, 1), for a phase, in grain mode");
+}
+
+// The length of segment pq inside [0, W] x [0, H] (Liang-Barsky).
+double length_inside(Vec2 p, Vec2 q, double W, double H) {
+  const Vec2 d = q - p;
+  double t0 = 0.0, t1 = 1.0;
+  const double by[4][2] = {{-d.x, p.x}, {d.x, W - p.x}, {-d.y, p.y}, {d.y, H - p.y}};
+  for (const auto& [a, b] : by) {
+    if (a == 0.0) {
+      if (b < 0.0) return 0.0;
+      continue;
+    }
+    const double t = b / a;
+    if (a < 0.0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+  }
+  return t1 > t0 ? (t1 - t0) * norm(d) : 0.0;
+}
+
+// The boundary each of `cells` shares with each neighbour: the torus's edges, or in the
+// plane their parts inside the cell (what the cut keeps).
+SharedBoundaries shared_boundaries(const TorusGraph& g, const std::vector<int>& cells) {
+  std::vector<int> index(g.rings.size(), -1);
+  for (std::size_t k = 0; k < cells.size(); ++k) index[cells[k]] = static_cast<int>(k);
+  const auto vc = vertex_cells(g);
+  std::vector<std::map<int, double>> lengths(cells.size());
+  for (const EdgeRef& e : unique_edges(g)) {
+    const EdgeRef twin = twin_edge(g, vc, e);
+    if (twin.cell < 0) continue;
+    const int a = index[e.cell], b = index[twin.cell];
+    if (a < 0 || b < 0 || a == b) continue;
+    const auto& ring = g.rings[e.cell];
+    const Vec2 p = g.point(ring[e.at]), q = g.point(ring[(e.at + 1) % ring.size()]);
+    const double length = g.periodic ? norm(q - p) : length_inside(p, q, g.width, g.height);
+    if (length <= 0.0) continue;
+    lengths[a][b] += length;
+    lengths[b][a] += length;
+  }
+  SharedBoundaries out;
+  for (const auto& m : lengths) out.emplace_back(m.begin(), m.end());
+  return out;
 }
 
 double target_fraction(const std::vector<Phase>& phases, int p) {
@@ -299,7 +343,25 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     place_window(g, cells, scale, st);
     std::vector<double> areas;
     for (int c : cells) areas.push_back(polygon_area(counted_polygon(g, c)));
-    const auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
+    auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
+    if (o.contiguity) {
+      // Trades keep the phase's area within half a percent of the cell of its target.
+      const SharedBoundaries shared = shared_boundaries(g, cells);
+      const double target_area = target_fraction(o.phases, o.contiguity_phase) * W * H, slack = 0.005 * W * H;
+      const std::vector<int> start = label;
+      const double reached =
+          arrange_contiguity(label, areas, shared, o.contiguity_phase, *o.contiguity, target_area, slack, rng);
+      if (std::abs(reached - *o.contiguity) > kContiguityTolerance) {
+        // Out of reach: how far the trades go either way, from the same start.
+        std::pair<double, double> range;
+        for (double* end : {&range.first, &range.second}) {
+          std::vector<int> trial = start;
+          *end = arrange_contiguity(trial, areas, shared, o.contiguity_phase, end == &range.first ? 0.0 : 1.0,
+                                    target_area, slack, rng);
+        }
+        st.contiguity_range = range;
+      }
+    }
     polys = cell_polygons(g, cells);
     for (std::size_t k = 0; k < polys.size(); ++k) polys[k].phase = label[k];
     grain_cell = cells;

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/deadline.hpp"
@@ -38,6 +39,11 @@ struct TessellationOptions {
   Arrangement arrangement = Arrangement::random;
   std::vector<Phase> phases;     // at least one
   int matrix_phase = -1;         // binder mode: index into phases
+  // Grain mode: the contiguity phase `contiguity_phase` is to have (descriptors.hpp),
+  // reached by trading the labels of like-sized grains after the fractions are met; none:
+  // as the arrangement gives it.
+  std::optional<double> contiguity;
+  int contiguity_phase = -1;
   Deadline deadline{};           // the run's wall-clock guard, asked every Lloyd step
 };
 
@@ -80,6 +86,9 @@ struct PhaseStats {
   double mean_free_path = 0.0;
 };
 
+// How near a contiguity target is met, where it can be.
+inline constexpr double kContiguityTolerance = 0.02;
+
 struct TessellationStats {
   int grains = 0;                   // not counting the matrix
   int removed_grains = 0;           // hidden Laguerre cells and cells regularisation merged away
@@ -96,6 +105,9 @@ struct TessellationStats {
   int pushed_vertices = 0;          // junctions moved off a cell side
   double binder_offset = 0.0;       // t of binder mode
   Vec2 window_origin{};             // where the cell was placed on the torus
+  // A contiguity target missed by more than kContiguityTolerance: the lowest and highest
+  // contiguity the label trades reach from the same start (none when met).
+  std::optional<std::pair<double, double>> contiguity_range;
   std::vector<PhaseStats> phases;
 };
 
