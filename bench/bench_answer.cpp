@@ -24,22 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  return Json::parse(in);
-}
-
-// Runs grainmesh with `args`; throws with its stderr when it fails.
-void run_grainmesh(const std::string& args, const fs::path& log) {
-  const std::string command = std::string(GRAINMESH_BINARY) + " " + args + " > " + log.string() + " 2>&1";
-  if (std::system(command.c_str()) != 0) {
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    throw std::runtime_error("grainmesh " + args + " failed: " + text.str());
-  }
-}
-
 struct Cell {
   int grains;
   double width, height;
@@ -81,7 +65,7 @@ int main(int argc, char** argv) {
       Json limits;
       if (!big || boundary == "mixed") {
         const fs::path study = dir / ("converge-" + std::to_string(cell.grains) + "-" + boundary);
-        run_grainmesh("converge -o " + study.string() + " --levels " + std::to_string(big ? 3 : 5) + " --start 25 " +
+        run_command(GRAINMESH_BINARY, "converge -o " + study.string() + " --levels " + std::to_string(big ? 3 : 5) + " --start 25 " +
                           cell_args(cell, boundary) + " --set export.format=binary --set output.pictures=false",
                       dir / "converge.log");
         limits = read_json(study / "report.json")["study"];
@@ -93,7 +77,7 @@ int main(int argc, char** argv) {
           const fs::path out = dir / "run";
           fs::remove_all(out);
           const auto start = std::chrono::steady_clock::now();
-          run_grainmesh("run -o " + out.string() + " --solve --quiet " + cell_args(cell, boundary) +
+          run_command(GRAINMESH_BINARY, "run -o " + out.string() + " --solve --quiet " + cell_args(cell, boundary) +
                         " --set export.format=binary --set output.pictures=false --set mesh.triangles_per_grain=" +
                         std::to_string(tpg),
                     dir / "run.log");

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -83,6 +85,23 @@ Json median_in_children(int runs, F&& measure) {
     if (samples.back().contains("error")) return samples.back();
   }
   return median_of(std::move(samples));
+}
+
+inline Json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return Json::parse(in);
+}
+
+// Runs `binary` (the grainmesh command) with `args`, its output into `log`; throws with
+// that output when it fails.
+inline void run_command(const std::string& binary, const std::string& args, const std::filesystem::path& log) {
+  const std::string command = binary + " " + args + " > " + log.string() + " 2>&1";
+  if (std::system(command.c_str()) != 0) {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    throw std::runtime_error(binary + " " + args + " failed: " + text.str());
+  }
 }
 
 // Points, triangles and the quality measures every table reports.

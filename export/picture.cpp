@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "common/errors.hpp"
 
@@ -85,7 +86,96 @@ class Canvas {
   std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
 };
 
+// The row under a picture: a scale bar in the options' length unit (left) and the
+// legend of the region colours (right); `top` its upper edge in pixels.
+constexpr double kKeyRow = 30.0;
+bool has_key(const PictureOptions& o, bool field) { return o.scale_bar || (!field && !o.legend.empty()); }
+
+void draw_key(cairo_t* c, const Canvas& canvas, const PictureOptions& o, double width, bool field, double top) {
+  cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(c, 13.0);
+  const double mid = top + 0.5 * kKeyRow;
+  double x = o.margin_px;
+  if (o.scale_bar) {
+    const double length = scale_bar_length(0.25 * width), px = length * canvas.scale();
+    cairo_set_source_rgb(c, 0.05, 0.05, 0.05);
+    cairo_set_line_width(c, 3.0);
+    cairo_move_to(c, x, mid);
+    cairo_line_to(c, x + px, mid);
+    cairo_stroke(c);
+    cairo_set_line_width(c, 1.5);
+    for (const double at : {x, x + px}) {
+      cairo_move_to(c, at, mid - 6.0);
+      cairo_line_to(c, at, mid + 6.0);
+    }
+    cairo_stroke(c);
+    char text[64];
+    std::snprintf(text, sizeof text, o.length_unit.empty() ? "%g" : "%g %s", length, o.length_unit.c_str());
+    cairo_move_to(c, x + px + 8.0, mid + 5.0);
+    cairo_show_text(c, text);
+    cairo_text_extents_t ext;
+    cairo_text_extents(c, text, &ext);
+    x += px + ext.x_advance + 40.0;
+  }
+  if (field) return;
+  for (std::size_t k = 0; k < o.legend.size(); ++k) {
+    const Rgb col = region_colour(static_cast<int>(k));
+    cairo_rectangle(c, x, mid - 7.0, 14.0, 14.0);
+    cairo_set_source_rgb(c, col.r, col.g, col.b);
+    cairo_fill_preserve(c);
+    cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
+    cairo_set_line_width(c, 1.0);
+    cairo_stroke(c);
+    cairo_move_to(c, x + 20.0, mid + 5.0);
+    cairo_show_text(c, o.legend[k].c_str());
+    cairo_text_extents_t ext;
+    cairo_text_extents(c, o.legend[k].c_str(), &ext);
+    x += 20.0 + ext.x_advance + 24.0;
+  }
+}
+
 }  // namespace
+
+std::string length_unit_name(double metres) {
+  static constexpr std::array<std::pair<double, const char*>, 4> units{
+      {{1e-9, "nm"}, {1e-6, "\u00b5m"}, {1e-3, "mm"}, {1.0, "m"}}};
+  for (const auto& [m, name] : units)
+    if (std::abs(metres / m - 1.0) < 1e-9) return name;
+  char text[48];
+  std::snprintf(text, sizeof text, "x %.4g m", metres);
+  return text;
+}
+
+double scale_bar_length(double longest) {
+  if (!(longest > 0.0) || !std::isfinite(longest)) return 0.0;
+  const double power = std::pow(10.0, std::floor(std::log10(longest)));
+  for (const double f : {5.0, 2.0, 1.0})
+    if (f * power <= longest * (1 + 1e-12)) return f * power;
+  return power;
+}
+
+std::vector<double> nice_ticks(double lo, double hi) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};
+  // The nice step f 10^e whose count of ticks is nearest five, from three to seven; a
+  // tick n f 10^e is computed as n f / 10^-e for e < 0, so that 0.3 is the double 0.3.
+  auto value = [](double n, double f, int e) { return e >= 0 ? n * f * std::pow(10.0, e) : n * f / std::pow(10.0, -e); };
+  const int base = static_cast<int>(std::floor(std::log10((hi - lo) / 10.0)));
+  double best_f = 0.0, best_first = 0.0;
+  int best_e = 0, best_count = 0;
+  for (int e = base; e < base + 3; ++e)
+    for (const double f : {1.0, 2.0, 5.0}) {
+      const double step = value(1.0, f, e);
+      const double first = std::ceil(lo / step - 1e-9);
+      const int count = static_cast<int>(std::floor(hi / step + 1e-9) - first) + 1;
+      if (count < 3 || count > 7) continue;
+      if (best_count == 0 || std::abs(count - 5) < std::abs(best_count - 5))
+        best_f = f, best_e = e, best_first = first, best_count = count;
+    }
+  if (best_count == 0) return {lo, hi};
+  std::vector<double> ticks;
+  for (int k = 0; k < best_count; ++k) ticks.push_back(value(best_first + k, best_f, best_e) + 0.0);  // no -0
+  return ticks;
+}
 
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
   Box box;
@@ -99,7 +189,8 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
   if (field && options.field.size() != mesh.triangles.size())
     throw IoError(file.string() + ": the field has " + std::to_string(options.field.size()) + " values for " +
                   std::to_string(mesh.triangles.size()) + " triangles");
-  Canvas canvas(box, options, field ? 56 : 0);
+  const bool key = has_key(options, field);
+  Canvas canvas(box, options, (field ? 64 : 0) + (key ? static_cast<int>(kKeyRow) : 0));
   cairo_t* c = canvas.get();
   const double scale = canvas.scale();
   auto px = [&](Vec2 p) { return canvas.px(p); };
@@ -198,9 +289,10 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
          {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 
-  if (field) {  // the colour bar: least value on the left, greatest on the right
-    cairo_reset_clip(c);
-    const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 44.0;
+  cairo_reset_clip(c);
+  if (key) draw_key(c, canvas, options, box.width(), field, px(box.lo).y + options.margin_px * 0.5);
+  if (field) {  // the colour bar: least value on the left, greatest on the right, ticked
+    const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 56.0;
     for (int i = 0; i < 256; ++i) {
       const Rgb col = viridis(i / 255.0);
       cairo_set_source_rgb(c, col.r, col.g, col.b);
@@ -209,26 +301,34 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     }
     cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
     cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(c, 13.0);
+    cairo_set_font_size(c, 12.0);
+    cairo_set_line_width(c, 1.0);
     char text[64];
-    std::snprintf(text, sizeof text, "<= %.4g", least);
-    cairo_move_to(c, x0, y0 + 30.0);
-    cairo_show_text(c, text);
-    std::snprintf(text, sizeof text, ">= %.4g", most);
     cairo_text_extents_t ext;
-    cairo_text_extents(c, text, &ext);
-    cairo_move_to(c, x1 - ext.x_advance, y0 + 30.0);
-    cairo_show_text(c, text);
-    cairo_text_extents(c, options.field_name.c_str(), &ext);
-    cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 30.0);
-    cairo_show_text(c, options.field_name.c_str());
+    for (const double v : nice_ticks(least, most)) {
+      const double x = x0 + (x1 - x0) * (v - least) / (most - least);
+      cairo_move_to(c, x, y0 + 14.0);
+      cairo_line_to(c, x, y0 + 19.0);
+      cairo_stroke(c);
+      std::snprintf(text, sizeof text, "%.4g", v);
+      cairo_text_extents(c, text, &ext);
+      cairo_move_to(c, std::clamp(x - 0.5 * ext.x_advance, x0, x1 - ext.x_advance), y0 + 31.0);
+      cairo_show_text(c, text);
+    }
+    // The title, and what the ends mean: the colours stop at the 1st and 99th percentiles.
+    const std::string title = options.field_name + "   (ends: 1st and 99th percentile, beyond in the end colours)";
+    cairo_set_font_size(c, 13.0);
+    cairo_text_extents(c, title.c_str(), &ext);
+    cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 49.0);
+    cairo_show_text(c, title.c_str());
   }
   canvas.save(file);
 }
 
 void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t, const PictureOptions& options) {
   if (t.regions.empty()) throw IoError(file.string() + ": nothing to draw, the tessellation is empty");
-  Canvas canvas(Box{{0.0, 0.0}, {t.width, t.height}}, options);
+  const bool key = has_key(options, false);
+  Canvas canvas(Box{{0.0, 0.0}, {t.width, t.height}}, options, key ? static_cast<int>(kKeyRow) : 0);
   cairo_t* c = canvas.get();
   cairo_set_fill_rule(c, CAIRO_FILL_RULE_EVEN_ODD);  // holes of matrix regions stay open
   for (const Region& r : t.regions) {
@@ -255,6 +355,7 @@ void write_tessellation_png(const std::filesystem::path& file, const Tessellatio
     cairo_set_source_rgb(c, 0.1, 0.1, 0.15);
     cairo_stroke(c);
   }
+  if (key) draw_key(c, canvas, options, t.width, false, canvas.px({0.0, 0.0}).y + options.margin_px * 0.5);
   canvas.save(file);
 }
 
@@ -289,20 +390,31 @@ void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
       {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65}, {0.35, 0.35, 0.35}, {0.90, 0.62, 0.00}}};
   cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(c, 12.0);
-  // Axes with five ticks each.
+  // Axes with round ticks.
   cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
   cairo_set_line_width(c, 1.0);
   cairo_rectangle(c, left, top, right - left, bottom - top);
   cairo_stroke(c);
   char text[64];
-  for (int k = 0; k <= 4; ++k) {
-    const double fx = data.lo.x + data.width() * k / 4, fy = data.lo.y + data.height() * k / 4;
-    const Vec2 tx = px({fx, data.lo.y}), ty = px({data.lo.x, fy});
-    std::snprintf(text, sizeof text, "%.3g", fx);
-    cairo_move_to(c, tx.x - 12, bottom + 18);
+  cairo_text_extents_t ext;
+  for (const double fx : nice_ticks(data.lo.x, data.hi.x)) {
+    const double x = px({fx, data.lo.y}).x;
+    cairo_move_to(c, x, bottom);
+    cairo_line_to(c, x, bottom + 5);
+    cairo_stroke(c);
+    std::snprintf(text, sizeof text, "%.4g", fx);
+    cairo_text_extents(c, text, &ext);
+    cairo_move_to(c, x - 0.5 * ext.x_advance, bottom + 18);
     cairo_show_text(c, text);
-    std::snprintf(text, sizeof text, "%.3g", fy);
-    cairo_move_to(c, 30, ty.y + 4);
+  }
+  for (const double fy : nice_ticks(data.lo.y, data.hi.y)) {
+    const double y = px({data.lo.x, fy}).y;
+    cairo_move_to(c, left - 5, y);
+    cairo_line_to(c, left, y);
+    cairo_stroke(c);
+    std::snprintf(text, sizeof text, "%.4g", fy);
+    cairo_text_extents(c, text, &ext);
+    cairo_move_to(c, left - 8 - ext.x_advance, y + 4);
     cairo_show_text(c, text);
   }
   cairo_move_to(c, 0.5 * (left + right) - 40, plot.height_px - 15.0);

@@ -18,10 +18,27 @@ struct PictureOptions {
   std::vector<int> outline_by{};  // #T labels: thick lines where they differ; empty = the region
   std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
   // A field to show instead of the regions: one value per triangle, coloured (viridis)
-  // from its 1st to its 99th percentile, with a colour bar titled `field_name` below.
+  // from its 1st to its 99th percentile, with a ticked colour bar titled `field_name`
+  // below.
   std::vector<double> field{};
   std::string field_name{};
+  // Below the picture: the name of each region label's colour (a legend; regions drawn,
+  // not a field), and a scale bar labelled in `length_unit` (e.g. "µm"; empty: the
+  // number alone, in the caller's unit).
+  std::vector<std::string> legend{};
+  bool scale_bar = false;
+  std::string length_unit{};
 };
+
+// The name of a length unit of `metres` metres (1e-6: "µm", also nm, mm, m; otherwise
+// "x <metres> m").
+std::string length_unit_name(double metres);
+// A scale bar's length: the largest 1, 2 or 5 times a power of ten not above `longest`.
+double scale_bar_length(double longest);
+// Ticks for a colour bar or a plot's axis: the multiples of a step of 1, 2 or 5 times a
+// power of ten in [lo, hi], three to seven of them (nearest five; lo and hi where no step
+// gives three).
+std::vector<double> nice_ticks(double lo, double hi);
 
 // Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a
 // fixed palette) or by a field, thin mesh edges when they are at least a few pixels long,

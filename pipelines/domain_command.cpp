@@ -179,7 +179,7 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
                  ") before the points settled (the mesh is valid; see distmesh.max_iterations)");
   StagedOutput staged(out, "domain");
   write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
-  write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width});
+  write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width, .scale_bar = true});
   // For the export: the bounding box is the cell; inside the interface is the second phase.
   MeshDescription description;
   for (const Vec2 p : mesh.points) description.cell.extend(p);

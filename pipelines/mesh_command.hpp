@@ -40,9 +40,10 @@ std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q,
 
 // Writes a grain mesh's files into `dir`: mesh.vtu (cell data grain, phase, quality),
 // mesh.json (the cell and phases, for the export), mesh.png (not when picture_width is 0)
-// and, when `detail`, mesh_detail.png.
+// and, when `detail`, mesh_detail.png; the pictures with the phases' legend and a scale
+// bar in `length_unit` (empty: the config's own, unnamed).
 void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width,
-                      bool detail = true);
+                      bool detail = true, const std::string& length_unit = {});
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
                       const std::filesystem::path& out);

@@ -134,23 +134,26 @@ void check_run_config(const Config& c) {
 namespace {
 
 // Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
-// 3.14-3.15); none when picture_width is 0, sigma_xx alone when not `all`.
+// 3.14-3.15), stresses in MPa, the displacement in nm, a scale bar in `unit`; none when
+// picture_width is 0, sigma_xx alone when not `all`.
 void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
-                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all) {
+                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all,
+                          const std::string& unit) {
   if (picture_width == 0) return;
-  std::vector<double> sxx, syy, sxy;
-  for (const StressState& s : sigma) sxx.push_back(s.xx), syy.push_back(s.yy), sxy.push_back(s.xy);
+  std::vector<double> sxx, syy, sxy, d = displacement_length(fields);
+  for (const StressState& s : sigma) sxx.push_back(1e-6 * s.xx), syy.push_back(1e-6 * s.yy), sxy.push_back(1e-6 * s.xy);
+  for (double& v : d) v *= 1e9;
   std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
-      {"stress_xx.png", {sxx, "sigma_xx (Pa)"}}};
+      {"stress_xx.png", {sxx, "sigma_xx (MPa)"}}};
   if (all) {
-    pictures.push_back({"stress_yy.png", {syy, "sigma_yy (Pa)"}});
-    pictures.push_back({"stress_xy.png", {sxy, "tau_xy (Pa)"}});
-    pictures.push_back({"displacement.png", {displacement_length(fields), "|D| (m)"}});
+    pictures.push_back({"stress_yy.png", {syy, "sigma_yy (MPa)"}});
+    pictures.push_back({"stress_xy.png", {sxy, "tau_xy (MPa)"}});
+    pictures.push_back({"displacement.png", {d, "|D| (nm)"}});
   }
   for (const auto& [name, field] : pictures)
     write_mesh_png(dir / name, m.mesh,
                    {.width_px = picture_width, .outline_by = {}, .view = {}, .field = field.first,
-                    .field_name = field.second});
+                    .field_name = field.second, .legend = {}, .scale_bar = true, .length_unit = unit});
 }
 
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
@@ -231,10 +234,13 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
 void write_stress_histogram(const std::filesystem::path& file, const StressedCase& c, const Tessellation& t,
                             const GrainMesh& m) {
   const int phases = static_cast<int>(t.phases.size());
-  Plot plot{.x_label = "von Mises stress (Pa), load case " + c.name, .y_label = "share of the phase's area",
+  Plot plot{.x_label = "von Mises stress (MPa), load case " + c.name, .y_label = "share of the phase's area",
             .series = {}};
-  const auto histograms = von_mises_histograms(*c.cell_stress, m.mesh, m.phase, phases, 40);
-  for (int p = 0; p < phases; ++p) plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+  auto histograms = von_mises_histograms(*c.cell_stress, m.mesh, m.phase, phases, 40);
+  for (int p = 0; p < phases; ++p) {
+    for (Vec2& point : histograms[p]) point.x *= 1e-6;
+    plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+  }
   write_plot_png(file, plot);
 }
 
@@ -260,7 +266,8 @@ Answer homogenise_mixed(const std::filesystem::path& dir, const StagedOutput& st
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields, &h.cell_stress}});
-  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures);
+  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures,
+                       length_unit_name(foam.convert_to_meters));
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -375,7 +382,8 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
       write_stress_histogram(dir / "stress_histogram_thermal.png", {"thermal", &thermal->cell_stress, -1}, t, m);
   }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
-  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures);
+  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures,
+                       length_unit_name(foam.convert_to_meters));
 
   const TensorBounds b = tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = stiffness_json(b.voigt);
@@ -464,13 +472,14 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   for (const std::string& w : mesh_warnings(m, q, mesh_job.options)) warnings.add(w);
 
   StagedOutput staged(out, "run");
+  const std::string unit = length_unit_name(foam.convert_to_meters);  // the pictures' scale bars
   const std::filesystem::path dir = staged.dir();
   write_text_file(dir / "tessellation.json", tessellation_to_json(t));
   if (pictures != Pictures::none)
-    write_tessellation_png(dir / "tessellation.png", t, {.width_px = tess_job.picture_width});
+    write_tessellation_png(dir / "tessellation.png", t, tessellation_picture(t, tess_job.picture_width, unit));
   const int picture_width = pictures != Pictures::none ? mesh_job.picture_width : 0;
   const bool all_pictures = pictures == Pictures::all;
-  write_mesh_files(dir, t, m, picture_width, all_pictures);
+  write_mesh_files(dir, t, m, picture_width, all_pictures, unit);
 
   clock = std::chrono::steady_clock::now();
   stage("exporting");

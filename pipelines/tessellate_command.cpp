@@ -216,6 +216,12 @@ Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
   return t;
 }
 
+PictureOptions tessellation_picture(const Tessellation& t, int width, const std::string& length_unit) {
+  PictureOptions o{.width_px = width, .scale_bar = true, .length_unit = length_unit};
+  for (const Phase& p : t.phases) o.legend.push_back(p.name);
+  return o;
+}
+
 void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& c) {
   // A phase without a grain is not in the microstructure at all: its properties would
   // never reach the solver. A grain has about 1 / N of the cell, so 1 / fraction grains
@@ -270,7 +276,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   StagedOutput staged(out, "tessellate");
   write_text_file(staged.dir() / "tessellation.json", tessellation_to_json(t));
   write_tessellation_vtp(staged.dir() / "tessellation.vtp", t);
-  write_tessellation_png(staged.dir() / "tessellation.png", t, {.width_px = job.picture_width});
+  write_tessellation_png(staged.dir() / "tessellation.png", t, tessellation_picture(t, job.picture_width));
   const TessellationStats& s = t.stats;
   Json report;
   report["config"] = c.source();

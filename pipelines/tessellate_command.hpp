@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "export/picture.hpp"
 #include "pipelines/config.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -31,6 +32,10 @@ Tessellation run_tessellate_job(const TessellateJob& job, const Config& config);
 // Refuses (ConfigError naming its fraction) a tessellation in which a phase got no grain,
 // with the grain count that would give it one: the commands' check before meshing.
 void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& config);
+
+// How tessellation.png is drawn: `width` pixels wide, the phases' legend, a scale bar in
+// `length_unit` (empty: the config's own, unnamed).
+PictureOptions tessellation_picture(const Tessellation& t, int width, const std::string& length_unit = {});
 
 // What a tessellation should tell its user: phase fractions that missed their target by
 // more than 0.01.

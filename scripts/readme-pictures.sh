@@ -18,4 +18,7 @@ done
 ./build/grainmesh run -o "$tmp/run" --solve --set output.picture_width=800 > /dev/null
 cp "$tmp/run/stress_xx.png" docs/images/default_stress_xx.png
 cp "$tmp/run/stress_histogram.png" docs/images/default_stress_histogram.png
+./build/grainmesh run -o "$tmp/thermal" --solve --set homogenise.boundary=periodic --set load.delta_T=-1000 \
+  --set phase.particulate.alpha=5e-6 --set phase.matrix.alpha=14e-6 --set output.pictures=basic > /dev/null
+cp "$tmp/thermal/stress_histogram_thermal.png" docs/images/default_residual_stress_histogram.png
 echo "pictures written to docs/images/"
