@@ -58,3 +58,27 @@ TEST_CASE("von Mises histograms give each phase's share of its area per bin", "[
   for (const Vec2& b : h[1]) sum += b.y;
   CHECK(sum == Approx(1.0));
 }
+
+TEST_CASE("balanced stresses give the in-plane phase means and the partition, zz and the distributions stay the "
+          "cells' own",
+          "[analysis][statistics]") {
+  // The two squares again: phase 0 on the left, phase 1 on the right, each half the area.
+  const TriMesh mesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}, {0, 0, 1, 1}};
+  const std::vector<StressState> cells{{.xx = 1, .yy = 0, .zz = 5, .xy = 0}, {.xx = 3, .yy = 0, .zz = 7, .xy = 0},
+                                       {.xx = 4, .yy = 1, .zz = 2, .xy = 0}, {.xx = 4, .yy = 1, .zz = 2, .xy = 0}};
+  const std::vector<StressState> balanced{{.xx = 2, .yy = -1, .zz = 0, .xy = 1}, {.xx = 4, .yy = -3, .zz = 0, .xy = 1},
+                                          {.xx = 6, .yy = 2, .zz = 0, .xy = 0}, {.xx = 6, .yy = 2, .zz = 0, .xy = 0}};
+  const auto own = phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, 0);
+  const auto with = phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, 0, &balanced);
+  CHECK(own[0].mean.xx == Approx(2.0));
+  CHECK(with[0].mean.xx == Approx(3.0));
+  CHECK(with[0].mean.yy == Approx(-2.0));
+  CHECK(with[0].mean.xy == Approx(1.0));
+  CHECK(with[0].mean.zz == Approx(6.0));  // the cells' own
+  // The partition: the phase's balanced mean xx over the cell's, (3 + 6) / 2.
+  CHECK(with[0].partition == Approx(3.0 / 4.5));
+  CHECK(with[1].partition == Approx(6.0 / 4.5));
+  CHECK(with[0].von_mises.mean == Approx(own[0].von_mises.mean));
+  // No loaded component: no partition.
+  CHECK(phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, -1, &balanced)[0].partition == 0.0);
+}

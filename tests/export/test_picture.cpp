@@ -32,7 +32,7 @@ bool round_number(double x) {
 
 }  // namespace
 
-TEST_CASE("ticks are round, evenly spaced and inside the range; a scale bar is round and at most asked",
+TEST_CASE("ticks are round, evenly spaced and inside the range, a scale bar round and at most as long as asked",
           "[export][picture]") {
   CHECK(nice_ticks(131.2, 331.7) == std::vector<double>{150, 200, 250, 300});
   CHECK(nice_ticks(-0.3, 0.3) == std::vector<double>{-0.3, -0.2, -0.1, 0.0, 0.1, 0.2, 0.3});
