@@ -16,11 +16,25 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
                     const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
   if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
     throw IoError("--solve: solidDisplacementFoam is not installed (Debian package openfoam; scripts/install-deps.sh)");
+  if (o.processes > 1 && std::system("command -v mpirun > /dev/null 2>&1") != 0)
+    throw IoError("solve.processes: mpirun is not installed (Debian package openmpi-bin, which openfoam brings)");
   const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
   // Errors name the field, and the load case when there are several.
   const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
   const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
   const std::vector<std::string> environment = foam_environment();
+  const std::vector<std::string> command = solver_command(o);
+  const bool parallel = o.processes > 1;
+  // A utility around the parallel solve (decomposePar, reconstructPar), its log beside.
+  auto utility = [&](const std::vector<std::string>& argv) {
+    const std::filesystem::path utility_log = case_dir / ("log." + argv.front());
+    const int status = run_child(argv, case_dir, utility_log, deadline, argv.front(), environment);
+    if (status != 0)
+      throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": " + argv.front() +
+                       " failed (exit code " + std::to_string(status) + "); see " +
+                       ((case_shown_as.empty() ? case_dir : case_shown_as) / utility_log.filename()).string());
+  };
+  if (parallel) utility({"decomposePar", "-force"});
 
   // A thousand times the displacement the load can give is divergence, not an answer.
   const double load_scale = std::max(load_strain(m.cell, m.phases, o), thermal_strain(m.phases, o)) *
@@ -37,7 +51,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   // One run of the solver, followed: killed as soon as it stalls, diverges or will not
   // stop on its own.
   auto solve = [&](SolveMonitor& monitor) {
-    return run_child({"solidDisplacementFoam"}, case_dir, log, deadline, "solidDisplacementFoam", environment,
+    return run_child(command, case_dir, log, deadline, "solidDisplacementFoam", environment,
                      [&](std::string_view text) {
                        const SolveMonitor::State s = monitor.feed(text);
                        return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
@@ -54,7 +68,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   for (int part = 0;; ++part) {
     if (part > 0) {
       std::filesystem::rename(log, log.string() + "." + std::to_string(part));
-      start = std::stoi(latest_time_dir(case_dir).filename().string());
+      start = std::stoi(latest_time_dir(parallel ? case_dir / "processor0" : case_dir).filename().string());
       tighter *= 0.1;
       watch.case_tolerance = stop.tolerance * tighter;
       write_control_dict(case_dir, m, o, kMaxCorrections, tighter, start);
@@ -91,13 +105,15 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
     throw SolveError(field + ": solidDisplacementFoam diverges: floating-point overflow after " +
                      std::to_string(monitor.corrections()) + " corrections" + advice + see);
   if (status != 0 || text.find("\nEnd") == std::string::npos)
-    throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": solidDisplacementFoam failed (exit code " + std::to_string(status) + ")" + see);
+    throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": " + command.front() +
+                     " failed (exit code " + std::to_string(status) + ")" + see);
   if (state != SolveMonitor::State::converged || !(monitor.measure() < kSolverTolerance))
     throw SolveError(field + ": solidDisplacementFoam did not converge in " + std::to_string(total) +
                      " corrections (residual " + to_text(monitor.measure(), 3) + ", the effective stress's change " +
                      to_text(monitor.stress_change(), 3) + "; tolerances " + to_text(kSolverTolerance) + " and " +
                      to_text(kStressTolerance) + ")" + advice + see);
 
+  if (parallel) utility({"reconstructPar", "-latestTime"});
   SolveRun r;
   r.corrections = total;
   r.final_residual = monitor.measure();

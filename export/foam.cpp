@@ -9,6 +9,8 @@
 #include <map>
 #include <string_view>
 
+#include <unistd.h>
+
 #include "common/allocator.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -234,6 +236,12 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
 
 namespace {
 
+// system/decomposeParDict: o.processes pieces, the cell cut into nx x ny blocks as near
+// square as the count allows (hierarchical: Debian's OpenFOAM has no working scotch or
+// metis), each cyclic face kept on one processor with its partner (fixedJump does not
+// cross processors).
+void write_decompose_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o);
+
 // The shortest text that reads back as the same double.
 std::string number_text(double v) {
   char buf[32];
@@ -428,6 +436,29 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
   if (!f) throw IoError(file.string() + ": cannot write");
 }
 
+void write_decompose_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+  // The factor pair whose blocks are nearest square.
+  int nx = o.processes, ny = 1;
+  double best = 1e300;
+  for (int a = 1; a <= o.processes; ++a) {
+    if (o.processes % a != 0) continue;
+    const int b = o.processes / a;
+    const double aspect = (m.cell.width() / a) / (m.cell.height() / b);
+    const double badness = std::abs(std::log(aspect));
+    if (badness < best) best = badness, nx = a, ny = b;
+  }
+  std::string cyclic;
+  if (o.cyclic)
+    cyclic = "\n// Each cyclic face on the processor of its partner: the jump of D is applied there.\n"
+             "constraints\n{\n    cyclics\n    {\n        type    preservePatches;\n"
+             "        patches (left right bottom top);\n    }\n}\n";
+  write_text(dir / "system/decomposeParDict",
+             dictionary_header("system", "decomposeParDict") + "numberOfSubdomains " + std::to_string(o.processes) +
+                 ";\n\n// Blocks of the cell, as near square as the count allows.\nmethod          hierarchical;\n\n"
+                 "coeffs\n{\n    n           (" + std::to_string(nx) + " " + std::to_string(ny) +
+                 " 1);\n    order       xyz;\n}\n" + cyclic);
+}
+
 // Pseudo-time steps of one correction each (d2dt2 is steadyState), stopped by
 // runTimeControl once OpenFOAM's own residual is below the tolerance (case_stop), or at
 // `end_step`. The force through the loaded sides and the range of every displacement
@@ -500,9 +531,16 @@ std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& o) {
 std::vector<std::string> foam_environment() {
   const char* project = std::getenv("WM_PROJECT_DIR");
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  return {"WM_PROJECT_DIR=" + std::string(project != nullptr && *project != '\0' ? project : kFoamProjectDir),
-          "GLIBC_TUNABLES=" + malloc_tunables() +
-              (tunables != nullptr && *tunables != '\0' ? ":" + std::string(tunables) : "")};
+  std::vector<std::string> env{
+      "WM_PROJECT_DIR=" + std::string(project != nullptr && *project != '\0' ? project : kFoamProjectDir),
+      "GLIBC_TUNABLES=" + malloc_tunables() + (tunables != nullptr && *tunables != '\0' ? ":" + std::string(tunables) : "")};
+  if (geteuid() == 0) env.insert(env.end(), {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
+  return env;
+}
+
+std::vector<std::string> solver_command(const FoamOptions& o) {
+  if (o.processes <= 1) return {"solidDisplacementFoam"};
+  return {"mpirun", "--oversubscribe", "-np", std::to_string(o.processes), "solidDisplacementFoam", "-parallel"};
 }
 
 CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
@@ -722,13 +760,25 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
                  "// One correction per (pseudo-)time step: system/controlDict says when to stop.\n"
                  "stressAnalysis\n{\n    compactNormalStress yes;\n    nCorrectors     1;\n    D               " +
                  number_text(kSolverTolerance) + ";\n}\n");
+  // Each step's output in its log; a failing step says so and stops.
+  auto step = [](const std::string& command, const std::string& log) {
+    return command + " > " + log + " 2>&1 || { echo \"" + command + " failed: see " + log + "\"; exit 1; }\n";
+  };
+  std::string solve;
+  for (const std::string& word : solver_command(o)) solve += (solve.empty() ? "" : " ") + word;
+  if (o.processes > 1) {
+    write_decompose_dict(dir, m, o);
+    solve = "if [ \"$(id -u)\" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi\n" +
+            step("decomposePar -force", "log.decomposePar") + step(solve, "log.solidDisplacementFoam") +
+            step("reconstructPar -latestTime", "log.reconstructPar");
+  } else {
+    solve = step(solve, "log.solidDisplacementFoam");
+  }
   write_text(dir / "Allrun",
              "#!/bin/sh\n# Checks the mesh and solves; logs in log.*.\ncd \"${0%/*}\" || exit 1\n"
              "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-" + std::string(kFoamProjectDir) + "}\"\n"
-             "export GLIBC_TUNABLES=\"" + malloc_tunables() + "${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}\"\n"
-             "checkMesh > log.checkMesh 2>&1 || { echo \"checkMesh failed: see log.checkMesh\"; exit 1; }\n"
-             "solidDisplacementFoam > log.solidDisplacementFoam 2>&1 || { echo \"solidDisplacementFoam failed: see "
-             "log.solidDisplacementFoam\"; exit 1; }\n");
+             "export GLIBC_TUNABLES=\"" + malloc_tunables() + "${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}\"\n" +
+             step("checkMesh", "log.checkMesh") + solve);
   std::filesystem::permissions(dir / "Allrun", std::filesystem::perms::owner_exec | std::filesystem::perms::group_exec |
                                                    std::filesystem::perms::others_exec,
                                std::filesystem::perm_options::add);

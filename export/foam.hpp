@@ -44,6 +44,13 @@ inline constexpr const char* kGradientField = "grad(D)";
 inline constexpr const char* kFoamProjectDir = "/usr/share/openfoam";
 std::vector<std::string> foam_environment();
 
+// The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
+// `mpirun --oversubscribe -np N solidDisplacementFoam -parallel` (Open MPI; run as root,
+// it needs OMPI_ALLOW_RUN_AS_ROOT and OMPI_ALLOW_RUN_AS_ROOT_CONFIRM, which
+// foam_environment sets there and Allrun too).
+struct FoamOptions;
+std::vector<std::string> solver_command(const FoamOptions& options);
+
 struct FoamPhase {
   std::string name;
   double youngs_modulus = 0.0;  // E, Pa
@@ -85,6 +92,10 @@ struct FoamOptions {
   // on a cyclic case, at its `strain`; the free expansion follows by superposition with
   // the mechanical cases (analysis/thermal.hpp).
   double delta_T = 0.0;
+  // MPI processes the solve runs on: above 1, the case is split by decomposePar
+  // (system/decomposeParDict), solved by mpirun ... -parallel and put together again by
+  // reconstructPar (solver_command, Allrun).
+  int processes = 1;
   // How the stiffness 2 mu + lambda is interpolated to faces in laplacian(DD,D).
   // Harmonic is exact across an interface, but solidDisplacementFoam's explicit
   // correction is interpolated linearly, and the two together diverge once the phases'

@@ -38,7 +38,8 @@ double since(std::chrono::steady_clock::time_point t) {
 }  // namespace
 
 const std::vector<std::string>& run_own_config_keys() {
-  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "load.delta_T"};
+  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "load.delta_T",
+                                             "solve.processes"};
   return keys;
 }
 
@@ -96,6 +97,9 @@ std::string config_fingerprint(const Config& c) {
 
 FoamOptions read_run_foam_options(const Config& c) {
   FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  const long long processes = c.integer("solve.processes", 1);
+  if (processes < 1 || processes > 1024) c.fail("solve.processes", "must be a count from 1 to 1024, got " + c.text("solve.processes"));
+  o.processes = static_cast<int>(processes);
   o.delta_T = c.number("load.delta_T", 0.0);
   if (!std::isfinite(o.delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
   if (o.delta_T != 0.0) {
@@ -338,7 +342,8 @@ Answer homogenise_periodic(const std::filesystem::path& dir, const StagedOutput&
     dirs.push_back(dir / periodic_case_dir(lc));
     shown.push_back(staged.failed_dir() / periodic_case_dir(lc));
   }
-  const int parallel = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // As many solves side by side as there are cores for their processes.
+  const int parallel = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / foam.processes);
   const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
   const Stiffness& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
@@ -540,6 +545,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                           : homogenise_periodic(dir, staged, t, m, e, pm, foam, tess_job.options.deadline,
                                                 picture_width, all_pictures, solve_warnings);
       report["effective"] = std::move(answer.effective);
+      report["effective"]["processes"] = foam.processes;
       report["stresses"] = std::move(answer.stresses);
     } catch (const SolveError& err) {
       // Kept for a look: the case with the solver's log, as OUT.failed.

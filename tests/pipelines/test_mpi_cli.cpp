@@ -1,0 +1,81 @@
+// The solve on several MPI processes (solve.processes): decomposePar, mpirun ... -parallel,
+// reconstructPar, then the same homogenisation as the serial solve, and the same answer.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+Json report_of(const fs::path& dir) { return Json::parse(test::read_file(dir / "report.json")); }
+
+}  // namespace
+
+TEST_CASE("on two MPI processes the default cell's mixed modulus and periodic tensor equal the serial ones",
+          "[cli][mpi][openfoam]") {
+  test::ScratchDir dir("mpi");
+  for (const char* boundary : {"mixed", "periodic"}) {
+    INFO(boundary);
+    Json effective[2];
+    for (const int processes : {1, 2}) {
+      const fs::path out = dir / (std::string(boundary) + std::to_string(processes));
+      const auto r = test::run_grainmesh({"run", "-o", out.string(), "--solve", "--set",
+                                          std::string("homogenise.boundary=") + boundary, "--set",
+                                          "solve.processes=" + std::to_string(processes), "--set",
+                                          "output.pictures=none"});
+      INFO(r.err);
+      REQUIRE(r.exit_code == 0);
+      effective[processes - 1] = report_of(out)["effective"];
+      CHECK(effective[processes - 1]["processes"].get<int>() == processes);
+    }
+    // Different GAMG paths stop at different corrections: equal to the stress's own
+    // settling tolerance (1e-6; measured: 8e-8 mixed, at most 6e-8 periodic).
+    if (std::string(boundary) == "mixed") {
+      CHECK(effective[1]["modulus"].get<double>() == Approx(effective[0]["modulus"].get<double>()).epsilon(1e-6));
+    } else {
+      const double scale = effective[0]["stiffness"]["C11"].get<double>();
+      for (const char* c : {"C11", "C22", "C12", "C21", "C66", "C16", "C26"})
+        CHECK(std::abs(effective[1]["stiffness"][c].get<double>() - effective[0]["stiffness"][c].get<double>()) <=
+              1e-6 * scale);
+    }
+  }
+  // The parallel case as written: its Allrun decomposes, solves on two processes and
+  // reconstructs; each cyclic face stays on its partner's processor.
+  const fs::path parallel_case = dir / "periodic2/case_xx";
+  CHECK(fs::exists(parallel_case / "processor1"));
+  const std::string allrun = test::read_file(parallel_case / "Allrun");
+  CHECK(allrun.find("decomposePar -force") != std::string::npos);
+  CHECK(allrun.find("mpirun --oversubscribe -np 2 solidDisplacementFoam -parallel") != std::string::npos);
+  CHECK(allrun.find("reconstructPar -latestTime") != std::string::npos);
+  CHECK(test::read_file(parallel_case / "system/decomposeParDict").find("preservePatches") != std::string::npos);
+}
+
+TEST_CASE("a failing decomposePar is named with its log, and no answer is reported", "[cli][mpi]") {
+  test::ScratchDir dir("mpi-fail");
+  fs::create_directories(dir / "bin");
+  std::ofstream(dir / "bin/decomposePar") << "#!/bin/sh\necho 'FOAM FATAL ERROR: no decomposition'\nexit 3\n";
+  fs::permissions(dir / "bin/decomposePar", fs::perms::owner_all);
+  const fs::path out = dir / "out";
+  const auto r = test::run_grainmesh({"run", "-o", out.string(), "--solve", "--set", "solve.processes=2"}, {},
+                                     "PATH=" + (dir / "bin").string() + ":$PATH");
+  CHECK(r.exit_code == 6);
+  CHECK(r.err == "grainmesh: error: --solve: decomposePar failed (exit code 3); see " + out.string() +
+                     ".failed/case/log.decomposePar\n");
+  CHECK_FALSE(fs::exists(out));
+  CHECK(test::read_file(out.string() + ".failed/case/log.decomposePar").find("no decomposition") != std::string::npos);
+  CHECK_FALSE(report_of(out.string() + ".failed").contains("effective"));
+  // A count that is not one refused before any work.
+  const auto bad = test::run_grainmesh({"run", "-o", out.string(), "--set", "solve.processes=0"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err.find("solve.processes: must be a count from 1 to 1024, got 0") != std::string::npos);
+}
