@@ -20,9 +20,14 @@ int width_of(const std::string& type) {
   throw GeometryError("unknown field type " + type);
 }
 
-// The values of an entry `uniform V` or `nonuniform List<T> N (V ...)` starting at `at`.
+// The values of an entry `uniform V` or `nonuniform List<T> N (V ...)` starting at `at`;
+// in a binary file (`format binary;` in its header, as grainmesh and OpenFOAM write them:
+// little-endian 64-bit scalars) the list's values are N x width raw doubles.
 FieldValues parse_values(const std::filesystem::path& file, const std::string& text, std::size_t at,
                          const std::string& type, std::size_t count) {
+  const std::size_t header_end = text.find('}');
+  const std::size_t format = text.find("format", 0);
+  const bool binary = format < header_end && text.compare(text.find_first_not_of(" \t", format + 6), 6, "binary") == 0;
   FieldValues f;
   f.width = width_of(type);
   const std::size_t end = text.find(';', at);
@@ -58,6 +63,16 @@ FieldValues parse_values(const std::filesystem::path& file, const std::string& t
     if (end == p || n != count)
       throw GeometryError(file.string() + ": " + std::to_string(n) + " values, the mesh has " + std::to_string(count));
     p = end;
+    if (binary) {
+      while (*p == ' ' || *p == '\n' || *p == '\r' || *p == '\t') ++p;
+      const std::size_t bytes = count * static_cast<std::size_t>(f.width) * sizeof(double);
+      const std::size_t offset = static_cast<std::size_t>(p - text.c_str());
+      if (*p != '(' || offset + 1 + bytes >= text.size() || text[offset + 1 + bytes] != ')')
+        throw GeometryError(file.string() + ": unreadable binary values");
+      f.values.resize(count * static_cast<std::size_t>(f.width));
+      std::memcpy(f.values.data(), p + 1, bytes);
+      return f;
+    }
     f.values.reserve(count * static_cast<std::size_t>(f.width));
     for (std::size_t k = 0; k < count && ok; ++k) read_value(f.values);
   } else {

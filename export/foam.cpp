@@ -489,10 +489,13 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step
          "stopAt          endTime;\n// Each step is one correction of the displacement (d2dt2 steadyState): at most " +
          steps + (end_step == kMaxCorrections ? "" : ", where grainmesh's criterion was met") +
          (tighter == 1.0 ? "" : "; its own stop tightened until the effective stress settles") +
-         ".\nendTime         " + steps + ";\ndeltaT          1;\n\n"
-         "// Written once, when the run stops. Results in ASCII whatever the mesh's format:\n"
-         "// they are what users (and grainmesh run --solve) read.\n"
-         "writeControl    timeStep;\nwriteInterval   " + steps + ";\npurgeWrite      0;\nwriteFormat     ascii"
+         ".\nendTime         " + steps + ";\ndeltaT          1;\n\n" +
+         (o.processes > 1 ? "// Written once, when the run stops; in binary on several processes, where\n"
+                            "// decomposePar and reconstructPar would spend longer than the solve on ASCII.\n"
+                          : "// Written once, when the run stops. Results in ASCII whatever the mesh's format:\n"
+                            "// they are what users read (grainmesh reads either).\n") +
+         "writeControl    timeStep;\nwriteInterval   " + steps + ";\npurgeWrite      0;\nwriteFormat     " +
+         (o.processes > 1 ? "binary" : "ascii") +
          ";\nwritePrecision  12;\nwriteCompression off;\ntimeFormat      general;\ntimePrecision   6;\n"
          "runTimeModifiable false;\n\n"
          "functions\n{\n" + range +

@@ -251,14 +251,18 @@ TEST_CASE("cyclic cases: the displacement jump across left/right loads the perio
   CHECK_THROWS_AS(write_foam_case(periodic.path() / "x", e, {.cyclic = true, .uniaxial = true}), ConfigError);
 }
 
-TEST_CASE("the displacement starts from the field a uniform cell takes under the imposed mean strain", "[export]") {
+TEST_CASE("the displacement starts from the field a uniform cell takes under the imposed mean strain, ASCII or "
+          "binary",
+          "[export]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
   const ExportMesh e = grain_export_mesh(t, m);
   // The default load (right moved in x, symmetry elsewhere) and a periodic mixed strain.
   const FoamOptions mixed{};
   const FoamOptions cyclic{.cyclic = true, .strain = {1e-3, -4e-4, 2.5e-4}};
-  for (const FoamOptions& o : {mixed, cyclic}) {
+  FoamOptions binary = cyclic;  // read back from raw doubles
+  binary.binary = true;
+  for (const FoamOptions& o : {mixed, cyclic, binary}) {
     test::ScratchDir dir("initial");
     const PolyMesh pm = write_foam_case(dir.path(), e, o);
     const FieldValues D = read_cell_field(dir / "0/D", "vector", static_cast<std::size_t>(pm.cells));
