@@ -14,7 +14,8 @@ packages=(
   libtbb-dev                            # parallel loops
   libcairo2-dev                         # pictures
   nlohmann-json3-dev                    # reports
-  openfoam                              # checkMesh and solidDisplacementFoam in the tests
+  openfoam                              # checkMesh and solidDisplacementFoam in the tests (Open MPI with it)
+  slurm-wlm                             # a one-node SLURM cluster for the sweep's job-array test
   clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
 )
 if [[ "${1:-}" == "--bench" ]]; then
