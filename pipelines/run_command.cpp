@@ -426,7 +426,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const Config tess_config = c.subset(tessellate_config_keys());
   const Config mesh_config = c.subset(mesh_config_keys());
   const TessellateJob tess_job = read_tessellate_job(tess_config);
-  const FoamOptions foam = read_run_foam_options(c);
+  FoamOptions foam = read_run_foam_options(c);
   const Boundary boundary = read_boundary(c);
   // Pictures cost more than the rest of a small run's output; sweeps may do without.
   const Pictures pictures = read_pictures(c);
@@ -489,6 +489,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   clock = std::chrono::steady_clock::now();
   stage("exporting");
   const ExportMesh e = grain_export_mesh(t, m);
+  if (!c.has("export.format") && m.mesh.triangles.size() > kBinaryCaseAboveCells) foam.binary = true;
   // The mixed load in case/; the periodic load cases each in their own case_NAME/.
   std::vector<std::string> case_dirs;
   PolyMesh pm;
@@ -530,6 +531,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
               {"seconds",
                {{"tessellate", tessellate_seconds}, {"mesh", mesh_seconds}, {"export", export_seconds}}},
               {"case", case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs)},
+              {"case_format", foam.binary ? "binary" : "ascii"},
               {"solved", solve}};
   add_time_limit(report, tess_job.options.deadline);
 

@@ -2,6 +2,8 @@
 // that ends them.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdlib>
 
@@ -47,12 +49,19 @@ TEST_CASE("OpenFOAM runs with the Debian package's directory and glibc told to k
   unsetenv("GLIBC_TUNABLES");
   const std::string tunables = "GLIBC_TUNABLES=" + malloc_tunables();
   CHECK(tunables == "GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=1073741824");
-  CHECK(foam_environment() == std::vector<std::string>{"WM_PROJECT_DIR=/usr/share/openfoam", tunables});
+  // Run as root, Open MPI's mpirun (solve.processes) needs to be told that it may.
+  const std::vector<std::string> as_root =
+      geteuid() == 0 ? std::vector<std::string>{"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"}
+                     : std::vector<std::string>{};
+  auto with_root = [&](std::vector<std::string> env) {
+    env.insert(env.end(), as_root.begin(), as_root.end());
+    return env;
+  };
+  CHECK(foam_environment() == with_root({"WM_PROJECT_DIR=/usr/share/openfoam", tunables}));
   // A user's own settings are kept: their directory, their tunables after ours (the last wins).
   setenv("WM_PROJECT_DIR", "/opt/openfoam", 1);
   setenv("GLIBC_TUNABLES", "glibc.malloc.tcache_count=0", 1);
-  CHECK(foam_environment() ==
-        std::vector<std::string>{"WM_PROJECT_DIR=/opt/openfoam", tunables + ":glibc.malloc.tcache_count=0"});
+  CHECK(foam_environment() == with_root({"WM_PROJECT_DIR=/opt/openfoam", tunables + ":glibc.malloc.tcache_count=0"}));
   unsetenv("GLIBC_TUNABLES");
   if (had_project != nullptr)
     setenv("WM_PROJECT_DIR", project.c_str(), 1);

@@ -129,3 +129,24 @@ TEST_CASE("grainmesh run --solve homogenises: the modulus lies between Reuss and
       CHECK_FALSE(fs::exists(out / picture));
   }
 }
+
+TEST_CASE("a run of more than a million cells writes its case in binary unless export.format says ascii",
+          "[cli][run][export]") {
+#ifdef GRAINMESH_SANITIZED
+  SUCCEED("a million cells mesh ten times slower in the sanitizer build: the release build tests this");
+#else
+  test::ScratchDir dir("binary-case");
+  const auto big = run_grainmesh({"run", "-o", (dir / "big").string(), "--set", "tessellation.grains=10000", "--set",
+                                  "domain.width=30", "--set", "domain.height=17", "--set", "output.pictures=none"});
+  INFO(big.err);
+  REQUIRE(big.exit_code == 0);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "big/report.json"));
+  REQUIRE(report["mesh"]["cells"].get<int>() > 1'000'000);
+  CHECK(report["case_format"] == "binary");
+  CHECK(test::read_file(dir / "big/case/constant/polyMesh/owner").find("format      binary;") != std::string::npos);
+  // The default cell stays ASCII.
+  const auto small = run_grainmesh({"run", "-o", (dir / "small").string(), "--set", "output.pictures=none"});
+  REQUIRE(small.exit_code == 0);
+  CHECK(nlohmann::json::parse(test::read_file(dir / "small/report.json"))["case_format"] == "ascii");
+#endif
+}
