@@ -21,6 +21,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
   // Errors name the field, and the load case when there are several.
   const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
+  const std::string who = load_case.empty() ? std::string("--solve") : "load case " + load_case;
   const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
   const std::vector<std::string> environment = foam_environment();
   const std::vector<std::string> command = solver_command(o);
@@ -30,7 +31,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
     const std::filesystem::path utility_log = case_dir / ("log." + argv.front());
     const int status = run_child(argv, case_dir, utility_log, deadline, argv.front(), environment);
     if (status != 0)
-      throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": " + argv.front() +
+      throw SolveError(who + ": " + argv.front() +
                        " failed (exit code " + std::to_string(status) + "); see " +
                        ((case_shown_as.empty() ? case_dir : case_shown_as) / utility_log.filename()).string());
   };
@@ -105,7 +106,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
     throw SolveError(field + ": solidDisplacementFoam diverges: floating-point overflow after " +
                      std::to_string(monitor.corrections()) + " corrections" + advice + see);
   if (status != 0 || text.find("\nEnd") == std::string::npos)
-    throw SolveError((load_case.empty() ? std::string("--solve") : "load case " + load_case) + ": " + command.front() +
+    throw SolveError(who + ": " + command.front() +
                      " failed (exit code " + std::to_string(status) + ")" + see);
   if (state != SolveMonitor::State::converged || !(monitor.measure() < kSolverTolerance))
     throw SolveError(field + ": solidDisplacementFoam did not converge in " + std::to_string(total) +

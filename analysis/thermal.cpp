@@ -11,12 +11,11 @@ namespace {
 // sum_k weight_k fields_k.
 CaseFields superposed(const std::vector<std::pair<double, const CaseFields*>>& terms) {
   CaseFields out = *terms.front().second;
-  for (double& v : out.displacement.values) v *= terms.front().first;
-  for (double& v : out.stress.values) v *= terms.front().first;
-  for (std::size_t k = 1; k < terms.size(); ++k) {
-    const auto& [weight, f] = terms[k];
-    for (std::size_t i = 0; i < out.displacement.values.size(); ++i) out.displacement.values[i] += weight * f->displacement.values[i];
-    for (std::size_t i = 0; i < out.stress.values.size(); ++i) out.stress.values[i] += weight * f->stress.values[i];
+  for (FieldValues CaseFields::*field : {&CaseFields::displacement, &CaseFields::stress}) {
+    std::vector<double>& sum = (out.*field).values;
+    for (double& v : sum) v *= terms.front().first;
+    for (std::size_t k = 1; k < terms.size(); ++k)
+      for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += terms[k].first * ((*terms[k].second).*field).values[i];
   }
   return out;
 }

@@ -398,10 +398,8 @@ std::string constraint_entry(const PolyMesh::Patch& p) {
   return "";
 }
 
-void write_scalar_field(const std::filesystem::path& file, const std::string& object, const std::string& dimensions,
-                        const std::vector<double>& values, const PolyMesh& pm, bool binary) {
-  FoamFile f(file, "volScalarField", "0", object, binary);
-  f.text("dimensions      " + dimensions + ";\n\ninternalField   nonuniform List<scalar> ").scalars(values);
+// A scalar field's boundary: each patch its constraint type, or zeroGradient.
+void write_scalar_boundary(FoamFile& f, const PolyMesh& pm) {
   f.text(";\n\nboundaryField\n{\n");
   for (const PolyMesh::Patch& p : pm.patches) {
     const std::string c = constraint_entry(p);
@@ -410,16 +408,19 @@ void write_scalar_field(const std::filesystem::path& file, const std::string& ob
   f.text("}\n").write();
 }
 
+void write_scalar_field(const std::filesystem::path& file, const std::string& object, const std::string& dimensions,
+                        const std::vector<double>& values, const PolyMesh& pm, bool binary) {
+  FoamFile f(file, "volScalarField", "0", object, binary);
+  f.text("dimensions      " + dimensions + ";\n\ninternalField   nonuniform List<scalar> ").scalars(values);
+  write_scalar_boundary(f, pm);
+}
+
 // The same with one value in every cell.
 void write_uniform_scalar_field(const std::filesystem::path& file, const std::string& object,
                                 const std::string& dimensions, double value, const PolyMesh& pm) {
   FoamFile f(file, "volScalarField", "0", object, false);
-  f.text("dimensions      " + dimensions + ";\n\ninternalField   uniform ").number(value).text(";\n\nboundaryField\n{\n");
-  for (const PolyMesh::Patch& p : pm.patches) {
-    const std::string c = constraint_entry(p);
-    f.text("    " + p.name + "\n    {\n        " + (c.empty() ? "type zeroGradient;" : c) + "\n    }\n");
-  }
-  f.text("}\n").write();
+  f.text("dimensions      " + dimensions + ";\n\ninternalField   uniform ").number(value);
+  write_scalar_boundary(f, pm);
 }
 
 std::string dictionary_header(const std::string& location, const std::string& object) {
@@ -658,10 +659,11 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
   const bool harmonic = harmonic_stiffness(m, o);
 
   // Fields from each cell's phase.
-  std::vector<double> E(pm.cells), nu(pm.cells);
+  std::vector<double> E(pm.cells), nu(pm.cells), alpha(pm.cells);
   for (int t = 0; t < pm.cells; ++t) {
     E[t] = m.phases[m.phase[t]].youngs_modulus;
     nu[t] = m.phases[m.phase[t]].poisson_ratio;
+    alpha[t] = m.phases[m.phase[t]].alpha;
   }
   write_scalar_field(dir / "0/E", "E", "[1 -1 -2 0 0 0 0]", E, pm, o.binary);
   write_scalar_field(dir / "0/nu", "nu", "[0 0 0 0 0 0 0]", nu, pm, o.binary);
@@ -721,8 +723,6 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
   if (thermal) {
     // A uniform temperature change: T holds it in every cell and keeps it (its equation is
     // not iterated, see fvSolution); alpha per cell from the phases.
-    std::vector<double> alpha(pm.cells);
-    for (int t = 0; t < pm.cells; ++t) alpha[t] = m.phases[m.phase[t]].alpha;
     write_scalar_field(dir / "0/alpha", "alpha", "[0 0 0 -1 0 0 0]", alpha, pm, o.binary);
     write_uniform_scalar_field(dir / "0/T", "T", "[0 0 0 1 0 0 0]", o.delta_T, pm);
   }

@@ -44,13 +44,6 @@ inline constexpr const char* kGradientField = "grad(D)";
 inline constexpr const char* kFoamProjectDir = "/usr/share/openfoam";
 std::vector<std::string> foam_environment();
 
-// The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
-// `mpirun --oversubscribe -np N solidDisplacementFoam -parallel` (Open MPI; run as root,
-// it needs OMPI_ALLOW_RUN_AS_ROOT and OMPI_ALLOW_RUN_AS_ROOT_CONFIRM, which
-// foam_environment sets there and Allrun too).
-struct FoamOptions;
-std::vector<std::string> solver_command(const FoamOptions& options);
-
 struct FoamPhase {
   std::string name;
   double youngs_modulus = 0.0;  // E, Pa
@@ -107,6 +100,12 @@ struct FoamOptions {
   // ratio of 3, linear above.
   enum class Interpolation { automatic, harmonic, linear } interpolation = Interpolation::automatic;
 };
+
+// The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
+// `mpirun --oversubscribe -np N solidDisplacementFoam -parallel` (Open MPI; run as root,
+// it needs OMPI_ALLOW_RUN_AS_ROOT and OMPI_ALLOW_RUN_AS_ROOT_CONFIRM, which
+// foam_environment sets there and Allrun too).
+std::vector<std::string> solver_command(const FoamOptions& options);
 
 // The polyMesh as OpenFOAM orders it: internal faces first, sorted by owner then
 // neighbour (owner < neighbour, normals from owner to neighbour), then the boundary
