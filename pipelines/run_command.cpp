@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "analysis/thermal.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/memory.hpp"
 #include "export/foam.hpp"
 #include "export/picture.hpp"
 #include "mesh/quality.hpp"
@@ -33,6 +35,13 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The largest of a report's per-stage figures.
+double largest(const Json& stages) {
+  double most = 0.0;
+  for (const auto& [stage, value] : stages.items()) most = std::max(most, value.get<double>());
+  return most;
 }
 
 }  // namespace
@@ -454,14 +463,23 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   };
 
   auto clock = std::chrono::steady_clock::now();
+  // Each stage's peak resident memory (the solve's with the solver's processes).
+  Json memory = Json::object();
+  auto memory_meter = std::make_unique<StageMemory>();
+  auto end_memory = [&](const char* name) {
+    memory[name] = memory_meter->peak_mib();
+    memory_meter.reset();
+  };
   stage("tessellating");
   const Tessellation t = run_tessellate_job(tess_job, tess_config);
   check_phases_have_grains(t, tess_job, tess_config);
   const double tessellate_seconds = since(clock);
+  end_memory("tessellate");
   end_stage_line();
   for (const std::string& w : tessellation_warnings(t)) warnings.add(w);
 
   clock = std::chrono::steady_clock::now();
+  memory_meter = std::make_unique<StageMemory>();
   MeshJob mesh_job = read_mesh_job(mesh_config, t);
   mesh_job.options.distmesh.deadline = tess_job.options.deadline;  // one guard for the whole run
   stage("meshing");
@@ -486,7 +504,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const bool all_pictures = pictures == Pictures::all;
   write_mesh_files(dir, t, m, picture_width, all_pictures, unit);
 
+  end_memory("mesh");
   clock = std::chrono::steady_clock::now();
+  memory_meter = std::make_unique<StageMemory>();
   stage("exporting");
   const ExportMesh e = grain_export_mesh(t, m);
   if (!c.has("export.format") && m.mesh.triangles.size() > kBinaryCaseAboveCells) foam.binary = true;
@@ -505,6 +525,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
     }
   }
   const double export_seconds = since(clock);
+  end_memory("export");
   write_text_file(dir / "config.ini", config_ini(c));
 
   Json phases = Json::array();
@@ -530,6 +551,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                 {"unconverged_regions", m.unconverged_regions}}},
               {"seconds",
                {{"tessellate", tessellate_seconds}, {"mesh", mesh_seconds}, {"export", export_seconds}}},
+              {"memory_mib", memory},
               {"case", case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs)},
               {"case_format", foam.binary ? "binary" : "ascii"},
               {"solved", solve}};
@@ -538,6 +560,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   double solve_seconds = 0.0;
   if (solve) {
     clock = std::chrono::steady_clock::now();
+    memory_meter = std::make_unique<StageMemory>(true);
     stage("solving with solidDisplacementFoam");
     std::vector<std::string> solve_warnings;
     try {
@@ -553,7 +576,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
       // Kept for a look: the case with the solver's log, as OUT.failed.
       end_stage_line();
       report["failed"] = err.what();
-      report["peak_memory_mib"] = peak_memory_mib();
+      end_memory("solve");
+      report["memory_mib"] = memory;
+      report["peak_memory_mib"] = largest(memory);
       try {
         write_report(staged, report, warnings);
         staged.keep_as_failed();
@@ -563,12 +588,14 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
       throw;
     }
     solve_seconds = since(clock);
+    end_memory("solve");
     end_stage_line();
     for (const std::string& w : solve_warnings) warnings.add(w);
   }
   report["seconds"]["solve"] = solve_seconds;
   report["seconds"]["total"] = since(start);
-  report["peak_memory_mib"] = peak_memory_mib();
+  report["memory_mib"] = memory;
+  report["peak_memory_mib"] = largest(memory);
   write_report(staged, report, warnings);
   staged.commit();
   end_stage_line();

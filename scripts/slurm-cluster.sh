@@ -8,7 +8,8 @@
 # No munge: AuthType=auth/none and CredType=cred/none, which Slurm 22.05 still has and
 # which suit a cluster of one machine that only its own user reaches. The ports are
 # derived from DIR's name, so two clusters on one machine (or a leftover) do not meet.
-# A failed start prints the daemons' logs' last lines, stops what it started and exits 1.
+# A failed start is one line naming the daemon that failed and its log; what was started
+# is stopped, and DIR keeps the logs alone (no slurm.conf to point SLURM_CONF at); exit 1.
 set -euo pipefail
 action=${1:?usage: slurm-cluster.sh start|stop DIR}
 dir=${2:?usage: slurm-cluster.sh start|stop DIR}
@@ -68,19 +69,30 @@ NodeName=$host CPUs=$(nproc) RealMemory=$(( $(free -m | awk '/^Mem:/ {print $2}'
 PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
     export SLURM_CONF="$dir/slurm.conf"
-    if ! slurmctld -f "$SLURM_CONF" || ! slurmd -f "$SLURM_CONF"; then
-      echo "slurm-cluster: a daemon did not start; see $dir/slurmctld.log and $dir/slurmd.log" >&2
+    failed() {
+      echo "slurm-cluster: $1; see $2" >&2
       stop
+      rm -rf "$dir/slurm.conf" "$dir/state" "$dir/spool" "$dir"/*.pid
       exit 1
-    fi
+    }
+    # Each daemon forks into the background once its configuration is read; one that dies
+    # after that (a port in use) is caught by its pid file's process having gone.
+    for daemon in slurmctld slurmd; do
+      status=0
+      "$daemon" -f "$SLURM_CONF" > "$dir/$daemon.out" 2>&1 || status=$?
+      [[ -s "$dir/$daemon.out" ]] && cat "$dir/$daemon.out" >> "$dir/$daemon.log"
+      rm -f "$dir/$daemon.out"
+      [[ $status -eq 0 ]] || failed "$daemon did not start (exit code $status)" "$dir/$daemon.log"
+      for _ in $(seq 50); do [[ -s "$dir/$daemon.pid" ]] && break; sleep 0.1; done
+      sleep 0.3
+      [[ -s "$dir/$daemon.pid" ]] && kill -0 "$(cat "$dir/$daemon.pid")" 2>/dev/null ||
+        failed "$daemon stopped as it started" "$dir/$daemon.log"
+    done
     for _ in $(seq 100); do
       if [[ "$(sinfo -h -o '%t' 2>/dev/null)" == "idle" ]]; then exit 0; fi
       sleep 0.2
     done
-    echo "slurm-cluster: the node is not idle after 20 s ($(sinfo -h -o '%t' 2>&1)); logs:" >&2
-    tail -n 5 "$dir/slurmctld.log" "$dir/slurmd.log" >&2 || true
-    stop
-    exit 1
+    failed "the node is not idle after 20 s ($(sinfo -h -o '%t' 2>&1))" "$dir/slurmctld.log and $dir/slurmd.log"
     ;;
   *)
     echo "usage: slurm-cluster.sh start|stop DIR" >&2

@@ -35,8 +35,12 @@ TEST_CASE("on two MPI processes the default cell's mixed modulus and periodic te
                                           "output.pictures=none"});
       INFO(r.err);
       REQUIRE(r.exit_code == 0);
-      effective[processes - 1] = report_of(out)["effective"];
+      const Json report = report_of(out);
+      effective[processes - 1] = report["effective"];
       CHECK(effective[processes - 1]["processes"].get<int>() == processes);
+      // The solve's memory counts the solver's processes with grainmesh's own: more than
+      // grainmesh alone needed to export the case.
+      CHECK(report["memory_mib"]["solve"].get<double>() > report["memory_mib"]["export"].get<double>() + 20.0);
     }
     // Different GAMG paths stop at different corrections: equal to the stress's own
     // settling tolerance (1e-6; measured: 8e-8 mixed, at most 6e-8 periodic).
@@ -60,20 +64,30 @@ TEST_CASE("on two MPI processes the default cell's mixed modulus and periodic te
   CHECK(test::read_file(parallel_case / "system/decomposeParDict").find("preservePatches") != std::string::npos);
 }
 
-TEST_CASE("a failing decomposePar is named with its log, and no answer is reported", "[cli][mpi]") {
+TEST_CASE("a failing decomposePar or mpirun is named with its log, and no answer is reported", "[cli][mpi]") {
   test::ScratchDir dir("mpi-fail");
-  fs::create_directories(dir / "bin");
-  std::ofstream(dir / "bin/decomposePar") << "#!/bin/sh\necho 'FOAM FATAL ERROR: no decomposition'\nexit 3\n";
-  fs::permissions(dir / "bin/decomposePar", fs::perms::owner_all);
+  // A stand-in for `program` (first on PATH) that says `says` and exits 3; the case's
+  // log of `logged` (the step whose log holds what it said) is named in one line.
+  auto refused_with = [&](const std::string& program, const std::string& says, const std::string& logged) {
+    const fs::path bin = dir / ("bin-" + program);
+    fs::create_directories(bin);
+    std::ofstream(bin / program) << "#!/bin/sh\necho '" << says << "'\nexit 3\n";
+    fs::permissions(bin / program, fs::perms::owner_all);
+    const fs::path out = dir / ("out-" + program);
+    const auto r = test::run_grainmesh({"run", "-o", out.string(), "--solve", "--set", "solve.processes=2", "--set",
+                                        "output.pictures=none"},
+                                       {}, "PATH=" + bin.string() + ":$PATH");
+    INFO(program);
+    CHECK(r.exit_code == 6);
+    CHECK(r.err == "grainmesh: error: --solve: " + program + " failed (exit code 3); see " + out.string() +
+                       ".failed/case/log." + logged + "\n");
+    CHECK_FALSE(fs::exists(out));
+    CHECK(test::read_file(out.string() + ".failed/case/log." + logged).find(says) != std::string::npos);
+    CHECK_FALSE(report_of(out.string() + ".failed").contains("effective"));
+  };
+  refused_with("decomposePar", "FOAM FATAL ERROR: no decomposition", "decomposePar");
+  refused_with("mpirun", "mpirun was unable to launch the specified application", "solidDisplacementFoam");
   const fs::path out = dir / "out";
-  const auto r = test::run_grainmesh({"run", "-o", out.string(), "--solve", "--set", "solve.processes=2"}, {},
-                                     "PATH=" + (dir / "bin").string() + ":$PATH");
-  CHECK(r.exit_code == 6);
-  CHECK(r.err == "grainmesh: error: --solve: decomposePar failed (exit code 3); see " + out.string() +
-                     ".failed/case/log.decomposePar\n");
-  CHECK_FALSE(fs::exists(out));
-  CHECK(test::read_file(out.string() + ".failed/case/log.decomposePar").find("no decomposition") != std::string::npos);
-  CHECK_FALSE(report_of(out.string() + ".failed").contains("effective"));
   // A count that is not one refused before any work.
   const auto bad = test::run_grainmesh({"run", "-o", out.string(), "--set", "solve.processes=0"});
   CHECK(bad.exit_code == 2);

@@ -4,7 +4,9 @@
 #   1. two shards of a solved sweep give the same runs, byte for byte, and the same
 #      summary.csv as the sweep run locally;
 #   2. a task cancelled half way (scancel) and the array submitted again complete the
-#      sweep, and no run finished before the cancel is run again.
+#      sweep, and no run finished before the cancel is run again;
+#   0. first, a slurmctld that fails to start (a stand-in, as one whose port is taken) is
+#      one line naming it and its log, exit 1, and no slurm.conf left to use.
 # The cluster is stopped and its files removed at the end, also on failure. Skipped
 # (exit 77) only where slurm-wlm is not installed.
 #   tests/slurm/test_slurm_sweep.sh SOURCE_DIR GRAINMESH
@@ -27,6 +29,21 @@ fail() {
   echo "FAIL: $*" >&2
   exit 1
 }
+# 0. A slurmctld that cannot start.
+mkdir "$work/bin"
+printf '#!/bin/sh\necho "slurmctld: fatal: Unable to bind listen port: Address already in use" >&2\nexit 1\n' \
+  > "$work/bin/slurmctld"
+chmod +x "$work/bin/slurmctld"
+status=0
+PATH="$work/bin:$PATH" "$source_dir/scripts/slurm-cluster.sh" start "$work/broken" 2> "$work/broken.err" || status=$?
+broken=$(cd "$work/broken" && pwd)
+[[ $status -eq 1 ]] || fail "a failed slurmctld start exited $status, not 1"
+[[ "$(cat "$work/broken.err")" == "slurm-cluster: slurmctld did not start (exit code 1); see $broken/slurmctld.log" ]] ||
+  fail "a failed slurmctld start said: $(cat "$work/broken.err")"
+grep -q "Address already in use" "$broken/slurmctld.log" || fail "slurmctld's own words are not in its log"
+[[ ! -e "$broken/slurm.conf" ]] || fail "a failed start left a slurm.conf to use"
+echo "a slurmctld that cannot start: one line naming it and its log, exit 1"
+
 "$source_dir/scripts/slurm-cluster.sh" start "$work/cluster"
 export SLURM_CONF="$work/cluster/slurm.conf"
 cd "$work"
