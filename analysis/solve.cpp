@@ -1,5 +1,6 @@
 #include "analysis/solve.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 
@@ -26,16 +27,20 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   const std::vector<std::string> environment = foam_environment();
   const std::vector<std::string> command = solver_command(o);
   const bool parallel = o.processes > 1;
-  // A utility around the parallel solve (decomposePar, reconstructPar), its log beside.
+  // A utility around the parallel solve (decomposePar, reconstructPar), its log beside;
+  // its wall-clock seconds.
   auto utility = [&](const std::vector<std::string>& argv) {
+    const auto started = std::chrono::steady_clock::now();
     const std::filesystem::path utility_log = case_dir / ("log." + argv.front());
     const int status = run_child(argv, case_dir, utility_log, deadline, argv.front(), environment);
     if (status != 0)
       throw SolveError(who + ": " + argv.front() +
                        " failed (exit code " + std::to_string(status) + "); see " +
                        ((case_shown_as.empty() ? case_dir : case_shown_as) / utility_log.filename()).string());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
-  if (parallel) utility({"decomposePar", "-force"});
+  SolveRun r;
+  if (parallel) r.decompose_seconds = utility({"decomposePar", "-force"});
 
   // A thousand times the displacement the load can give is divergence, not an answer.
   const double load_scale = std::max(load_strain(m.cell, m.phases, o), thermal_strain(m.phases, o)) *
@@ -52,11 +57,14 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   // One run of the solver, followed: killed as soon as it stalls, diverges or will not
   // stop on its own.
   auto solve = [&](SolveMonitor& monitor) {
-    return run_child(command, case_dir, log, deadline, "solidDisplacementFoam", environment,
-                     [&](std::string_view text) {
-                       const SolveMonitor::State s = monitor.feed(text);
-                       return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
-                     });
+    const auto started = std::chrono::steady_clock::now();
+    const int status = run_child(command, case_dir, log, deadline, "solidDisplacementFoam", environment,
+                                 [&](std::string_view text) {
+                                   const SolveMonitor::State s = monitor.feed(text);
+                                   return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
+                                 });
+    r.solver_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return status;
   };
   // Runs until converged. Where the case stops itself on its residual before the
   // effective stress has settled (a shear load on one material: the stress converges
@@ -114,8 +122,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
                      to_text(monitor.stress_change(), 3) + "; tolerances " + to_text(kSolverTolerance) + " and " +
                      to_text(kStressTolerance) + ")" + advice + see);
 
-  if (parallel) utility({"reconstructPar", "-latestTime"});
-  SolveRun r;
+  if (parallel) r.reconstruct_seconds = utility({"reconstructPar", "-latestTime"});
   r.corrections = total;
   r.final_residual = monitor.measure();
   r.component_residuals = monitor.residuals();

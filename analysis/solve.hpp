@@ -17,6 +17,9 @@ struct SolveRun {
   double stress_change = 0.0;                   // the largest relative change of the effective stress
                                                 // over the last kStressWindow corrections
   std::filesystem::path result_dir;             // the time directory holding the fields
+  // Wall-clock seconds of OpenFOAM's steps: the solver's runs, and around them on several
+  // processes decomposePar and reconstructPar (zero on one).
+  double solver_seconds = 0.0, decompose_seconds = 0.0, reconstruct_seconds = 0.0;
 };
 
 // Runs solidDisplacementFoam in `case_dir` (written by write_foam_case for `m` with `o`),

@@ -174,7 +174,11 @@ Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
           {"final_residual", r.final_residual},
           {"stress_change", r.stress_change},
           {"component_residuals", r.component_residuals},
-          {"result", std::filesystem::relative(r.result_dir, dir).string()}};
+          {"result", std::filesystem::relative(r.result_dir, dir).string()},
+          {"seconds",
+           {{"decomposePar", r.decompose_seconds},
+            {"solidDisplacementFoam", r.solver_seconds},
+            {"reconstructPar", r.reconstruct_seconds}}}};
 }
 
 // A bound broken by `value`, as a warning (nothing when it holds, to rounding).

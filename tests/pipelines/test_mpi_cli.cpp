@@ -41,6 +41,12 @@ TEST_CASE("on two MPI processes the default cell's mixed modulus and periodic te
       // The solve's memory counts the solver's processes with grainmesh's own: more than
       // grainmesh alone needed to export the case.
       CHECK(report["memory_mib"]["solve"].get<double>() > report["memory_mib"]["export"].get<double>() + 20.0);
+      // OpenFOAM's steps timed: decomposePar and reconstructPar only on several processes.
+      const Json steps = boundary == std::string("mixed") ? effective[processes - 1]["seconds"]
+                                                          : effective[processes - 1]["load_cases"][0]["seconds"];
+      CHECK(steps["solidDisplacementFoam"].get<double>() > 0.0);
+      CHECK((steps["decomposePar"].get<double>() > 0.0) == (processes > 1));
+      CHECK((steps["reconstructPar"].get<double>() > 0.0) == (processes > 1));
     }
     // Different GAMG paths stop at different corrections: equal to the stress's own
     // settling tolerance (1e-6; measured: 8e-8 mixed, at most 6e-8 periodic).
