@@ -79,7 +79,14 @@ int processes_mentioning(const std::string& text) {
 // A report without the figures that differ between identical runs (timings, memory).
 nlohmann::json stable(nlohmann::json report) {
   report.erase("seconds");
+  report.erase("memory_mib");
   report.erase("peak_memory_mib");
+  if (report.contains("effective")) {
+    nlohmann::json& effective = report["effective"];
+    effective.erase("seconds");  // OpenFOAM's steps
+    if (effective.contains("load_cases"))
+      for (nlohmann::json& c : effective["load_cases"]) c.erase("seconds");
+  }
   return report;
 }
 
