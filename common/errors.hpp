@@ -4,8 +4,12 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace grainmesh {
+
+// What the line of an error begins with, on stderr (a sweep's runs: in their logs).
+inline constexpr std::string_view kErrorPrefix = "grainmesh: error: ";
 
 struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;

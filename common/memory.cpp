@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -36,22 +38,25 @@ void reset_own_peak() { std::ofstream("/proc/self/clear_refs") << "5"; }
 double tree_resident_mib(int pid) {
   // Every process's parent and resident pages, from /proc/PID/stat (after the name's
   // closing parenthesis: state, ppid, ... with rss the 22nd field).
+  // Processes come and go while /proc is read: one gone is skipped, and an error ends
+  // the reading with what was read (never an exception: this runs on a sampling thread).
   std::multimap<int, int> children;
   std::map<int, long> pages;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc", std::filesystem::directory_options::skip_permission_denied)) {
-    const std::string name = entry.path().filename().string();
+  std::error_code error;
+  for (std::filesystem::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
     if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream in(entry.path() / "stat");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ifstream in(it->path() / "stat");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const auto close = text.rfind(')');
     if (close == std::string::npos) continue;  // gone meanwhile
-    std::istringstream fields(text.substr(close + 2));
-    std::vector<std::string> f;
-    for (std::string s; fields >> s && f.size() < 22;) f.push_back(s);
+    std::istringstream fields(text.substr(close + 1));
+    std::vector<long> f;  // from the state on; the state itself reads as 0
+    for (std::string field; fields >> field && f.size() < 22;) f.push_back(std::strtol(field.c_str(), nullptr, 10));
     if (f.size() < 22) continue;
-    const int id = std::stoi(name);
-    children.emplace(std::stoi(f[1]), id);
-    pages[id] = std::stol(f[21]);
+    const int id = static_cast<int>(std::strtol(name.c_str(), nullptr, 10));
+    children.emplace(static_cast<int>(f[1]), id);
+    pages[id] = f[21];
   }
   long total = 0;
   std::vector<int> stack{pid};
@@ -96,7 +101,12 @@ struct StageMemory::Sampler {
 
 StageMemory::StageMemory(bool with_children) {
   reset_own_peak();
-  if (with_children) sampler_ = std::make_unique<Sampler>();
+  if (!with_children) return;
+  try {
+    sampler_ = std::make_unique<Sampler>();
+  } catch (const std::system_error&) {
+    // No thread to be had: the stage's figure is this process's alone.
+  }
 }
 
 StageMemory::~StageMemory() {

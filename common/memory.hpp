@@ -11,7 +11,8 @@ namespace grainmesh {
 class StageMemory {
  public:
   // Starts measuring a stage; with `with_children`, the processes this one starts (and
-  // theirs) are summed with it while the stage lasts.
+  // theirs) are summed with it while the stage lasts (by a thread sampling /proc; where
+  // no thread can be started, this process's peak alone).
   explicit StageMemory(bool with_children = false);
   ~StageMemory();
   StageMemory(const StageMemory&) = delete;

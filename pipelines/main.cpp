@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const Error& e) {
-    std::fprintf(stderr, "grainmesh: error: %s\n", e.what());
+    std::fprintf(stderr, "%s%s\n", kErrorPrefix.data(), e.what());
     return exit_code_of(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "grainmesh: internal error: %s\n", e.what());

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -30,6 +31,19 @@ std::string trimmed(std::string s) {
   s.erase(0, s.find_first_not_of(" \t"));
   s.erase(s.find_last_not_of(" \t") + 1);
   return s;
+}
+
+// Why a run ended as it did (its wait status): its log's error line, or its last line,
+// or the signal that ended it.
+std::string run_failure(const std::filesystem::path& log, int status) {
+  std::ifstream in(log);
+  std::string last;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(kErrorPrefix, 0) == 0) return line.substr(kErrorPrefix.size());
+    if (!trimmed(line).empty()) last = trimmed(line);
+  }
+  if (WIFSIGNALED(status)) return "ended by signal " + std::to_string(WTERMSIG(status)) + (last.empty() ? "" : " after \"" + last + "\"");
+  return last.empty() ? "exit code " + std::to_string(WEXITSTATUS(status)) : last;
 }
 
 // A seed for (base, point, realisation) that does not depend on which shard runs it
@@ -234,6 +248,7 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
   const auto start = std::chrono::steady_clock::now();
   std::size_t done = 0, next = 0;
   std::map<std::string, int> failed;  // run -> its exit code
+  std::string first_failed, first_failure;  // the first run to fail, and what it said or how it ended
   std::map<pid_t, const Run*> running;
   auto progress = [&] {
     if (!terminal) return;
@@ -260,7 +275,7 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
         try {
           run_run_command(Config::from_text(base_text, c.source(), r->overrides), dir / r->name, o.solve, true);
         } catch (const std::exception& e) {
-          std::printf("grainmesh: error: %s\n", e.what());
+          std::printf("%s%s\n", kErrorPrefix.data(), e.what());
           code = exit_code_of(e);
         }
         std::fflush(stdout);
@@ -272,8 +287,14 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
     int status = 0;
     const pid_t pid = wait(&status);
     if (pid < 0) break;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-      failed[running[pid]->name] = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+      const std::string& name = running[pid]->name;
+      failed[name] = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
+      if (first_failed.empty()) {
+        first_failed = name;
+        first_failure = run_failure(dir / "logs" / (name + ".log"), status);
+      }
+    }
     running.erase(pid);
     ++done;
   }
@@ -284,14 +305,16 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
               points, realisations, runs.size(), o.shard, o.shards, todo.size(), changed,
               (runs.size() + o.shards - o.shard) / o.shards - todo.size(), dir.string().c_str());
   if (!failed.empty()) {
+    // The runs that failed, and what the first to fail said (with its exit code).
     std::string names;
     for (const auto& [name, code] : failed)
       if (names.size() < 80) names += (names.empty() ? "" : ", ") + name;
     if (names.size() >= 80) names += ", ...";
-    // The exit code of the first failed run: its log says more.
-    throw_error(failed.begin()->second, "sweep: " + std::to_string(failed.size()) + " of " +
-                                             std::to_string(todo.size()) + " runs failed (" + names + "); their logs are in " +
-                                             (dir / "logs").string() + " (run the sweep again to retry them)");
+    const std::string why = failed.size() == 1 ? names + ": " + first_failure
+                                               : names + "; " + first_failed + " first: " + first_failure;
+    throw_error(failed.at(first_failed), "sweep: " + std::to_string(failed.size()) + " of " +
+                                             std::to_string(todo.size()) + " runs failed (" + why +
+                                             "); their logs are in " + (dir / "logs").string() + " (run the sweep again to retry them)");
   }
 }
 

@@ -97,6 +97,23 @@ TEST_CASE("sweep shards together run every run exactly once", "[cli][sweep]") {
   CHECK(ran(rest.out) == 0);
 }
 
+TEST_CASE("a sweep whose runs fail names them and what the first to fail said", "[cli][sweep]") {
+  test::ScratchDir dir("sweep-failed");
+  // 2 grains leave the 20 % matrix without one: both realisations are refused.
+  write_sweep(dir / "sweep.ini", "tessellation.grains = 30, 2\nrealisations = 2\n");
+  std::ofstream(dir / "sweep.ini", std::ios::app) << "[output]\npictures = none\n";
+  const std::string out = (dir / "out").string();
+  const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "1"});
+  CHECK(r.exit_code == 2);  // the first failed run's
+  CHECK(r.err == "grainmesh: error: sweep: 2 of 4 runs failed (p001-r00, p001-r01; p001-r00 first: " +
+                     (dir / "sweep.ini").string() +
+                     ": phase.matrix.fraction: a fraction of 0.2 gives the phase none of the 2 grains: use at least 5 "
+                     "grains (tessellation.grains), about 50 for fractions within 1 %); their logs are in " + out +
+                     "/logs (run the sweep again to retry them)\n");
+  CHECK(fs::exists(dir / "out/p000-r01/report.json"));
+  CHECK_FALSE(fs::exists(dir / "out/p001-r00"));
+}
+
 TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   test::ScratchDir dir("sweep-bad");
   write_sweep(dir / "unknown.ini", "tessellation.grainz = 10, 20\n");
