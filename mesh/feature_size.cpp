@@ -118,7 +118,7 @@ struct CappedNode final : SizeFunction::Node {
 // Edges (with their periodic images) in a uniform grid, for "nearest edge within R".
 class EdgeGrid {
  public:
-  EdgeGrid(const Tessellation& t, double cell, double reach) : t_(t), cell_(cell) {
+  EdgeGrid(const Tessellation& t, double cell, double reach) : cell_(cell) {
     lo_ = {-reach, -reach};
     nx_ = std::max(1, static_cast<int>(std::ceil((t.width + 2 * reach) / cell)));
     ny_ = std::max(1, static_cast<int>(std::ceil((t.height + 2 * reach) / cell)));
@@ -164,7 +164,6 @@ class EdgeGrid {
   };
   int bin_x(double x) const { return static_cast<int>(std::floor((x - lo_.x) / cell_)); }
   int bin_y(double y) const { return static_cast<int>(std::floor((y - lo_.y) / cell_)); }
-  const Tessellation& t_;
   double cell_;
   Vec2 lo_;
   int nx_ = 1, ny_ = 1;

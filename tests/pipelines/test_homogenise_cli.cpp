@@ -229,7 +229,12 @@ TEST_CASE("grainmesh converge: the default cell's mixed modulus at the default d
           "Richardson limit, seeds 1, 2 and 3",
           "[homogenise][converge][cli]") {
   test::ScratchDir dir("converge");
+  // (The sanitizer build checks the study's code on seed 1; the release build the three.)
+#ifdef GRAINMESH_SANITIZED
+  for (const char* seed : {"1"}) {
+#else
   for (const char* seed : {"1", "2", "3"}) {
+#endif
     INFO("seed " << seed);
     const fs::path out = dir / (std::string("seed") + seed);
     const auto r = test::run_grainmesh({"converge", "-o", out.string(), "--levels", "4", "--set",

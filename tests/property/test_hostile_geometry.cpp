@@ -115,7 +115,11 @@ TEST_CASE("hostile: phase fractions near 0 and near the largest reachable mesh o
   require_meshes_within_bounds(cell("grains = 100\nseed = 5", "triangles_per_grain = 30", "0.999"));
   const std::string binder = "grains = 30\nseed = 6\nphase_mode = binder\nmatrix_phase = b";
   require_meshes_within_bounds(cell(binder, "triangles_per_grain = 30", "0.99"));
+  // A 1 % binder's layers are meshed finely: a big mesh, ten times slower in the sanitizer
+  // build, where the 5 % binder test covers thin layers.
+#ifndef GRAINMESH_SANITIZED
   require_meshes_within_bounds(cell(binder, "triangles_per_grain = 30", "0.01"));
+#endif
   // Too thin a binder to mesh well: refused, with the fraction that would do.
   require_refused(cell(binder, "", "0.001"), "phase.b.fraction", "raise it to at least");
 }
