@@ -1,5 +1,6 @@
 #include "common/memory.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,8 +47,15 @@ double tree_resident_mib(int pid) {
   for (std::filesystem::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
     if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream in(it->path() / "stat");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // read(2), not a stream: a process that ends while it is read fails the read (ESRCH),
+    // which a stream would throw.
+    const int fd = open((it->path() / "stat").c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) continue;
+    char buf[1024];
+    const ssize_t n = read(fd, buf, sizeof buf - 1);
+    close(fd);
+    if (n <= 0) continue;
+    const std::string text(buf, static_cast<std::size_t>(n));
     const auto close = text.rfind(')');
     if (close == std::string::npos) continue;  // gone meanwhile
     std::istringstream fields(text.substr(close + 1));
@@ -81,7 +89,12 @@ struct StageMemory::Sampler {
       std::unique_lock lock(mutex);
       while (!stop) {
         lock.unlock();
-        const double now = tree_resident_mib(static_cast<int>(getpid()));
+        double now = 0.0;
+        try {
+          now = tree_resident_mib(static_cast<int>(getpid()));
+        } catch (...) {
+          // A sample lost (no memory to read /proc with): the others stand.
+        }
         lock.lock();
         peak = std::max(peak, now);
         wake.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop; });
