@@ -23,21 +23,24 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
   // Errors name the field, and the load case when there are several.
   const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
   const std::string who = load_case.empty() ? std::string("--solve") : "load case " + load_case;
-  const std::string see = "; see " + ((case_shown_as.empty() ? case_dir : case_shown_as) / log.filename()).string();
+  const std::filesystem::path shown = case_shown_as.empty() ? case_dir : case_shown_as;  // in messages
+  const std::string see = "; see " + (shown / log.filename()).string();
   const std::vector<std::string> environment = foam_environment();
   const std::vector<std::string> command = solver_command(o);
   const bool parallel = o.processes > 1;
+  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   // A utility around the parallel solve (decomposePar, reconstructPar), its log beside;
   // its wall-clock seconds.
   auto utility = [&](const std::vector<std::string>& argv) {
     const auto started = std::chrono::steady_clock::now();
-    const std::filesystem::path utility_log = case_dir / ("log." + argv.front());
-    const int status = run_child(argv, case_dir, utility_log, deadline, argv.front(), environment);
+    const std::string utility_log = "log." + argv.front();
+    const int status = run_child(argv, case_dir, case_dir / utility_log, deadline, argv.front(), environment);
     if (status != 0)
-      throw SolveError(who + ": " + argv.front() +
-                       " failed (exit code " + std::to_string(status) + "); see " +
-                       ((case_shown_as.empty() ? case_dir : case_shown_as) / utility_log.filename()).string());
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      throw SolveError(who + ": " + argv.front() + " failed (exit code " + std::to_string(status) + "); see " +
+                       (shown / utility_log).string());
+    return seconds_since(started);
   };
   SolveRun r;
   if (parallel) r.decompose_seconds = utility({"decomposePar", "-force"});
@@ -63,7 +66,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
                                    const SolveMonitor::State s = monitor.feed(text);
                                    return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
                                  });
-    r.solver_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    r.solver_seconds += seconds_since(started);
     return status;
   };
   // Runs until converged. Where the case stops itself on its residual before the

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -469,11 +470,13 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   auto clock = std::chrono::steady_clock::now();
   // Each stage's peak resident memory (the solve's with the solver's processes).
   Json memory = Json::object();
-  auto memory_meter = std::make_unique<StageMemory>();
+  std::unique_ptr<StageMemory> memory_meter;
+  auto begin_memory = [&](bool with_children = false) { memory_meter = std::make_unique<StageMemory>(with_children); };
   auto end_memory = [&](const char* name) {
     memory[name] = memory_meter->peak_mib();
     memory_meter.reset();
   };
+  begin_memory();
   stage("tessellating");
   const Tessellation t = run_tessellate_job(tess_job, tess_config);
   check_phases_have_grains(t, tess_job, tess_config);
@@ -483,7 +486,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   for (const std::string& w : tessellation_warnings(t)) warnings.add(w);
 
   clock = std::chrono::steady_clock::now();
-  memory_meter = std::make_unique<StageMemory>();
+  begin_memory();
   MeshJob mesh_job = read_mesh_job(mesh_config, t);
   mesh_job.options.distmesh.deadline = tess_job.options.deadline;  // one guard for the whole run
   stage("meshing");
@@ -510,7 +513,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
 
   end_memory("mesh");
   clock = std::chrono::steady_clock::now();
-  memory_meter = std::make_unique<StageMemory>();
+  begin_memory();
   stage("exporting");
   const ExportMesh e = grain_export_mesh(t, m);
   if (!c.has("export.format") && m.mesh.triangles.size() > kBinaryCaseAboveCells) foam.binary = true;
@@ -564,7 +567,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   double solve_seconds = 0.0;
   if (solve) {
     clock = std::chrono::steady_clock::now();
-    memory_meter = std::make_unique<StageMemory>(true);
+    begin_memory(true);
     stage("solving with solidDisplacementFoam");
     std::vector<std::string> solve_warnings;
     try {
