@@ -12,27 +12,18 @@
 #include <unistd.h>
 
 #include "common/allocator.hpp"
+#include "common/cell_side.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 
 namespace grainmesh {
 namespace {
 
-enum Side { kLeft, kRight, kBottom, kTop, kOther };
-
 // The side of the cell a boundary edge lies on; within 1e-9 of the cell's size, so that
 // meshes whose sides were projected (domain meshes) count too.
-Side side_of(const Box& cell, Vec2 a, Vec2 b) {
-  const double tol = 1e-9 * std::max(cell.width(), cell.height());
-  auto near = [tol](double u, double v) { return std::abs(u - v) <= tol; };
-  if (near(a.x, cell.lo.x) && near(b.x, cell.lo.x)) return kLeft;
-  if (near(a.x, cell.hi.x) && near(b.x, cell.hi.x)) return kRight;
-  if (near(a.y, cell.lo.y) && near(b.y, cell.lo.y)) return kBottom;
-  if (near(a.y, cell.hi.y) && near(b.y, cell.hi.y)) return kTop;
-  return kOther;
+CellSide side_of(const Box& cell, Vec2 a, Vec2 b) {
+  return side_along(cell, a, b, 1e-9 * std::max(cell.width(), cell.height()));
 }
-
-constexpr std::array<const char*, 4> kSideName{"left", "right", "bottom", "top"};
 
 // A side face: the edge a -> b runs counter-clockwise round its owner.
 struct SideFace {
@@ -135,47 +126,47 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   const bool cyclic = o.cyclic;
   // The load needs its patches: right carries it, left holds x, bottom (and top, unless
   // uniaxial) hold y. A side without mesh edges leaves the load or a rigid motion free.
-  for (int s : {kRight, kLeft, kBottom, kTop}) {
+  for (CellSide s : {kRight, kLeft, kBottom, kTop}) {
     if (!sides[s].empty() || (s == kTop && o.uniaxial)) continue;
-    const double at = s == kLeft ? m.cell.lo.x : s == kRight ? m.cell.hi.x : s == kBottom ? m.cell.lo.y : m.cell.hi.y;
-    throw ConfigError(std::string("export: patch '") + kSideName[s] + "' is empty: no mesh edge lies on the cell's " +
-                      kSideName[s] + " side (" + (s < 2 ? "x = " : "y = ") + to_text(at) + "), so " +
+    throw ConfigError(std::string("export: patch '") + side_name(s) + "' is empty: no mesh edge lies on the cell's " +
+                      side_name(s) + " side (" + (is_vertical(s) ? "x = " : "y = ") + to_text(side_coordinate(m.cell, s)) + "), so " +
                       (s == kRight ? "the load has nothing to act on" : "nothing holds the cell there") +
                       "; the mesh's bounding box must have straight mesh edges on all four sides");
   }
-  auto along = [&](const SideFace& f, int side) {
+  auto along = [&](const SideFace& f, CellSide side) {
     const Vec2 mid = 0.5 * (mesh.points[f.a] + mesh.points[f.b]);
-    return side < 2 ? mid.y : mid.x;
+    return is_vertical(side) ? mid.y : mid.x;
   };
-  for (int s = 0; s < 4; ++s)
+  for (CellSide s : {kLeft, kRight, kBottom, kTop})
     std::sort(sides[s].begin(), sides[s].end(), [&](const SideFace& x, const SideFace& y) {
       return cyclic ? along(x, s) < along(y, s) : x.owner < y.owner;
     });
   if (cyclic) {
-    if (!sides[kOther].empty())
+    if (!sides[kNoSide].empty())
       throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");
-    for (int s : {kLeft, kBottom}) {
+    for (CellSide s : {kLeft, kBottom}) {
+      const CellSide partner = static_cast<CellSide>(s ^ 1);
       const auto& low = sides[s];
-      const auto& high = sides[s + 1];
+      const auto& high = sides[partner];
       const double tol = 1e-9 * std::max(m.cell.width(), m.cell.height());
       bool match = low.size() == high.size();
       for (std::size_t k = 0; match && k < low.size(); ++k) match = std::abs(along(low[k], s) - along(high[k], s)) <= tol;
       if (!match)
-        throw GeometryError(std::string("export: the faces of ") + kSideName[s] + " and " + kSideName[s + 1] +
+        throw GeometryError(std::string("export: the faces of ") + side_name(s) + " and " + side_name(partner) +
                             " do not pair (is the mesh periodic?)");
     }
   }
   const bool top_free = o.uniaxial;
-  for (int s = 0; s < 5; ++s) {
-    if (s == kOther && sides[s].empty()) continue;
+  for (CellSide s : {kLeft, kRight, kBottom, kTop, kNoSide}) {
+    if (s == kNoSide && sides[s].empty()) continue;
     PolyMesh::Patch p;
-    p.name = s == kOther ? "boundary" : kSideName[s];
+    p.name = side_name(s);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
-    if (cyclic && s < 4) {
+    if (cyclic && s != kNoSide) {
       p.type = "cyclic";
-      p.neighbour_patch = kSideName[s ^ 1];
-      const Vec2 shift = s < 2 ? Vec2{m.cell.width(), 0.0} : Vec2{0.0, m.cell.height()};
+      p.neighbour_patch = side_name(static_cast<CellSide>(s ^ 1));
+      const Vec2 shift = is_vertical(s) ? Vec2{m.cell.width(), 0.0} : Vec2{0.0, m.cell.height()};
       p.separation = (s % 2 == 0) ? shift : -shift;
     } else if (s == kLeft || s == kBottom || (s == kTop && !top_free)) {
       p.type = "symmetryPlane";

@@ -14,6 +14,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/point_key.hpp"
+#include "common/random.hpp"
 #include "mesh/polygon.hpp"
 
 namespace grainmesh {
@@ -35,15 +36,7 @@ std::unordered_map<std::int64_t, int> edge_index(const Tessellation& t) {
   return index;
 }
 
-// A stream per region that does not depend on which thread meshes it (SplitMix64).
-std::uint64_t region_stream(std::uint64_t seed, std::uint64_t r) {
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + r + 1;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-int edge_side(const Tessellation& t, const TessEdge& e) { return cell_side(t, t.vertices[e.v0], t.vertices[e.v1]); }
+CellSide edge_side(const Tessellation& t, const TessEdge& e) { return cell_side(t, t.vertices[e.v0], t.vertices[e.v1]); }
 
 struct RegionResult {
   std::vector<Vec2> interior;                  // new points, in the engine's order
@@ -162,9 +155,9 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
     for (const auto& [l, r] : t.partners_x) to_left[r] = l;
     for (const auto& [b, u] : t.partners_y) to_bottom[u] = b;
     for (std::size_t e = 0; e < ne; ++e) {
-      const int side = edge_side(t, t.edges[e]);
-      if (side != 1 && side != 3) continue;
-      const auto& to_low = side == 1 ? to_left : to_bottom;
+      const CellSide side = edge_side(t, t.edges[e]);
+      if (side != kRight && side != kTop) continue;
+      const auto& to_low = side == kRight ? to_left : to_bottom;
       const auto a = to_low.find(t.edges[e].v0), b = to_low.find(t.edges[e].v1);
       const auto it = (a != to_low.end() && b != to_low.end()) ? index.find(edge_key(a->second, b->second)) : index.end();
       if (it == index.end()) throw GeometryError("mesh: a side edge of the periodic cell has no partner edge");
@@ -183,7 +176,7 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
   for (std::size_t e = 0; e < ne; ++e) {
     if (partner[e] < 0) continue;
     const TessEdge& low = t.edges[partner[e]];
-    const bool right = edge_side(t, t.edges[e]) == 1;
+    const bool right = edge_side(t, t.edges[e]) == kRight;
     std::vector<Vec2> s = seeds[partner[e]];
     for (Vec2& p : s) (right ? p.x : p.y) = right ? t.width : t.height;
     // Same direction when v0 of this edge is the partner of low.v0.
@@ -258,7 +251,7 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     // Fixed points come back with their bits: that is how the engine's output finds them.
     PointMap<int> fixed_id;
     for (std::size_t k = 0; k < pb.fixed.size(); ++k) fixed_id.emplace(point_key(pb.fixed[k]), ids[k]);
-    Rng rng(region_stream(o.seed, static_cast<std::uint64_t>(r)));
+    Rng rng(derived_seed(o.seed, static_cast<std::uint64_t>(r)));  // whichever thread meshes it
     const DistMeshResult res = distmesh(pb, o.distmesh, rng);
     RegionResult& rr = results[r];
     std::vector<int> local(res.mesh.points.size());
@@ -362,7 +355,7 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
     if (e.right >= 0) continue;
     ++c.boundary_edges;
     const Vec2 a = mesh.points[e.a], b = mesh.points[e.b];
-    if (cell_side(t, a, b) < 0)
+    if (cell_side(t, a, b) == kNoSide)
       throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one triangle but lies inside the cell");
   }
   // Each triangle inside the region of its grain: its centroid strictly inside one of the

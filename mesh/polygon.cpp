@@ -8,45 +8,9 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/predicates.hpp"
+#include "common/ring.hpp"
 
 namespace grainmesh {
-namespace {
-
-// True when q, known to be collinear with segment ab, lies on the closed segment.
-bool on_collinear_segment(Vec2 a, Vec2 b, Vec2 q) {
-  return std::min(a.x, b.x) <= q.x && q.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= q.y &&
-         q.y <= std::max(a.y, b.y);
-}
-
-// Whether closed segments pq and rs share at least one point. Exact.
-bool segments_touch(Vec2 p, Vec2 q, Vec2 r, Vec2 s) {
-  const int o1 = orient2d(p, q, r), o2 = orient2d(p, q, s);
-  const int o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && on_collinear_segment(p, q, r)) || (o2 == 0 && on_collinear_segment(p, q, s)) ||
-         (o3 == 0 && on_collinear_segment(r, s, p)) || (o4 == 0 && on_collinear_segment(r, s, q));
-}
-
-// Crossing-number parity of p against one ring; exact (p on an edge may go either way).
-bool crosses_odd(const std::vector<Vec2>& ring, Vec2 p) {
-  bool odd = false;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % n];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const int o = orient2d(a, b, p);
-      if (b.y > a.y ? o > 0 : o < 0) odd = !odd;
-    }
-  }
-  return odd;
-}
-
-double ring_signed_area(const std::vector<Vec2>& ring) {
-  double s = 0.0;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) s += cross(ring[i], ring[(i + 1) % n]);
-  return 0.5 * s;
-}
-
-}  // namespace
 
 void validate_polygon(const PolygonRings& rings) {
   if (rings.empty()) throw GeometryError("polygon: no vertices");
@@ -103,11 +67,11 @@ void validate_polygon(const PolygonRings& rings) {
   // With no edges touching, one vertex decides where a whole hole lies.
   for (std::size_t r = 1; r < rings.size(); ++r) {
     const Vec2 v = rings[r][0];
-    if (!crosses_odd(rings[0], v))
+    if (!inside_ring(rings[0], v))
       throw GeometryError("polygon hole " + std::to_string(r) + " at " + to_text(v, 9) +
                           " is not inside the outer ring");
     for (std::size_t s = 1; s < rings.size(); ++s)
-      if (s != r && crosses_odd(rings[s], v))
+      if (s != r && inside_ring(rings[s], v))
         throw GeometryError("polygon hole " + std::to_string(r) + " lies inside hole " +
                             std::to_string(s));
   }
@@ -115,8 +79,8 @@ void validate_polygon(const PolygonRings& rings) {
 
 double polygon_area(const PolygonRings& rings) {
   if (rings.empty()) return 0.0;
-  double area = std::abs(ring_signed_area(rings[0]));
-  for (std::size_t r = 1; r < rings.size(); ++r) area -= std::abs(ring_signed_area(rings[r]));
+  double area = std::abs(polygon_area(rings[0]));
+  for (std::size_t r = 1; r < rings.size(); ++r) area -= std::abs(polygon_area(rings[r]));
   return area;
 }
 

@@ -20,6 +20,7 @@
 #include "export/picture.hpp"
 #include "pipelines/output_dir.hpp"
 #include "common/process.hpp"
+#include "common/random.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_command.hpp"
 
@@ -44,15 +45,6 @@ std::string run_failure(const std::filesystem::path& log, int status) {
   }
   if (WIFSIGNALED(status)) return "ended by signal " + std::to_string(WTERMSIG(status)) + (last.empty() ? "" : " after \"" + last + "\"");
   return last.empty() ? "exit code " + std::to_string(WEXITSTATUS(status)) : last;
-}
-
-// A seed for (base, point, realisation) that does not depend on which shard runs it
-// (SplitMix64).
-std::uint64_t derived_seed(std::uint64_t base, std::uint64_t point, std::uint64_t realisation) {
-  std::uint64_t z = base * 0x9E3779B97F4A7C15ull + point * 0xD1B54A32D192ED03ull + realisation + 1;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (z ^ (z >> 31)) >> 11;  // fits a double exactly, and so a JSON number
 }
 
 std::string run_name(std::size_t point, int realisation) {
@@ -184,7 +176,8 @@ void run_sweep_command(const Config& c, const std::filesystem::path& dir, const 
     plan_points.push_back(point);
     for (int r = 0; r < realisations; ++r) {
       std::vector<std::string> o2 = overrides;
-      const std::uint64_t seed = derived_seed(base_seed, p, static_cast<std::uint64_t>(r));
+      // The same whichever shard runs it; 53 bits, so a JSON number holds it exactly.
+      const std::uint64_t seed = derived_seed(base_seed, static_cast<std::uint64_t>(r), p) >> 11;
       o2.push_back("tessellation.seed=" + std::to_string(seed));
       o2.push_back("mesh.seed=" + std::to_string(seed));
       // Runs side by side mesh on one thread each (the mesh is the same either way).

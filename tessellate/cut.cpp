@@ -106,26 +106,10 @@ class VertexTable {
   PointMap<int> ids_;
 };
 
-double ring_area(const std::vector<Vec2>& vs, const std::vector<int>& ring) {
+std::vector<Vec2> ring_points(const std::vector<Vec2>& vs, const std::vector<int>& ring) {
   std::vector<Vec2> pts;
   for (int v : ring) pts.push_back(vs[v]);
-  return polygon_area(pts);
-}
-
-bool point_in_ring(const std::vector<Vec2>& vs, const std::vector<int>& ring, Vec2 p) {
-  bool in = false;
-  for (std::size_t n = 0, m = ring.size() - 1; n < ring.size(); m = n++) {
-    const Vec2 a = vs[ring[n]], b = vs[ring[m]];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
-  }
-  return in;
-}
-
-// Whether a vertex lies on side s of the cell, sides counted counter-clockwise from the
-// bottom: 0 bottom, 1 right, 2 top, 3 left.
-bool on_side(Vec2 p, double W, double H, int s) {
-  const bool on[4] = {p.y == 0.0, p.x == W, p.y == H, p.x == 0.0};
-  return on[s];
+  return pts;
 }
 
 // Matrix regions in binder mode: the cell minus the grain pieces, traced as rings.
@@ -143,21 +127,22 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
     const auto& ring = t.regions[r].rings[0];
     for (std::size_t n = 0; n < ring.size(); ++n) {
       const int a = ring[n], b = ring[(n + 1) % ring.size()];
-      if (cell_side(t, t.vertices[a], t.vertices[b]) >= 0) covered[key(a, b)] = 1;
+      if (cell_side(t, t.vertices[a], t.vertices[b]) != kNoSide) covered[key(a, b)] = 1;
       else link(b, a);
     }
   }
   // The cell's boundary, counter-clockwise, where no piece covers it.
-  for (int s = 0; s < 4; ++s) {
+  const Box cell{{0.0, 0.0}, {W, H}};
+  for (CellSide s : kSidesCounterClockwise) {
     std::vector<int> on;
     for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v)
-      if (on_side(t.vertices[v], W, H, s)) on.push_back(v);
+      if (on_side(cell, t.vertices[v], s)) on.push_back(v);
     std::sort(on.begin(), on.end(), [&](int a, int b) {
       const Vec2 p = t.vertices[a], q = t.vertices[b];
       switch (s) {
-        case 0: return p.x < q.x;
-        case 1: return p.y < q.y;
-        case 2: return p.x > q.x;
+        case kBottom: return p.x < q.x;
+        case kRight: return p.y < q.y;
+        case kTop: return p.x > q.x;
         default: return p.y > q.y;
       }
     });
@@ -181,7 +166,7 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
       v = it->second;
     }
     if (v != start) throw GeometryError("binder matrix: boundary rings cross");
-    (ring_area(t.vertices, ring) > 0.0 ? outers : holes).push_back(std::move(ring));
+    (polygon_area(ring_points(t.vertices, ring)) > 0.0 ? outers : holes).push_back(std::move(ring));
   }
   const std::size_t first = t.regions.size();
   for (auto& o : outers) t.regions.push_back(Region{grain, phase, {std::move(o)}});
@@ -189,8 +174,9 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
     int best = -1;
     double best_area = 0.0;
     for (std::size_t r = first; r < t.regions.size(); ++r) {
-      const double a = ring_area(t.vertices, t.regions[r].rings[0]);
-      if (point_in_ring(t.vertices, t.regions[r].rings[0], t.vertices[h[0]]) && (best < 0 || a < best_area)) {
+      const std::vector<Vec2> outer = ring_points(t.vertices, t.regions[r].rings[0]);
+      const double a = polygon_area(outer);
+      if (inside_ring(outer, t.vertices[h[0]]) && (best < 0 || a < best_area)) {
         best = static_cast<int>(r);
         best_area = a;
       }

@@ -39,8 +39,8 @@ std::vector<PhaseDescriptors> phase_descriptors(const Tessellation& t) {
   std::map<std::pair<int, int>, int> side_edge;  // (v0, v1) sorted -> edge
   for (std::size_t k = 0; k < t.edges.size(); ++k) {
     const TessEdge& e = t.edges[k];
-    const int side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
-    if (side == 1 || side == 3) side_edge[std::minmax(e.v0, e.v1)] = static_cast<int>(k);
+    const CellSide side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
+    if (side == kRight || side == kTop) side_edge[std::minmax(e.v0, e.v1)] = static_cast<int>(k);
   }
 
   for (const TessEdge& e : t.edges) {
@@ -50,9 +50,9 @@ std::vector<PhaseDescriptors> phase_descriptors(const Tessellation& t) {
       continue;
     }
     if (!t.periodic) continue;
-    const int side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
-    if (side != 0 && side != 2) continue;  // each pair of sides once, from left and bottom
-    const std::map<int, int>& partner = side == 0 ? partner_x : partner_y;
+    const CellSide side = cell_side(t, t.vertices[e.v0], t.vertices[e.v1]);
+    if (side != kLeft && side != kBottom) continue;  // each pair of sides once, from left and bottom
+    const std::map<int, int>& partner = side == kLeft ? partner_x : partner_y;
     const auto p0 = partner.find(e.v0), p1 = partner.find(e.v1);
     if (p0 == partner.end() || p1 == partner.end()) continue;
     const auto across = side_edge.find(std::minmax(p0->second, p1->second));

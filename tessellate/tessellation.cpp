@@ -235,13 +235,7 @@ std::vector<Segment> graph_segments(const TorusGraph& g) {
 
 }  // namespace
 
-int cell_side(const Tessellation& t, Vec2 a, Vec2 b) {
-  if (a.x == 0.0 && b.x == 0.0) return 0;
-  if (a.x == t.width && b.x == t.width) return 1;
-  if (a.y == 0.0 && b.y == 0.0) return 2;
-  if (a.y == t.height && b.y == t.height) return 3;
-  return -1;
-}
+CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b) { return side_along(Box{{0.0, 0.0}, {t.width, t.height}}, a, b); }
 
 double region_area(const Tessellation& t, const Region& r) {
   double a = 0.0;
@@ -571,7 +565,7 @@ void validate(const Tessellation& t) {
     const TessEdge& e = t.edges[k];
     if (e.v0 == e.v1) throw GeometryError("tessellation: edge " + std::to_string(k) + " joins a vertex to itself");
     if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
-    if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) < 0)
+    if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) == kNoSide)
       throw GeometryError("tessellation: an edge with one side lies inside the cell");
     if (!edge_of.emplace(std::minmax(e.v0, e.v1), k).second)
       throw GeometryError("tessellation: two edges join vertices " + std::to_string(e.v0) + " and " + std::to_string(e.v1));

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/cell_side.hpp"
 #include "common/deadline.hpp"
 #include "common/geometry.hpp"
 #include "common/random.hpp"
@@ -137,9 +138,9 @@ Tessellation tessellate(const TessellationOptions& options, Rng& rng);
 // partner positions. Throws GeometryError naming the first violation.
 void validate(const Tessellation& t);
 
-// The side of the cell the segment ab runs along: 0 left (x = 0), 1 right (x = W),
-// 2 bottom (y = 0), 3 top (y = H), -1 none. Exact: points on a side carry its coordinate.
-int cell_side(const Tessellation& t, Vec2 a, Vec2 b);
+// The side of the cell [0, W] x [0, H] the segment ab runs along, else kNoSide. Exact:
+// points on a side carry its coordinate.
+CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b);
 
 // Area of a region (outer minus holes).
 double region_area(const Tessellation& t, const Region& r);

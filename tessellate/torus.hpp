@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/ring.hpp"
 
 namespace grainmesh {
 
@@ -42,19 +43,6 @@ struct TorusGraph {
 
 // Reduces p into [0, W) x [0, H); `shift` receives k with p = reduced + (k.i W, k.j H).
 Vec2 reduce_periodic(Vec2 p, double width, double height, Corner* shift = nullptr);
-
-// Signed area (> 0 counter-clockwise) and centroid of a polygon.
-double polygon_area(const std::vector<Vec2>& ring);
-Vec2 polygon_centroid(const std::vector<Vec2>& ring);
-// The part of a polygon where dot(normal, p) >= offset (one Sutherland-Hodgman step;
-// exact for convex polygons).
-std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, Vec2 normal, double offset);
-// True when no two non-adjacent edges of the ring touch and no two consecutive points
-// coincide. O(n^2), meant for the small rings of grains.
-bool ring_is_simple(const std::vector<Vec2>& ring);
-// The smallest angle on the left of the ring's walk (the interior of a counter-clockwise
-// ring), radians.
-double sharpest_corner(const std::vector<Vec2>& ring);
 
 // The power diagram (Laguerre tessellation; Voronoi when all weights are 0) of the seeds,
 // periodic in the W x H cell or, when !periodic, in the plane around it. Cells whose seed
