@@ -130,11 +130,19 @@ void naming_errors(const Config& config, F&& run) {
   }
 }
 
+// A stage command's part of a config: one config serves every command, so a key that any
+// stage of `run` knows is accepted (and left to its stage), any other refused.
+Config stage_part(const Config& c, const std::vector<std::string>& stage_keys) {
+  c.check_keys(run_config_keys());
+  return c.subset(stage_keys);
+}
+
 // The config of a command whose config file is optional (--config): the file with the
-// --set overrides, or the overrides alone.
-Config optional_config(const po::variables_map& vm) {
-  return vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
-                            : Config::from_text("", "--set", overrides(vm));
+// --set overrides, or the overrides alone; the part of it that `stage_keys` name.
+Config optional_config(const po::variables_map& vm, const std::vector<std::string>& stage_keys) {
+  return stage_part(vm.count("config") ? Config::from_file(vm["config"].as<std::string>(), overrides(vm))
+                                       : Config::from_text("", "--set", overrides(vm)),
+                    stage_keys);
 }
 
 // A command of the form `grainmesh NAME CONFIG -o OUT [--set KEY=VALUE ...]`.
@@ -153,7 +161,7 @@ int mesh_main(const std::vector<std::string>& args) {
   desc.add_options()("config", po::value<std::string>(), "mesh config file (INI) with mesh.* and phase.NAME.size keys");
   const auto vm = parse_command("mesh", desc, "tessellation", "tessellation.json written by grainmesh tessellate", args);
   if (!vm) return kOk;
-  const Config config = optional_config(*vm);
+  const Config config = optional_config(*vm, mesh_config_keys());
   run_mesh_command((*vm)["tessellation"].as<std::string>(), config, (*vm)["output"].as<std::string>());
   return kOk;
 }
@@ -164,7 +172,7 @@ int export_main(const std::vector<std::string>& args) {
   desc.add_options()("config", po::value<std::string>(), "export config file (INI) with export.*, load.* and phase.NAME.E/nu keys");
   const auto vm = parse_command("export", desc, "mesh", "mesh.vtu written by grainmesh mesh or domain", args);
   if (!vm) return kOk;
-  const Config config = optional_config(*vm);
+  const Config config = optional_config(*vm, export_config_keys());
   run_export_command((*vm)["mesh"].as<std::string>(), config, (*vm)["output"].as<std::string>());
   return kOk;
 }
@@ -275,7 +283,10 @@ int main(int argc, char** argv) {
     if (args[0] == "run") return run_main(rest);
     if (args[0] == "sweep") return sweep_main(rest);
     if (args[0] == "converge") return converge_main(rest);
-    if (args[0] == "tessellate") return config_command("tessellate", rest, run_tessellate_command);
+    if (args[0] == "tessellate")
+      return config_command("tessellate", rest, [](const Config& c, const std::filesystem::path& out) {
+        run_tessellate_command(stage_part(c, tessellate_config_keys()), out);
+      });
     if (args[0] == "mesh") return mesh_main(rest);
     if (args[0] == "check") return check_main(rest);
     if (args[0] == "export") return export_main(rest);
