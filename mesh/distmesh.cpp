@@ -319,7 +319,7 @@ void Engine::seed_points(Rng& rng) {
     const double u = uniform01(rng);  // one draw per lattice point: the stream never depends on the grid
     if (u >= keep) continue;
     if (fixed_boundary()) {
-      // Clear of the seeded boundary by half a size, so no sliver forms against it.
+      // Clear of the seeded boundary by kClear of a size, so no sliver forms against it.
       if (pb_.domain(pts[i]) > -kClear * s[i] || taken.near(pts[i], kClear * s[i])) continue;
     } else if (seed_boundary) {
       if (!clear_of(pb_.domain, i) || (pb_.interface && !clear_of(*pb_.interface, i)) || taken.near(pts[i], 0.5 * s[i]))
@@ -589,8 +589,8 @@ void Engine::project_boundary() {
       }
       continue;
     }
-    // Never onto the boundary between two fixed seeds: back inside, a third of the local
-    // size from it, along the distance gradient.
+    // Never onto the boundary between two fixed seeds: back inside, half the local size
+    // from it, along the distance gradient.
     const double margin = 0.5 * (i < point_size_.size() ? point_size_[i] : (*size_)(p_[i]));
     const bool pulled = d_[i] > -margin;
     for (int step = 0; step < 4 && d_[i] > -margin; ++step) {

@@ -23,7 +23,9 @@ struct MeshQuality {
   double q_below_half = 0.0;   // share of triangles with q < 0.5, in [0, 1]
   double min_angle_deg = 0.0, max_angle_deg = 0.0;
   // checkMesh's face non-orthogonality: angle between the owner->neighbour centre vector
-  // and the face normal, over internal faces (0 when there are none).
+  // and the face normal, over internal faces (0 when there are none); the max is
+  // checkMesh's, the mean the mean angle (checkMesh's "average" is the angle of the mean
+  // cosine, a little larger).
   double max_non_orthogonality_deg = 0.0, mean_non_orthogonality_deg = 0.0;
   // checkMesh's face skewness over internal and boundary faces of the extruded mesh.
   double max_skewness = 0.0;

@@ -1,5 +1,6 @@
 // `grainmesh domain CONFIG -o OUT`: meshes a domain given by distance and size functions
-// (the thesis' examples), writing OUT/mesh.vtu, OUT/mesh.png and OUT/report.json.
+// (the thesis' examples), writing OUT/mesh.vtu, OUT/mesh.json, OUT/mesh.png and
+// OUT/report.json (last).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // `grainmesh mesh TESSELLATION.json -o OUT`: the mesh stage on a tessellation, written as
-// OUT/mesh.vtu, OUT/mesh.png and OUT/report.json (last).
+// OUT/mesh.vtu, OUT/mesh.json, OUT/mesh.png, OUT/mesh_detail.png and OUT/report.json (last).
 #pragma once
 
 #include <filesystem>

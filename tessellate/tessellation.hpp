@@ -48,8 +48,6 @@ struct TessellationOptions {
   Deadline deadline{};           // the run's wall-clock guard, asked every Lloyd step
 };
 
-// A vertex of the cut tessellation: a triple junction, a point where a grain boundary
-// crosses a cell side, or a cell corner.
 // An edge between two vertices; `left` and `right` are the regions on either side of
 // v0 -> v1 (-1 = outside the cell).
 struct TessEdge {

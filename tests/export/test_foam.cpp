@@ -16,6 +16,7 @@
 #include "export/foam.hpp"
 #include "helpers.hpp"
 #include "mesh/grain_mesh.hpp"
+#include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 
 using namespace grainmesh;
@@ -74,7 +75,31 @@ void check_mesh_ok(const fs::path& case_dir, const ExportMesh& e) {
   }
 }
 
+// The number after `label` in checkMesh's log (NaN when absent).
+double logged(const std::string& log, const std::string& label) {
+  const auto at = log.find(label);
+  return at == std::string::npos ? std::nan("") : std::stod(log.substr(at + label.size()));
+}
+
 }  // namespace
+
+TEST_CASE("measure_quality's non-orthogonality and skewness are checkMesh's", "[export][openfoam]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export_mesh(t, m);
+  test::ScratchDir dir("foam_quality");
+  write_foam_case(dir.path(), e, {});
+  const std::string log = test::run_openfoam(dir.path(), "checkMesh").out;
+  const MeshQuality q = measure_quality(m.mesh);
+  // checkMesh prints six significant digits.
+  CHECK(logged(log, "Mesh non-orthogonality Max: ") == Approx(q.max_non_orthogonality_deg).epsilon(1e-5));
+  // checkMesh's average is the angle of the mean cosine; ours the mean angle, which is
+  // less (acos is concave on [0, 1]) but close.
+  const double average = logged(log, "average: ");
+  CHECK(average > q.mean_non_orthogonality_deg);
+  CHECK(average < 1.5 * q.mean_non_orthogonality_deg);
+  CHECK(logged(log, "Max skewness = ") == Approx(q.max_skewness).epsilon(1e-5));
+}
 
 TEST_CASE("checkMesh accepts a periodic two-phase microstructure with patches and with cyclic pairs",
           "[export][openfoam]") {
