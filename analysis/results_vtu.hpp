@@ -8,7 +8,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/grain_mesh.hpp"
 
 namespace grainmesh {
 

@@ -20,7 +20,8 @@
 #include "bench/child.hpp"
 #include "bench/peers.hpp"
 #include "export/foam.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/conformity.hpp"
+#include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/grain_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 

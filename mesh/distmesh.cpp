@@ -11,7 +11,7 @@
 #include "common/format.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/quality.hpp"
-#include "mesh/size_grading.hpp"
+#include "domain/size_grading.hpp"
 
 namespace grainmesh {
 namespace {

@@ -12,8 +12,8 @@
 #include "common/geometry.hpp"
 #include "common/random.hpp"
 #include "mesh/delaunay.hpp"
-#include "mesh/distance.hpp"
-#include "mesh/size_function.hpp"
+#include "domain/distance.hpp"
+#include "domain/size_function.hpp"
 #include "mesh/trimesh.hpp"
 
 namespace grainmesh {

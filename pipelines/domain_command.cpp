@@ -8,7 +8,7 @@
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
-#include "mesh/shape_parser.hpp"
+#include "domain/shape_parser.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"

@@ -9,6 +9,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
+#include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/output_dir.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/grain_mesh.hpp"
+#include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/config.hpp"
 

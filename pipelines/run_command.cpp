@@ -21,6 +21,7 @@
 #include "common/memory.hpp"
 #include "export/foam.hpp"
 #include "export/picture.hpp"
+#include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"

@@ -9,7 +9,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
-#include "mesh/shape_parser.hpp"
+#include "domain/shape_parser.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"

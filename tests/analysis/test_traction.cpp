@@ -13,7 +13,7 @@
 #include "analysis/traction.hpp"
 #include "common/random.hpp"
 #include "helpers.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/grain_mesh.hpp"
 #include "tessellate/tessellation.hpp"
 
 using namespace grainmesh;

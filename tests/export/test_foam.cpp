@@ -15,7 +15,7 @@
 #include "common/text_file.hpp"
 #include "export/foam.hpp"
 #include "helpers.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 

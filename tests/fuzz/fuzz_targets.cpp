@@ -9,8 +9,9 @@
 
 #include "common/errors.hpp"
 #include "common/predicates.hpp"
-#include "mesh/grain_mesh.hpp"
-#include "mesh/polygon.hpp"
+#include "grains/conformity.hpp"
+#include "grains/grain_mesh.hpp"
+#include "domain/polygon.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"

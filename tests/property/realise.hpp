@@ -6,7 +6,8 @@
 #include <string>
 
 #include "mesh/corner_bound.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/conformity.hpp"
+#include "grains/grain_mesh.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/tessellate_command.hpp"

@@ -1,4 +1,4 @@
-#include "mesh/feature_size.hpp"
+#include "grains/feature_size.hpp"
 
 #include <algorithm>
 #include <cmath>

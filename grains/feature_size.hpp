@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
-#include "mesh/size_function.hpp"
+#include "domain/size_function.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {

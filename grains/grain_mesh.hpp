@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "mesh/distmesh.hpp"
-#include "mesh/feature_size.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -55,40 +54,8 @@ struct GrainMesh {
 // phase's own.
 double region_size(const GrainMeshOptions& options, int phase);
 
-// The size field of a tessellation: the phase sizes, lowered near short edges and thin
-// layers (when options.feature_size) and to the boundary and junction sizes, growing away
-// from them by the gradient. Its base is the largest phase size.
-FeatureSize tessellation_size(const Tessellation& t, const GrainMeshOptions& options);
-
-// Points along each tessellation edge (its end vertices excluded), from v0 to v1, evenly
-// in the integral of 1/h along it, h the size field capped by the edge's phase size (the
-// finer of its two sides). Edges on the right (top) side of a periodic cell get the
-// points of their partner on the left (bottom) side moved by W (H), bit for bit.
-std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& options,
-                                          const FeatureSize& size);
-
 // Meshes every region (in parallel; the result does not depend on the thread count) and
 // merges them. Throws GeometryError when a region cannot be meshed.
 GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& options);
-
-// Fills m.pairs_x and m.pairs_y from the node positions (exact coordinates on the cell's
-// sides); empty when the tessellation is not periodic. Throws GeometryError for a side
-// node without a partner.
-void pair_periodic_nodes(const Tessellation& t, GrainMesh& m);
-
-// What check_conformity measured.
-struct Conformity {
-  double max_area_error = 0.0;       // max over grains |mesh area - polygon area| / polygon area
-  double max_pair_mismatch = 0.0;    // max over node pairs of the position error
-  std::size_t boundary_edges = 0;    // edges with one triangle (all on the cell's sides)
-};
-
-// Checks the mesh against its tessellation: no two nodes at one place and every
-// tessellation vertex a node; each edge in one or two triangles; edges with one triangle
-// on the cell's sides only; every triangle inside the region of its grain and of its
-// grain's phase; each grain's area equal to its polygons' within `area_tolerance`
-// (relative); periodic pairs complete and matching within 1e-12 max(W, H). Throws
-// GeometryError naming the first violation.
-Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance = 1e-9);
 
 }  // namespace grainmesh

@@ -1,4 +1,4 @@
-#include "mesh/polygon.hpp"
+#include "domain/polygon.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,10 @@
 #include <vector>
 
 #include "common/errors.hpp"
-#include "mesh/grain_mesh.hpp"
+#include "grains/conformity.hpp"
+#include "grains/edge_seeds.hpp"
+#include "grains/grain_mesh.hpp"
+#include "grains/size_field.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/corner_bound.hpp"
 

@@ -1,4 +1,4 @@
-#include "mesh/size_function.hpp"
+#include "domain/size_function.hpp"
 
 #include <muParser.h>
 

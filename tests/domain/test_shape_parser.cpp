@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "common/errors.hpp"
-#include "mesh/shape_parser.hpp"
+#include "domain/shape_parser.hpp"
 
 using namespace grainmesh;
 using Catch::Matchers::Contains;

@@ -4,7 +4,7 @@
 #include <thread>
 
 #include "common/errors.hpp"
-#include "mesh/size_function.hpp"
+#include "domain/size_function.hpp"
 
 using namespace grainmesh;
 

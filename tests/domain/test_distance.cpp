@@ -5,7 +5,7 @@
 
 #include "common/errors.hpp"
 #include "common/random.hpp"
-#include "mesh/distance.hpp"
+#include "domain/distance.hpp"
 
 using namespace grainmesh;
 using std::numbers::pi;

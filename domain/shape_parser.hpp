@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
-#include "mesh/distance.hpp"
+#include "domain/distance.hpp"
 
 namespace grainmesh {
 

@@ -1,11 +1,11 @@
-#include "mesh/distance.hpp"
+#include "domain/distance.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "common/errors.hpp"
-#include "mesh/polygon.hpp"
+#include "domain/polygon.hpp"
 
 namespace grainmesh {
 

@@ -1,4 +1,4 @@
-#include "mesh/size_grading.hpp"
+#include "domain/size_grading.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "mesh/shape_parser.hpp"
+#include "domain/shape_parser.hpp"
 
 #include <cctype>
 #include <charconv>

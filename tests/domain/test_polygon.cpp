@@ -6,8 +6,8 @@
 
 #include "common/errors.hpp"
 #include "common/random.hpp"
-#include "mesh/distance.hpp"
-#include "mesh/polygon.hpp"
+#include "domain/distance.hpp"
+#include "domain/polygon.hpp"
 
 using namespace grainmesh;
 

@@ -1,0 +1,117 @@
+#include "grains/conformity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/point_key.hpp"
+#include "domain/polygon.hpp"
+
+namespace grainmesh {
+
+void pair_periodic_nodes(const Tessellation& t, GrainMesh& m) {
+  m.pairs_x.clear();
+  m.pairs_y.clear();
+  if (!t.periodic) return;
+  const std::vector<Vec2>& pts = m.mesh.points;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double far = axis == 0 ? t.width : t.height;
+    auto along = [axis](Vec2 p) { return axis == 0 ? p.y : p.x; };
+    auto across = [axis](Vec2 p) { return axis == 0 ? p.x : p.y; };
+    std::map<double, int> high;
+    for (int v = 0; v < static_cast<int>(pts.size()); ++v)
+      if (across(pts[v]) == far) high[along(pts[v])] = v;
+    auto& pairs = axis == 0 ? m.pairs_x : m.pairs_y;
+    for (int v = 0; v < static_cast<int>(pts.size()); ++v) {
+      if (across(pts[v]) != 0.0) continue;
+      const auto it = high.find(along(pts[v]));
+      if (it == high.end())
+        throw GeometryError("mesh: the node at " + to_text(pts[v]) + " on a cell side has no periodic partner");
+      pairs.emplace_back(v, it->second);
+    }
+  }
+}
+
+Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
+  const TriMesh& mesh = m.mesh;
+  const double W = t.width, H = t.height;
+  Conformity c;
+  if (m.phase.size() != mesh.triangles.size() || mesh.region.size() != mesh.triangles.size())
+    throw GeometryError("conformity: the mesh needs a grain and a phase for each of its triangles");
+  // Nodes: no two at one place, and every tessellation vertex among them.
+  PointMap<int> node;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (!node.emplace(point_key(mesh.points[v]), static_cast<int>(v)).second)
+      throw GeometryError("conformity: two nodes at " + to_text(mesh.points[v]));
+  for (const Vec2 v : t.vertices)
+    if (!node.count(point_key(v))) throw GeometryError("conformity: the tessellation vertex " + to_text(v) + " is no mesh node");
+  const auto edges = mesh_edges(mesh);  // throws for an edge of three triangles
+  for (const MeshEdge& e : edges) {
+    if (e.right >= 0) continue;
+    ++c.boundary_edges;
+    const Vec2 a = mesh.points[e.a], b = mesh.points[e.b];
+    if (cell_side(t, a, b) == kNoSide)
+      throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one triangle but lies inside the cell");
+  }
+  // Each triangle inside the region of its grain: its centroid strictly inside one of the
+  // grain's regions and its corners no farther than rounding from it.
+  std::vector<std::vector<int>> regions_of(t.grains.size());
+  std::vector<PolygonDistance> dist;
+  dist.reserve(t.regions.size());
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    PolygonRings rings;
+    for (const auto& ring : t.regions[r].rings) {
+      rings.emplace_back();
+      for (int v : ring) rings.back().push_back(t.vertices[v]);
+    }
+    dist.emplace_back(rings);
+    regions_of[t.regions[r].grain].push_back(static_cast<int>(r));
+  }
+  const double tol = 1e-12 * std::max(W, H);
+  std::vector<double> area(t.grains.size(), 0.0);
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const int g = mesh.region[k];
+    if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size())
+      throw GeometryError("conformity: triangle " + std::to_string(k) + " names grain " + std::to_string(g));
+    const Vec2 centre = triangle_centroid(mesh, static_cast<int>(k));
+    bool inside = false;
+    for (int r : regions_of[g]) {
+      if (!dist[r].contains(centre)) continue;
+      inside = true;
+      for (int v : mesh.triangles[k])
+        if (dist[r](mesh.points[v]) > tol)
+          throw GeometryError("conformity: triangle " + std::to_string(k) + " reaches out of its grain " + std::to_string(g));
+    }
+    if (!inside) throw GeometryError("conformity: triangle " + std::to_string(k) + " lies outside its grain " + std::to_string(g));
+    if (m.phase[k] != t.grains[g].phase)
+      throw GeometryError("conformity: triangle " + std::to_string(k) + " has phase " + std::to_string(m.phase[k]) +
+                          ", its grain " + std::to_string(g) + " phase " + std::to_string(t.grains[g].phase));
+    area[g] += triangle_area(mesh, static_cast<int>(k));
+  }
+  for (const Grain& g : t.grains) {
+    const double err = std::abs(area[g.id] - g.area) / g.area;
+    c.max_area_error = std::max(c.max_area_error, err);
+    if (err > area_tolerance)
+      throw GeometryError("conformity: grain " + std::to_string(g.id) + " has mesh area " + to_text(area[g.id], 12) +
+                          " for polygon area " + to_text(g.area, 12));
+  }
+  if (t.periodic) {
+    std::size_t left = 0, bottom = 0;
+    for (const Vec2 p : mesh.points) {
+      left += p.x == 0.0 ? 1 : 0;
+      bottom += p.y == 0.0 ? 1 : 0;
+    }
+    if (m.pairs_x.size() != left || m.pairs_y.size() != bottom)
+      throw GeometryError("conformity: not every node on the left or bottom side is paired");
+    for (const auto& [a, b] : m.pairs_x)
+      c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{W, 0.0}));
+    for (const auto& [a, b] : m.pairs_y)
+      c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{0.0, H}));
+    if (c.max_pair_mismatch > tol) throw GeometryError("conformity: periodic node pairs do not match");
+  }
+  return c;
+}
+
+}  // namespace grainmesh
