@@ -1,0 +1,48 @@
+#include "pipelines/result_pictures.hpp"
+
+#include "analysis/phase_statistics.hpp"
+#include "export/picture.hpp"
+
+namespace grainmesh {
+
+void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
+                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all,
+                          const std::string& unit) {
+  if (picture_width == 0) return;
+  std::vector<double> sxx, syy, sxy, d = displacement_length(fields);
+  for (const StressState& s : sigma) sxx.push_back(1e-6 * s.xx), syy.push_back(1e-6 * s.yy), sxy.push_back(1e-6 * s.xy);
+  for (double& v : d) v *= 1e9;
+  std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
+      {"stress_xx.png", {sxx, "sigma_xx (MPa)"}}};
+  if (all) {
+    pictures.push_back({"stress_yy.png", {syy, "sigma_yy (MPa)"}});
+    pictures.push_back({"stress_xy.png", {sxy, "tau_xy (MPa)"}});
+    pictures.push_back({"displacement.png", {d, "|D| (nm)"}});
+  }
+  for (const auto& [name, field] : pictures)
+    write_mesh_png(dir / name, m.mesh,
+                   {.width_px = picture_width, .outline_by = {}, .view = {}, .field = field.first,
+                    .field_name = field.second, .legend = {}, .scale_bar = true, .length_unit = unit});
+}
+
+void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
+                            const std::vector<StressState>& cell_stress, const Tessellation& t, const GrainMesh& m) {
+  const int phases = static_cast<int>(t.phases.size());
+  Plot plot{.x_label = "von Mises stress (MPa), load case " + load_case, .y_label = "share of the phase's area",
+            .series = {}};
+  auto histograms = von_mises_histograms(cell_stress, m.mesh, m.phase, phases, 40);
+  for (int p = 0; p < phases; ++p) {
+    for (Vec2& point : histograms[p]) point.x *= 1e-6;
+    plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+  }
+  write_plot_png(file, plot);
+}
+
+
+std::vector<std::string> phase_names(const Tessellation& t) {
+  std::vector<std::string> names;
+  for (const Phase& p : t.phases) names.push_back(p.name);
+  return names;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,29 @@
+// Pictures of a solved run: the fields over the cells and each phase's distribution of
+// von Mises stress; and the phases' names, which results.vtu and the pictures show.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/foam_fields.hpp"
+#include "analysis/stress_measures.hpp"
+#include "grains/grain_mesh.hpp"
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+// Pictures of a solved case's fields over the cells, grain boundaries drawn (the thesis'
+// 3.14-3.15), stresses in MPa, the displacement in nm, a scale bar in `unit`; none when
+// picture_width is 0, sigma_xx alone when not `all`.
+void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
+                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all,
+                          const std::string& unit);
+
+// stress_histogram.png: each phase's distribution of von Mises stress in a load case.
+void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
+                            const std::vector<StressState>& cell_stress, const Tessellation& t, const GrainMesh& m);
+
+std::vector<std::string> phase_names(const Tessellation& t);
+
+}  // namespace grainmesh

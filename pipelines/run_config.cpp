@@ -1,0 +1,113 @@
+#include "pipelines/run_config.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+
+#include "pipelines/default_config.hpp"
+#include "pipelines/export_command.hpp"
+#include "pipelines/mesh_command.hpp"
+#include "pipelines/tessellate_command.hpp"
+
+namespace grainmesh {
+
+const std::vector<std::string>& run_own_config_keys() {
+  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "load.delta_T",
+                                             "solve.processes"};
+  return keys;
+}
+
+Boundary read_boundary(const Config& c) {
+  const std::string b = c.has("homogenise.boundary") ? c.text("homogenise.boundary") : "mixed";
+  if (b == "mixed") return Boundary::mixed;
+  if (b == "periodic") return Boundary::periodic;
+  c.fail("homogenise.boundary", "must be mixed or periodic, got '" + b + "'");
+}
+
+Pictures read_pictures(const Config& c) {
+  if (!c.has("output.pictures")) return Pictures::all;
+  const std::string p = c.text("output.pictures");
+  if (p == "none" || p == "false") return Pictures::none;
+  if (p == "basic") return Pictures::basic;
+  if (p == "all" || p == "true") return Pictures::all;
+  c.fail("output.pictures", "must be none, basic or all, got '" + p + "'");
+}
+
+std::vector<std::string> run_config_keys() {
+  std::vector<std::string> keys = tessellate_config_keys();
+  for (const auto& k : run_own_config_keys()) keys.push_back(k);
+  for (const auto& k : mesh_config_keys()) keys.push_back(k);
+  for (const auto& k : export_config_keys()) keys.push_back(k);
+  return keys;
+}
+
+const char* default_run_config() { return kDefaultRunConfig; }
+
+std::string config_ini(const Config& config) {
+  // "a.b.c" is key c of section [a.b]; sections in order of first appearance.
+  std::vector<std::string> order;
+  std::map<std::string, std::string> body;
+  for (const auto& [key, value] : config.entries()) {
+    const auto dot = key.rfind('.');
+    const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
+    if (!body.count(section)) order.push_back(section);
+    body[section] += key.substr(dot + 1) + " = " + value + "\n";
+  }
+  std::string text = "# The resolved config of a grainmesh run: `grainmesh run config.ini -o OUT` repeats it.\n";
+  for (const std::string& s : order) text += "\n[" + s + "]\n" + body[s];
+  return text;
+}
+
+std::string config_fingerprint(const Config& c) {
+  std::string text;
+  for (const auto& [key, value] : c.entries())
+    if (key != "mesh.threads" && key != kTimeLimitKey) text += key + "=" + value + "\n";
+  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits
+  for (const unsigned char ch : text) h = (h ^ ch) * 0x100000001b3ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+FoamOptions read_run_foam_options(const Config& c) {
+  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  const long long processes = c.integer("solve.processes", 1);
+  if (processes < 1 || processes > 1024) c.fail("solve.processes", "must be a count from 1 to 1024, got " + c.text("solve.processes"));
+  o.processes = static_cast<int>(processes);
+  o.delta_T = c.number("load.delta_T", 0.0);
+  if (!std::isfinite(o.delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
+  if (o.delta_T != 0.0) {
+    // Every phase's expansion, from the config (the tessellation reads the same keys).
+    for (const std::string& name : c.names_in("phase")) {
+      const std::string key = "phase." + name + ".alpha";
+      if (!c.has(key))
+        c.fail(key, "missing: load.delta_T = " + c.text("load.delta_T") +
+                        " needs every phase's linear thermal expansion (1/K, e.g. 5e-6 for WC, 14e-6 for Co)");
+      if (!(c.number(key) >= 0.0)) c.fail(key, "must be >= 0 (1/K), got " + c.text(key));
+    }
+    if (read_boundary(c) != Boundary::periodic)
+      c.fail("load.delta_T", "needs homogenise.boundary = periodic: the thermal load is solved on a periodic cell, "
+                             "free to expand on average");
+  }
+  if (read_boundary(c) != Boundary::periodic) return o;
+  if (!c.flag("domain.periodic", false))
+    c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+  for (const char* key : {"load.traction", "load.uniaxial"})
+    if (c.has(key))
+      c.fail(key, "not with homogenise.boundary = periodic, whose load cases are macroscopic strains (of "
+                  "load.displacement / width)");
+  if (c.has("export.cyclic") && !o.cyclic)
+    c.fail("export.cyclic", "homogenise.boundary = periodic needs the cyclic pairs; remove export.cyclic = false");
+  o.cyclic = true;
+  return o;
+}
+
+void check_run_config(const Config& c) {
+  c.check_keys(run_config_keys());
+  read_pictures(c);
+  read_tessellate_job(c.subset(tessellate_config_keys()));
+  read_run_foam_options(c);
+}
+
+}  // namespace grainmesh
