@@ -208,6 +208,16 @@ void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, c
 // do not pair, or a boundary edge lies on no side while the mesh is to be cyclic.
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
 
+// Writes constant/polyMesh (points, faces, owner, neighbour, boundary, cellZones,
+// faceZones) of `pm` into `dir`, ASCII or binary as `options` says.
+void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const FoamOptions& options);
+
+// system/decomposeParDict: o.processes pieces, the cell cut into nx x ny blocks as near
+// square as the count allows (hierarchical: Debian's OpenFOAM has no working scotch or
+// metis), each cyclic face kept on one processor with its partner (fixedJump does not
+// cross processors).
+void write_decompose_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options);
+
 // Writes a complete case into `dir` (which must exist and be empty): constant/polyMesh
 // (points, faces, owner, neighbour, boundary, cellZones, faceZones), 0/D, 0/E, 0/nu,
 // constant/mechanicalProperties and thermalProperties, system/controlDict, fvSchemes,

@@ -1,0 +1,266 @@
+#include "export/foam.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "common/cell_side.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "export/foam_file.hpp"
+
+namespace grainmesh {
+namespace {
+
+
+// The side of the cell a boundary edge lies on; within 1e-9 of the cell's size, so that
+// meshes whose sides were projected (domain meshes) count too.
+CellSide side_of(const Box& cell, Vec2 a, Vec2 b) {
+  return side_along(cell, a, b, 1e-9 * std::max(cell.width(), cell.height()));
+}
+
+// A side face: the edge a -> b runs counter-clockwise round its owner.
+struct SideFace {
+  int a, b, owner;
+};
+
+void add_polymesh_face(PolyMesh& pm, std::initializer_list<int> pts, int owner) {
+  pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+  pm.face_points.insert(pm.face_points.end(), pts);
+  pm.owner.push_back(owner);
+}
+
+// The boundary faces on the cell's sides (and `boundary` for the others), patch by patch:
+// symmetry planes, the loaded `right`, or cyclic pairs whose faces match one to one.
+void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std::vector<SideFace>, 5>& sides,
+                      PolyMesh& pm) {
+  const TriMesh& mesh = m.mesh;
+  const int n = static_cast<int>(mesh.points.size());
+  auto add_face = [&](std::initializer_list<int> pts, int owner) { add_polymesh_face(pm, pts, owner); };
+  // Side patches. Cyclic pairs list their faces along the side, so face i of one
+  // matches face i of the other; the others by owner.
+  if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");  // see check_load
+  const bool cyclic = o.cyclic;
+  // The load needs its patches: right carries it, left holds x, bottom (and top, unless
+  // uniaxial) hold y. A side without mesh edges leaves the load or a rigid motion free.
+  for (CellSide s : {kRight, kLeft, kBottom, kTop}) {
+    if (!sides[s].empty() || (s == kTop && o.uniaxial)) continue;
+    throw ConfigError(std::string("export: patch '") + side_name(s) + "' is empty: no mesh edge lies on the cell's " +
+                      side_name(s) + " side (" + (is_vertical(s) ? "x = " : "y = ") + to_text(side_coordinate(m.cell, s)) + "), so " +
+                      (s == kRight ? "the load has nothing to act on" : "nothing holds the cell there") +
+                      "; the mesh's bounding box must have straight mesh edges on all four sides");
+  }
+  auto along = [&](const SideFace& f, CellSide side) {
+    const Vec2 mid = 0.5 * (mesh.points[f.a] + mesh.points[f.b]);
+    return is_vertical(side) ? mid.y : mid.x;
+  };
+  for (CellSide s : {kLeft, kRight, kBottom, kTop})
+    std::sort(sides[s].begin(), sides[s].end(), [&](const SideFace& x, const SideFace& y) {
+      return cyclic ? along(x, s) < along(y, s) : x.owner < y.owner;
+    });
+  if (cyclic) {
+    if (!sides[kNoSide].empty())
+      throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");
+    for (CellSide s : {kLeft, kBottom}) {
+      const CellSide partner = static_cast<CellSide>(s ^ 1);
+      const auto& low = sides[s];
+      const auto& high = sides[partner];
+      const double tol = 1e-9 * std::max(m.cell.width(), m.cell.height());
+      bool match = low.size() == high.size();
+      for (std::size_t k = 0; match && k < low.size(); ++k) match = std::abs(along(low[k], s) - along(high[k], s)) <= tol;
+      if (!match)
+        throw GeometryError(std::string("export: the faces of ") + side_name(s) + " and " + side_name(partner) +
+                            " do not pair (is the mesh periodic?)");
+    }
+  }
+  const bool top_free = o.uniaxial;
+  for (CellSide s : {kLeft, kRight, kBottom, kTop, kNoSide}) {
+    if (s == kNoSide && sides[s].empty()) continue;
+    PolyMesh::Patch p;
+    p.name = side_name(s);
+    p.start = pm.faces();
+    p.size = static_cast<int>(sides[s].size());
+    if (cyclic && s != kNoSide) {
+      p.type = "cyclic";
+      p.neighbour_patch = side_name(static_cast<CellSide>(s ^ 1));
+      const Vec2 shift = is_vertical(s) ? Vec2{m.cell.width(), 0.0} : Vec2{0.0, m.cell.height()};
+      p.separation = (s % 2 == 0) ? shift : -shift;
+    } else if (s == kLeft || s == kBottom || (s == kTop && !top_free)) {
+      p.type = "symmetryPlane";
+    } else {
+      p.type = "patch";
+    }
+    // A coupled face starts at the point opposite its partner's first point: the high
+    // side's faces start at their other end.
+    const bool high = cyclic && (s == kRight || s == kTop);
+    for (const SideFace& f : sides[s])
+      high ? add_face({f.b, f.b + n, f.a + n, f.a}, f.owner) : add_face({f.a, f.b, f.b + n, f.a + n}, f.owner);
+    pm.patches.push_back(p);
+  }
+}
+
+// Zones: a cellZone per phase (every cell in exactly one), optionally per grain; faceZones
+// of grain boundaries and phase interfaces.
+void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
+  const TriMesh& mesh = m.mesh;
+  for (std::size_t p = 0; p < m.phases.size(); ++p) {
+    std::vector<int> cells;
+    for (int t = 0; t < pm.cells; ++t)
+      if (m.phase[t] == static_cast<int>(p)) cells.push_back(t);
+    pm.cell_zones.emplace_back(m.phases[p].name, std::move(cells));
+  }
+  if (o.grain_zones) {
+    std::map<int, std::vector<int>> by_grain;
+    for (int t = 0; t < pm.cells; ++t) by_grain[mesh.region[t]].push_back(t);
+    for (auto& [g, cells] : by_grain) pm.cell_zones.emplace_back("grain" + std::to_string(g), std::move(cells));
+  }
+  // faceZones: grain boundaries and phase interfaces; a face's flip says that it points
+  // from the higher label to the lower.
+  PolyMesh::FaceZone grains{.name = "grainBoundaries", .faces = {}, .flip = {}};
+  PolyMesh::FaceZone interfaces{.name = "phaseInterfaces", .faces = {}, .flip = {}};
+  for (int f = 0; f < pm.internal_faces(); ++f) {
+    const int o_ = pm.owner[f], nb = pm.neighbour[f];
+    if (mesh.region[o_] != mesh.region[nb]) {
+      grains.faces.push_back(f);
+      grains.flip.push_back(mesh.region[o_] > mesh.region[nb]);
+    }
+    if (m.phase[o_] != m.phase[nb]) {
+      interfaces.faces.push_back(f);
+      interfaces.flip.push_back(m.phase[o_] > m.phase[nb]);
+    }
+  }
+  pm.face_zones.push_back(std::move(grains));
+  pm.face_zones.push_back(std::move(interfaces));
+}
+
+}  // namespace
+
+PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
+  const TriMesh& mesh = m.mesh;
+  const int n = static_cast<int>(mesh.points.size());
+  PolyMesh pm;
+  pm.points2d = mesh.points;
+  pm.cells = static_cast<int>(mesh.triangles.size());
+  const std::vector<MeshEdge> edges = mesh_edges(mesh);
+  if (o.thickness > 0.0) {
+    pm.thickness = o.thickness;
+  } else {
+    double sum = 0.0;
+    for (const MeshEdge& e : edges) sum += norm(mesh.points[e.a] - mesh.points[e.b]);
+    pm.thickness = edges.empty() ? 1.0 : sum / static_cast<double>(edges.size());
+  }
+  auto add_face = [&](std::initializer_list<int> pts, int owner) { add_polymesh_face(pm, pts, owner); };
+
+  // Internal faces in upper-triangular order: by owner, then neighbour.
+  struct Internal {
+    int owner, neighbour, a, b;  // a -> b counter-clockwise round the owner
+  };
+  std::vector<Internal> internal;
+  std::array<std::vector<SideFace>, 5> sides;
+  for (const MeshEdge& e : edges) {
+    if (e.right < 0) {
+      sides[side_of(m.cell, mesh.points[e.a], mesh.points[e.b])].push_back({e.a, e.b, e.left});
+    } else if (e.left < e.right) {
+      internal.push_back({e.left, e.right, e.a, e.b});
+    } else {
+      internal.push_back({e.right, e.left, e.b, e.a});
+    }
+  }
+  std::sort(internal.begin(), internal.end(), [](const Internal& x, const Internal& y) {
+    return x.owner != y.owner ? x.owner < y.owner : x.neighbour < y.neighbour;
+  });
+  pm.face_start.reserve(internal.size() + 2 * mesh.triangles.size() + 8);
+  for (const Internal& f : internal) {
+    add_face({f.a, f.b, f.b + n, f.a + n}, f.owner);
+    pm.neighbour.push_back(f.neighbour);
+  }
+
+  add_side_patches(m, o, sides, pm);
+  PolyMesh::Patch empty{.name = "frontAndBack", .type = "empty", .start = pm.faces(),
+                        .size = 2 * pm.cells, .neighbour_patch = {}, .separation = {}};
+  for (int t = 0; t < pm.cells; ++t) {
+    const auto& v = mesh.triangles[t];
+    add_face({v[0], v[2], v[1]}, t);              // z = 0, facing down
+  }
+  for (int t = 0; t < pm.cells; ++t) {
+    const auto& v = mesh.triangles[t];
+    add_face({v[0] + n, v[1] + n, v[2] + n}, t);  // z = thickness, facing up
+  }
+  pm.patches.push_back(empty);
+  pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+
+  add_zones(m, o, pm);
+  return pm;
+}
+
+void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const FoamOptions& o) {
+  const bool bin = o.binary;
+  const std::string loc = "constant/polyMesh";
+  const double s = o.convert_to_meters;
+  std::vector<double> xyz;
+  xyz.reserve(6 * pm.points2d.size());
+  for (double z : {0.0, pm.thickness})
+    for (const Vec2 p : pm.points2d) xyz.insert(xyz.end(), {s * p.x, s * p.y, s * z});
+  FoamFile(dir / "points", "vectorField", loc, "points", bin).vectors(xyz).write();
+
+  FoamFile faces(dir / "faces", bin ? "faceCompactList" : "faceList", loc, "faces", bin);
+  if (bin) {
+    faces.labels(pm.face_start).labels(pm.face_points);
+  } else {
+    faces.number(pm.faces()).text("\n(\n");
+    for (int f = 0; f < pm.faces(); ++f) {
+      faces.number(pm.face_start[f + 1] - pm.face_start[f]).text("(");
+      for (int k = pm.face_start[f]; k < pm.face_start[f + 1]; ++k)
+        faces.number(pm.face_points[k]).text(k + 1 < pm.face_start[f + 1] ? " " : ")\n");
+    }
+    faces.text(")\n");
+  }
+  faces.write();
+
+  FoamFile(dir / "owner", "labelList", loc, "owner", bin).labels(pm.owner).write();
+  FoamFile(dir / "neighbour", "labelList", loc, "neighbour", bin).labels(pm.neighbour).write();
+
+  FoamFile boundary(dir / "boundary", "polyBoundaryMesh", loc, "boundary", false);
+  boundary.number(static_cast<int>(pm.patches.size())).text("\n(\n");
+  for (const PolyMesh::Patch& p : pm.patches) {
+    boundary.text("    " + p.name + "\n    {\n        type            " + p.type + ";\n");
+    if (p.type != "patch") boundary.text("        inGroups        List<word> 1(" + p.type + ");\n");
+    boundary.text("        nFaces          ").number(p.size).text(";\n        startFace       ").number(p.start).text(";\n");
+    if (p.type == "cyclic") {
+      boundary.text("        matchTolerance  0.0001;\n        transform       translational;\n");
+      boundary.text("        neighbourPatch  " + p.neighbour_patch + ";\n        separationVector (")
+          .number(s * p.separation.x)
+          .text(" ")
+          .number(s * p.separation.y)
+          .text(" 0);\n");
+    }
+    boundary.text("    }\n");
+  }
+  boundary.text(")\n").write();
+
+  FoamFile cz(dir / "cellZones", "regIOobject", loc, "cellZones", bin);
+  cz.number(static_cast<int>(pm.cell_zones.size())).text("\n(\n");
+  for (const auto& [name, cells] : pm.cell_zones) {
+    cz.text(name + "\n{\n    type cellZone;\ncellLabels      List<label> ").labels(cells).text(";\n}\n");
+  }
+  cz.text(")\n").write();
+
+  FoamFile fz(dir / "faceZones", "regIOobject", loc, "faceZones", bin);
+  fz.number(static_cast<int>(pm.face_zones.size())).text("\n(\n");
+  for (const PolyMesh::FaceZone& z : pm.face_zones) {
+    fz.text(z.name + "\n{\n    type faceZone;\nfaceLabels      List<label> ").labels(z.faces).text(";\nflipMap         List<bool> ");
+    // bools are written as labels in ASCII; binary List<bool> is one byte each
+    if (bin) {
+      fz.number(static_cast<int>(z.flip.size())).text("\n(");
+      fz.text(std::string_view(z.flip.data(), z.flip.size())).text(")\n");
+    } else {
+      std::vector<int> flip(z.flip.begin(), z.flip.end());
+      fz.labels(flip);
+    }
+    fz.text(";\n}\n");
+  }
+  fz.text(")\n").write();
+}
+
+}  // namespace grainmesh
