@@ -1,6 +1,7 @@
 // The steps tessellate() chains, each on plain data so tests can call one alone.
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 #include "common/random.hpp"
@@ -136,5 +137,36 @@ double arrange_contiguity(std::vector<int>& label, const std::vector<double>& ar
 // The convex set of points of a convex-ish polygon at distance >= t inside every edge's
 // line (the inward offset). Empty when nothing is left.
 std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t);
+
+// --- tessellation.cpp ----------------------------------------------------------------
+
+// Crossings of the cell's sides shallower than this are squared off.
+inline constexpr double kMinSideAngle = 32.0 * std::numbers::pi / 180.0;
+
+// The best `count` cell origins on the torus: x first, then y for each x, keeping clear
+// of where the x side crosses boundaries and of the x side itself.
+std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std::vector<Vec2>& points, double W,
+                                    double H, double scale, int count);
+
+// The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
+std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H);
+
+// The area fraction phase p is to have: its own, or for the rest phase what the others leave.
+double target_fraction(const std::vector<Phase>& phases, int p);
+
+// --- binder.cpp ----------------------------------------------------------------------
+
+// Binder mode: the grains are the torus cells `cells` of `g` shrunk by the one offset
+// that leaves the matrix its target fraction (found by bisection; layers thinner than
+// kMinBinderLayer of the grain spacing refused, naming the fraction that would do), the
+// window placed clear of their corners, shallow side crossings squared off, and the
+// grains labelled with the phases `hard`. The seeds of `g` are moved into the window.
+struct BinderGrains {
+  std::vector<CutPolygon> polygons;
+  std::vector<int> grain_cell;  // torus cell of each grain (swallowed cells have none)
+  int matrix_grain = -1;        // the grain the matrix becomes: after the others
+};
+BinderGrains binder_grains(TorusGraph& g, const std::vector<int>& cells, const TessellationOptions& o, double scale,
+                           const std::vector<int>& hard, TessellationStats& st, Rng& rng);
 
 }  // namespace grainmesh

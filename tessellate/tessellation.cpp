@@ -15,23 +15,6 @@
 
 namespace grainmesh {
 
-namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-// Crossings of the cell's sides shallower than this are squared off.
-constexpr double kMinSideAngle = 32.0 * kDegree;
-// The corner angle that moving a vertex off a cell side may not go below.
-constexpr double kMinCorner = 30.0 * kDegree;
-// Vertices closer than this x the short-edge length to a cell side are moved off it, so
-// a square step next to them still has legs of the full length.
-constexpr double kPushDistance = 1.25;
-// Cells up to this many grains try this many windows (x) as many (y) and keep the best.
-constexpr std::size_t kTrialCells = 5000;
-constexpr int kWindowTrials = 4;
-// Binder layers (twice the shrink offset) thinner than this share of the grain spacing
-// sqrt(W H / N) are refused: the pockets where they meet mesh into slivers.
-constexpr double kMinBinderLayer = 2e-3;
-
 // The best `count` cell origins on the torus: x first, then y for each x, keeping clear
 // of where the x side crosses boundaries and of the x side itself.
 std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std::vector<Vec2>& points, double W,
@@ -45,6 +28,7 @@ std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std:
   return out;
 }
 
+
 // The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
 std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
   poly = clip_half_plane(poly, {1.0, 0.0}, 0.0);
@@ -53,6 +37,25 @@ std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
   return clip_half_plane(poly, {0.0, -1.0}, -H);
 }
 
+
+double target_fraction(const std::vector<Phase>& phases, int p) {
+  if (!phases[p].rest) return phases[p].fraction;
+  double sum = 0.0;
+  for (const Phase& q : phases) sum += q.rest ? 0.0 : q.fraction;
+  return 1.0 - sum;
+}
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+// The corner angle that moving a vertex off a cell side may not go below.
+constexpr double kMinCorner = 30.0 * kDegree;
+// Vertices closer than this x the short-edge length to a cell side are moved off it, so
+// a square step next to them still has legs of the full length.
+constexpr double kPushDistance = 1.25;
+// Cells up to this many grains try this many windows (x) as many (y) and keep the best.
+constexpr std::size_t kTrialCells = 5000;
+constexpr int kWindowTrials = 4;
 // The polygon of a cell as it counts for areas and centroids: clipped when not periodic.
 std::vector<Vec2> counted_polygon(const TorusGraph& g, int c) {
   auto poly = g.polygon(c);
@@ -175,12 +178,6 @@ SharedBoundaries shared_boundaries(const TorusGraph& g, const std::vector<int>& 
   return out;
 }
 
-double target_fraction(const std::vector<Phase>& phases, int p) {
-  if (!phases[p].rest) return phases[p].fraction;
-  double sum = 0.0;
-  for (const Phase& q : phases) sum += q.rest ? 0.0 : q.fraction;
-  return 1.0 - sum;
-}
 
 std::vector<Segment> graph_segments(const TorusGraph& g);
 
@@ -233,22 +230,10 @@ std::vector<Segment> graph_segments(const TorusGraph& g) {
   return out;
 }
 
-}  // namespace
-
-CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b) { return side_along(Box{{0.0, 0.0}, {t.width, t.height}}, a, b); }
-
-double region_area(const Tessellation& t, const Region& r) {
-  double a = 0.0;
-  for (std::size_t q = 0; q < r.rings.size(); ++q) {
-    std::vector<Vec2> pts;
-    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
-    a += (q == 0 ? 1.0 : -1.0) * polygon_area(pts);
-  }
-  return a;
-}
-
-Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
-  check_options(o);
+// The seeds (drawn from `rng`, or the given ones), their Laguerre weights (lognormal radii
+// when size_cv > 0) and the power diagram after the Lloyd iterations; draws from `rng`
+// in that order.
+TorusGraph relaxed_diagram(const TessellationOptions& o, Rng& rng) {
   const double W = o.width, H = o.height;
   const int n = o.grains;
   std::vector<Vec2> seeds = o.seeds;
@@ -275,8 +260,7 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     const double scale = 0.5 * W * H / disks;
     for (double& w : weights) w *= scale;
   }
-  const double spacing = std::sqrt(W * H / n);
-  const double merge = 1e-9 * spacing;
+  const double merge = 1e-9 * std::sqrt(W * H / n);
   TorusGraph g = power_diagram(seeds, weights, W, H, o.periodic, merge);
   for (int it = 0; it < o.lloyd_iterations; ++it) {
     if (o.deadline.passed()) o.deadline.check("after " + std::to_string(it) + " Lloyd iterations");
@@ -290,12 +274,13 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     g = power_diagram(seeds, weights, W, H, o.periodic, merge);
   }
 
-  Tessellation t;
-  t.width = W;
-  t.height = H;
-  t.periodic = o.periodic;
-  t.phases = o.phases;
-  TessellationStats& st = t.stats;
+  return g;
+}
+
+// The diagram's statistics before the cut: the mean equivalent diameter, grains removed,
+// short edges collapsed (edges below min_edge x that diameter).
+void collapse_and_measure(TorusGraph& g, const TessellationOptions& o, TessellationStats& st) {
+  const int n = o.grains;
   {
     std::vector<double> d;
     for (int c : live(g)) d.push_back(std::sqrt(4.0 * polygon_area(counted_polygon(g, c)) / std::numbers::pi));
@@ -309,141 +294,48 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     st.collapsed_edges = collapse_short_edges(g, st.edge_threshold, &vanished);
     st.removed_grains += vanished;
   }
-  // Lengths below this count as short when placing the window.
-  const double scale = st.edge_threshold > 0.0 ? st.edge_threshold : 0.1 * st.diameter_mean;
+}
 
-  const std::vector<int> cells = live(g);
-  const auto neighbours = cell_neighbours(g, cells);
-  {
-    double edges = 0.0, nb = 0.0, shortest = 1e300;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      edges += static_cast<double>(g.rings[cells[k]].size());
-      nb += static_cast<double>(neighbours[k].size());
+// Grain mode: the cells' polygons with the phases assigned (to the contiguity target, if
+// one is set), after the window is placed.
+std::vector<CutPolygon> grain_polygons(TorusGraph& g, const std::vector<int>& cells,
+                                       const std::vector<std::vector<int>>& neighbours, const TessellationOptions& o,
+                                       double scale, const std::vector<int>& hard, TessellationStats& st, Rng& rng) {
+  const double W = o.width, H = o.height;
+  place_window(g, cells, scale, st);
+  std::vector<double> areas;
+  for (int c : cells) areas.push_back(polygon_area(counted_polygon(g, c)));
+  auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
+  if (o.contiguity) {
+    // Trades keep the phase's area within half a percent of the cell of its target.
+    const SharedBoundaries shared = shared_boundaries(g, cells);
+    const double target_area = target_fraction(o.phases, o.contiguity_phase) * W * H, slack = 0.005 * W * H;
+    const std::vector<int> start = label;
+    const double reached =
+        arrange_contiguity(label, areas, shared, o.contiguity_phase, *o.contiguity, target_area, slack, rng);
+    if (std::abs(reached - *o.contiguity) > kContiguityTolerance) {
+      // Out of reach: how far the trades go either way, from the same start.
+      std::pair<double, double> range;
+      for (double* end : {&range.first, &range.second}) {
+        std::vector<int> trial = start;
+        *end = arrange_contiguity(trial, areas, shared, o.contiguity_phase, end == &range.first ? 0.0 : 1.0,
+                                  target_area, slack, rng);
+      }
+      st.contiguity_range = range;
     }
-    for (const Segment& s : graph_segments(g)) shortest = std::min(shortest, norm(s.b - s.a));
-    st.edges_per_grain_mean = edges / static_cast<double>(cells.size());
-    st.neighbours_mean = nb / static_cast<double>(cells.size());
-    st.shortest_torus_edge = shortest;
   }
+  std::vector<CutPolygon> polys = cell_polygons(g, cells);
+  for (std::size_t k = 0; k < polys.size(); ++k) polys[k].phase = label[k];
+  return polys;
+}
 
-  std::vector<int> hard;  // phases grains take
-  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
-    if (o.phase_mode == PhaseMode::grain || p != o.matrix_phase) hard.push_back(p);
-
-  std::vector<CutPolygon> polys;
-  int matrix_grain = -1;
-  std::vector<int> grain_cell;  // torus cell of each grain
-  if (o.phase_mode == PhaseMode::grain) {
-    place_window(g, cells, scale, st);
-    std::vector<double> areas;
-    for (int c : cells) areas.push_back(polygon_area(counted_polygon(g, c)));
-    auto label = assign_phases(areas, neighbours, o.phases, hard, W * H, o.arrangement, rng);
-    if (o.contiguity) {
-      // Trades keep the phase's area within half a percent of the cell of its target.
-      const SharedBoundaries shared = shared_boundaries(g, cells);
-      const double target_area = target_fraction(o.phases, o.contiguity_phase) * W * H, slack = 0.005 * W * H;
-      const std::vector<int> start = label;
-      const double reached =
-          arrange_contiguity(label, areas, shared, o.contiguity_phase, *o.contiguity, target_area, slack, rng);
-      if (std::abs(reached - *o.contiguity) > kContiguityTolerance) {
-        // Out of reach: how far the trades go either way, from the same start.
-        std::pair<double, double> range;
-        for (double* end : {&range.first, &range.second}) {
-          std::vector<int> trial = start;
-          *end = arrange_contiguity(trial, areas, shared, o.contiguity_phase, end == &range.first ? 0.0 : 1.0,
-                                    target_area, slack, rng);
-        }
-        st.contiguity_range = range;
-      }
-    }
-    polys = cell_polygons(g, cells);
-    for (std::size_t k = 0; k < polys.size(); ++k) polys[k].phase = label[k];
-    grain_cell = cells;
-  } else {
-    const double f_m = target_fraction(o.phases, o.matrix_phase);
-    std::vector<std::vector<Vec2>> cell_poly;
-    for (int c : cells) cell_poly.push_back(g.polygon(c));
-    auto grain_area = [&](double off) {
-      double a = 0.0;
-      for (const auto& p : cell_poly) {
-        auto s = shrink_polygon(p, off);
-        if (!o.periodic && !s.empty()) s = clip_to_cell(std::move(s), W, H);
-        if (s.size() >= 3) a += polygon_area(s);
-      }
-      return a;
-    };
-    const std::string what = "binder matrix fraction " + to_text(f_m);
-    if (!(f_m > 0.0) || !(f_m < 1.0)) throw ConfigError(what + " cannot be reached: it must lie strictly between 0 and 1");
-    const double target = (1.0 - f_m) * W * H;  // grain area left after shrinking
-    double lo = 0.0, hi = spacing;
-    while (grain_area(hi) > target) {
-      lo = hi;
-      hi *= 2.0;
-      if (hi > 1e3 * std::max(W, H)) throw ConfigError(what + " cannot be reached by any offset");
-    }
-    for (int it = 0; it < 100 && hi - lo > 1e-13 * spacing; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (grain_area(mid) > target ? lo : hi) = mid;
-    }
-    st.binder_offset = 0.5 * (lo + hi);
-    // Layers thinner than kMinBinderLayer of the grain spacing cannot be meshed well (the
-    // pockets where they meet give slivers): say which fraction would do.
-    const double layer = 2.0 * st.binder_offset;
-    if (layer < kMinBinderLayer * spacing) {
-      const double needed = f_m * kMinBinderLayer * spacing / layer;  // layers grow about linearly
-      throw ConfigError(what + " makes layers " + to_text(layer, 3) + " thick, " + to_text(layer / spacing, 3) +
-                        " of the grain spacing (at least " + to_text(kMinBinderLayer) +
-                        " meshes well): raise it to at least " + to_text(std::ceil(needed * 1e4) / 1e4) +
-                        " or use tessellation.phase_mode = grain");
-    }
-    std::vector<std::vector<Vec2>> shrunk;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      auto s = shrink_polygon(cell_poly[k], st.binder_offset);
-      if (s.empty()) {
-        ++st.removed_grains;  // swallowed by the matrix
-        continue;
-      }
-      shrunk.push_back(std::move(s));
-      grain_cell.push_back(cells[k]);
-    }
-    if (shrunk.empty()) throw ConfigError(what + " leaves no grain");
-    if (o.periodic) {
-      std::vector<Segment> segs;
-      std::vector<Vec2> pts;
-      for (const auto& s : shrunk)
-        for (std::size_t k = 0; k < s.size(); ++k) {
-          segs.push_back({s[k], s[(k + 1) % s.size()]});
-          pts.push_back(s[k]);
-        }
-      st.window_origin = window_candidates(segs, pts, W, H, std::min(scale, st.binder_offset), 1).front();
-    }
-    // Square off shallow side crossings; each step costs the binder layer at most a
-    // quarter of its thickness.
-    for (auto& s : shrunk) {
-      for (Vec2& p : s) p -= st.window_origin;
-      st.side_jogs += square_shallow_crossings(s, W, H, o.periodic, kMinSideAngle, std::min(scale, 0.25 * st.binder_offset));
-    }
-    std::vector<double> areas;
-    for (const auto& s : shrunk) {
-      areas.push_back(polygon_area(o.periodic ? s : clip_to_cell(s, W, H)));
-    }
-    std::vector<std::vector<int>> none(shrunk.size());
-    const auto label = assign_phases(areas, none, o.phases, hard, W * H, o.arrangement, rng);
-    for (std::size_t k = 0; k < shrunk.size(); ++k) {
-      CutPolygon poly{static_cast<int>(k), label[k], {}, {}};
-      const std::size_t m = shrunk[k].size();
-      for (std::size_t q = 0; q < m; ++q) {
-        poly.corners.push_back({shrunk[k][q], 0, 0});
-      }
-      for (std::size_t q = 0; q < m; ++q) poly.edges.push_back({poly.corners[q].base, poly.corners[(q + 1) % m].base, 0, 0});
-      polys.push_back(std::move(poly));
-    }
-    matrix_grain = static_cast<int>(shrunk.size());
-    for (Vec2& s : g.seeds) s = o.periodic ? reduce_periodic(s - st.window_origin, W, H) : s;
-  }
-
-  cut_into_cell(polys, t, matrix_grain, matrix_grain >= 0 ? o.matrix_phase : -1);
-
+// The grains of the cut cell (ids, phases, seeds, neighbours, areas) and the statistics
+// of the result; validates it.
+void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector<CutPolygon>& polys,
+                         const std::vector<int>& grain_cell, int matrix_grain, const std::vector<int>& cells,
+                         const std::vector<std::vector<int>>& neighbours, const TessellationOptions& o) {
+  const double W = o.width, H = o.height;
+  TessellationStats& st = t.stats;
   // Grains and statistics.
   const int grains = static_cast<int>(polys.size());
   t.grains.resize(grains + (matrix_grain >= 0 ? 1 : 0));
@@ -495,108 +387,68 @@ Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
     st.phases[p].intercept_length = descriptors[p].intercept_length;
     st.phases[p].mean_free_path = descriptors[p].mean_free_path;
   }
-  return t;
 }
 
-void validate(const Tessellation& t) {
-  const double W = t.width, H = t.height;
-  // Every index names something that exists (what follows relies on it).
-  const int nv = static_cast<int>(t.vertices.size()), nr = static_cast<int>(t.regions.size());
-  const auto vertex = [&](int v) { return v >= 0 && v < nv; };
-  for (std::size_t g = 0; g < t.grains.size(); ++g)
-    if (t.grains[g].phase < 0 || t.grains[g].phase >= static_cast<int>(t.phases.size()))
-      throw GeometryError("tessellation: grain " + std::to_string(g) + " names phase " +
-                          std::to_string(t.grains[g].phase) + ", which does not exist");
-  for (std::size_t r = 0; r < t.regions.size(); ++r) {
-    const Region& region = t.regions[r];
-    if (region.grain < 0 || region.grain >= static_cast<int>(t.grains.size()))
-      throw GeometryError("tessellation: region " + std::to_string(r) + " names grain " + std::to_string(region.grain) +
-                          ", which does not exist");
-    if (region.phase < 0 || region.phase >= static_cast<int>(t.phases.size()))
-      throw GeometryError("tessellation: region " + std::to_string(r) + " names phase " + std::to_string(region.phase) +
-                          ", which does not exist");
-    if (region.rings.empty()) throw GeometryError("tessellation: region " + std::to_string(r) + " has no ring");
-    for (const auto& ring : region.rings)
-      for (int v : ring)
-        if (!vertex(v))
-          throw GeometryError("tessellation: region " + std::to_string(r) + " names vertex " + std::to_string(v) +
-                              ", which does not exist");
+}  // namespace
+
+CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b) { return side_along(Box{{0.0, 0.0}, {t.width, t.height}}, a, b); }
+
+double region_area(const Tessellation& t, const Region& r) {
+  double a = 0.0;
+  for (std::size_t q = 0; q < r.rings.size(); ++q) {
+    std::vector<Vec2> pts;
+    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
+    a += (q == 0 ? 1.0 : -1.0) * polygon_area(pts);
   }
-  for (std::size_t k = 0; k < t.edges.size(); ++k) {
-    const TessEdge& e = t.edges[k];
-    if (!vertex(e.v0) || !vertex(e.v1) || e.left < -1 || e.left >= nr || e.right < -1 || e.right >= nr)
-      throw GeometryError("tessellation: edge " + std::to_string(k) + " names a vertex or region that does not exist");
-  }
-  for (const auto* pairs : {&t.partners_x, &t.partners_y})
-    for (const auto& [a, b] : *pairs)
-      if (!vertex(a) || !vertex(b)) throw GeometryError("tessellation: a periodic partner names a vertex that does not exist");
-  double total = 0.0;
-  for (std::size_t r = 0; r < t.regions.size(); ++r) {
-    for (const auto& ring : t.regions[r].rings) {
-      std::vector<Vec2> pts;
-      for (int v : ring) pts.push_back(t.vertices[v]);
-      if (!(polygon_area(pts) > 0.0)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not counter-clockwise");
-      if (!ring_is_simple(pts)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not simple");
+  return a;
+}
+
+Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
+  check_options(o);
+  TorusGraph g = relaxed_diagram(o, rng);
+  Tessellation t;
+  t.width = o.width;
+  t.height = o.height;
+  t.periodic = o.periodic;
+  t.phases = o.phases;
+  TessellationStats& st = t.stats;
+  collapse_and_measure(g, o, st);
+  // Lengths below this count as short when placing the window.
+  const double scale = st.edge_threshold > 0.0 ? st.edge_threshold : 0.1 * st.diameter_mean;
+
+  const std::vector<int> cells = live(g);
+  const auto neighbours = cell_neighbours(g, cells);
+  {
+    double edges = 0.0, nb = 0.0, shortest = 1e300;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      edges += static_cast<double>(g.rings[cells[k]].size());
+      nb += static_cast<double>(neighbours[k].size());
     }
-    total += region_area(t, t.regions[r]);
+    for (const Segment& s : graph_segments(g)) shortest = std::min(shortest, norm(s.b - s.a));
+    st.edges_per_grain_mean = edges / static_cast<double>(cells.size());
+    st.neighbours_mean = nb / static_cast<double>(cells.size());
+    st.shortest_torus_edge = shortest;
   }
-  if (std::abs(total - W * H) > 1e-9 * W * H)
-    throw GeometryError("tessellation: region areas sum to " + std::to_string(total) + ", not W x H");
-  // Grains are numbered by position; each grain's recorded area is the area of its regions
-  // (what the mesh is checked against), and its regions carry its phase.
-  for (std::size_t g = 0; g < t.grains.size(); ++g)
-    if (t.grains[g].id != static_cast<int>(g))
-      throw GeometryError("tessellation: grain " + std::to_string(g) + " has id " + std::to_string(t.grains[g].id));
-  std::vector<double> grain_area(t.grains.size(), 0.0);
-  for (const Region& r : t.regions) {
-    if (r.phase != t.grains[r.grain].phase)
-      throw GeometryError("tessellation: a region of grain " + std::to_string(r.grain) + " has phase " +
-                          std::to_string(r.phase) + ", its grain " + std::to_string(t.grains[r.grain].phase));
-    grain_area[r.grain] += region_area(t, r);
+
+  std::vector<int> hard;  // phases grains take
+  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
+    if (o.phase_mode == PhaseMode::grain || p != o.matrix_phase) hard.push_back(p);
+
+  std::vector<CutPolygon> polys;
+  int matrix_grain = -1;
+  std::vector<int> grain_cell;  // torus cell of each grain
+  if (o.phase_mode == PhaseMode::grain) {
+    polys = grain_polygons(g, cells, neighbours, o, scale, hard, st, rng);
+    grain_cell = cells;
+  } else {
+    BinderGrains b = binder_grains(g, cells, o, scale, hard, st, rng);
+    polys = std::move(b.polygons);
+    grain_cell = std::move(b.grain_cell);
+    matrix_grain = b.matrix_grain;
   }
-  for (std::size_t g = 0; g < t.grains.size(); ++g)
-    if (!(std::abs(grain_area[g] - t.grains[g].area) <= 1e-9 * grain_area[g]))
-      throw GeometryError("tessellation: grain " + std::to_string(g) + " records area " + to_text(t.grains[g].area, 12) +
-                          " but its regions cover " + to_text(grain_area[g], 12));
-  // The edges are exactly the rings' segments, each once, with the regions on its sides.
-  std::map<std::pair<int, int>, std::size_t> edge_of;
-  std::vector<int> uses(t.edges.size(), 0);
-  for (std::size_t k = 0; k < t.edges.size(); ++k) {
-    const TessEdge& e = t.edges[k];
-    if (e.v0 == e.v1) throw GeometryError("tessellation: edge " + std::to_string(k) + " joins a vertex to itself");
-    if (e.left == e.right) throw GeometryError("tessellation: an edge has the same region on both sides");
-    if ((e.left < 0 || e.right < 0) && cell_side(t, t.vertices[e.v0], t.vertices[e.v1]) == kNoSide)
-      throw GeometryError("tessellation: an edge with one side lies inside the cell");
-    if (!edge_of.emplace(std::minmax(e.v0, e.v1), k).second)
-      throw GeometryError("tessellation: two edges join vertices " + std::to_string(e.v0) + " and " + std::to_string(e.v1));
-  }
-  for (std::size_t r = 0; r < t.regions.size(); ++r)
-    for (std::size_t q = 0; q < t.regions[r].rings.size(); ++q) {
-      const auto& ring = t.regions[r].rings[q];
-      const bool hole = q > 0;  // counter-clockwise too: the region lies on its right
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        const int a = ring[k], b = ring[(k + 1) % ring.size()];
-        const auto it = edge_of.find(std::minmax(a, b));
-        if (it == edge_of.end())
-          throw GeometryError("tessellation: region " + std::to_string(r) + " runs from vertex " + std::to_string(a) +
-                              " to " + std::to_string(b) + " along no edge");
-        const TessEdge& e = t.edges[it->second];
-        if (((e.v0 == a) != hole ? e.left : e.right) != static_cast<int>(r))
-          throw GeometryError("tessellation: edge " + std::to_string(it->second) + " does not have region " +
-                              std::to_string(r) + " on the side its ring says");
-        ++uses[it->second];
-      }
-    }
-  for (std::size_t k = 0; k < t.edges.size(); ++k)
-    if (uses[k] != (t.edges[k].left >= 0) + (t.edges[k].right >= 0))
-      throw GeometryError("tessellation: edge " + std::to_string(k) + " is not a segment of the regions it names");
-  const double tol = 1e-12 * std::max(W, H);
-  for (const auto& [l, r] : t.partners_x)
-    if (std::abs(t.vertices[r].x - t.vertices[l].x - W) > tol || std::abs(t.vertices[r].y - t.vertices[l].y) > tol)
-      throw GeometryError("tessellation: x partners do not match");
-  for (const auto& [b, u] : t.partners_y)
-    if (std::abs(t.vertices[u].y - t.vertices[b].y - H) > tol || std::abs(t.vertices[u].x - t.vertices[b].x) > tol)
-      throw GeometryError("tessellation: y partners do not match");
+  cut_into_cell(polys, t, matrix_grain, matrix_grain >= 0 ? o.matrix_phase : -1);
+  finish_tessellation(t, g, polys, grain_cell, matrix_grain, cells, neighbours, o);
+  return t;
 }
 
 }  // namespace grainmesh
