@@ -1,4 +1,4 @@
-// Numbers and points as error messages and reports print them.
+// Text as messages and reports print it: numbers and points; and text with its blanks trimmed.
 #pragma once
 
 #include <cmath>
@@ -21,6 +21,13 @@ inline std::string to_text(double v, int digits = 6) {
 inline std::string to_text(Vec2 p, int digits = 6) {
   std::string s("(");  // appends, not "(" + ...: GCC 12 warns wrongly on the latter (bug 105651)
   return s.append(to_text(p.x, digits)).append(", ").append(to_text(p.y, digits)).append(")");
+}
+
+// `s` without its leading and trailing blanks (spaces and tabs).
+inline std::string trimmed(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  return s;
 }
 
 }  // namespace grainmesh

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace grainmesh {
 
@@ -75,14 +76,7 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + o + ": expected KEY=VALUE");
-    std::string key = o.substr(0, eq), value = o.substr(eq + 1);
-    auto trim = [](std::string& s) {
-      s.erase(0, s.find_first_not_of(" \t"));
-      s.erase(s.find_last_not_of(" \t") + 1);
-    };
-    trim(key);
-    trim(value);
-    set.emplace_back(key, value);
+    set.emplace_back(trimmed(o.substr(0, eq)), trimmed(o.substr(eq + 1)));
   }
   for (const auto& kv : set) c.set_.insert(kv.first);
   std::erase_if(c.entries_, [&](const auto& kv) { return c.set_.count(kv.first) > 0; });
