@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Shows that a change of code leaves every output the same, byte for byte: builds grainmesh
 # at BASE (a commit, default HEAD) beside the working tree's build/grainmesh, runs both on
-# the default cell (solved: the mixed load, and the periodic one with the thermal load), every data/examples/*.ini (grain
-# configs through run and through tessellate, mesh and export; domain configs through
-# domain) and compares the output trees. Only what differs between two runs of one binary
-# is left out: report.json's seconds, memory and config path, OpenFOAM's logs. Exit 0 when all match.
+# the default cell (solved: the mixed load, and the periodic one with the thermal load),
+# every data/examples/*.ini (grain configs through run and through tessellate, mesh and
+# export; domain configs through domain) and a solved sweep with its summary, and compares
+# the output trees. Only what differs between two runs of one binary is left out:
+# report.json's seconds, memory and config path, OpenFOAM's and the sweep's logs. Exit 0
+# when all match.
 #   scripts/same-outputs.sh [BASE]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +45,10 @@ outputs() {
       "$gm" export "$out/$name-m/mesh.vtu" -o "$out/$name-e" > /dev/null
     fi
   done
+  # A sweep of two points and two realisations, solved, and its summary.
+  { cat data/default.ini; printf '\n[sweep]\nphase.matrix.fraction = 0.2, 0.3\nrealisations = 2\n'; } > "$out/sweep.ini"
+  "$gm" sweep "$out/sweep.ini" -o "$out/sweep" --solve --jobs 2 --set mesh.triangles_per_grain=30 > /dev/null
+  "$gm" sweep --collect "$out/sweep" > /dev/null
   # What two runs of one binary do not share: timings, memory, and paths of the output.
   find "$out" -name report.json | while read -r r; do
     python3 - "$r" "$out" << 'EOF'
@@ -64,7 +70,7 @@ for side in base new; do
   [ $side = new ] && gm=$root/build/grainmesh
   outputs "$gm" "$work/out/$side" > "$work/$side.log" 2>&1 || { echo "same-outputs: the $side binary failed:"; tail -5 "$work/$side.log"; exit 1; }
 done
-if diff -r -x 'log.*' "$work/out/base" "$work/out/new" > "$work/diff.txt"; then
+if diff -r -x 'log.*' -x logs "$work/out/base" "$work/out/new" > "$work/diff.txt"; then
   echo "same-outputs: every output of $(git rev-parse --short "$base") and the working tree is the same ($(find "$work/out/new" -type f | wc -l) files)"
 else
   echo "same-outputs: outputs differ from $(git rev-parse --short "$base"); see $work/diff.txt"
