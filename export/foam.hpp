@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/periodic_pairs.hpp"
 #include "grains/grain_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
@@ -59,7 +60,8 @@ struct ExportMesh {
   std::vector<int> phase;         // #T, index into phases
   std::vector<FoamPhase> phases;
   Box cell;
-  bool periodic = false;          // opposite sides carry matching nodes
+  bool periodic = false;          // opposite sides carry matching nodes,
+  PeriodicPairs pairs;            // ... paired (the cyclic faces are paired through them)
 };
 
 // Cases of more cells than this are written in binary unless export.format asks for

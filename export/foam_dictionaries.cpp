@@ -114,7 +114,9 @@ std::vector<std::string> foam_environment() {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   std::vector<std::string> env{
       "WM_PROJECT_DIR=" + std::string(project != nullptr && *project != '\0' ? project : kFoamProjectDir),
-      "GLIBC_TUNABLES=" + malloc_tunables() + (tunables != nullptr && *tunables != '\0' ? ":" + std::string(tunables) : "")};
+      // Appended, not ":" + ...: GCC 12 warns wrongly on the latter (bug 105651).
+      "GLIBC_TUNABLES=" + malloc_tunables() +
+          (tunables != nullptr && *tunables != '\0' ? std::string(":").append(tunables) : std::string())};
   if (geteuid() == 0) env.insert(env.end(), {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
   return env;
 }

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 
 #include "common/cell_side.hpp"
 #include "common/errors.hpp"
@@ -31,6 +33,29 @@ void add_polymesh_face(PolyMesh& pm, std::initializer_list<int> pts, int owner) 
   pm.owner.push_back(owner);
 }
 
+// Orders the faces of a cyclic pair's high side as the images of the low side's (in their
+// order) through the node pairs `pairs` (low, high). Throws GeometryError when a face of
+// either side has no partner face.
+void pair_cyclic_faces(const std::vector<SideFace>& low, std::vector<SideFace>& high,
+                       const std::vector<std::pair<int, int>>& pairs, CellSide side) {
+  std::unordered_map<int, int> image(pairs.begin(), pairs.end());
+  auto key = [](int a, int b) { return static_cast<std::int64_t>(std::min(a, b)) << 32 | std::max(a, b); };
+  std::unordered_map<std::int64_t, std::size_t> high_face;
+  for (std::size_t k = 0; k < high.size(); ++k) high_face[key(high[k].a, high[k].b)] = k;
+  const std::string unpaired = std::string("export: the faces of ") + side_name(side) + " and " +
+                               side_name(static_cast<CellSide>(side ^ 1)) + " do not pair (is the mesh periodic?)";
+  if (low.size() != high.size()) throw GeometryError(unpaired);
+  std::vector<SideFace> ordered;
+  ordered.reserve(high.size());
+  for (const SideFace& f : low) {
+    const auto a = image.find(f.a), b = image.find(f.b);
+    const auto it = a == image.end() || b == image.end() ? high_face.end() : high_face.find(key(a->second, b->second));
+    if (it == high_face.end()) throw GeometryError(unpaired);
+    ordered.push_back(high[it->second]);
+  }
+  high = std::move(ordered);
+}
+
 // The boundary faces on the cell's sides (and `boundary` for the others), patch by patch:
 // symmetry planes, the loaded `right`, or cyclic pairs whose faces match one to one.
 void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std::vector<SideFace>, 5>& sides,
@@ -38,8 +63,9 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
   const TriMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());
   auto add_face = [&](std::initializer_list<int> pts, int owner) { add_polymesh_face(pm, pts, owner); };
-  // Side patches. Cyclic pairs list their faces along the side, so face i of one
-  // matches face i of the other; the others by owner.
+  // Side patches. A cyclic pair's low side lists its faces along the side and the high
+  // side the images of them (through the mesh's periodic node pairs), so face i of one
+  // matches face i of the other; the other patches list their faces by owner.
   if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");  // see check_load
   const bool cyclic = o.cyclic;
   // The load needs its patches: right carries it, left holds x, bottom (and top, unless
@@ -62,17 +88,7 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
   if (cyclic) {
     if (!sides[kNoSide].empty())
       throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");
-    for (CellSide s : {kLeft, kBottom}) {
-      const CellSide partner = static_cast<CellSide>(s ^ 1);
-      const auto& low = sides[s];
-      const auto& high = sides[partner];
-      const double tol = 1e-9 * std::max(m.cell.width(), m.cell.height());
-      bool match = low.size() == high.size();
-      for (std::size_t k = 0; match && k < low.size(); ++k) match = std::abs(along(low[k], s) - along(high[k], s)) <= tol;
-      if (!match)
-        throw GeometryError(std::string("export: the faces of ") + side_name(s) + " and " + side_name(partner) +
-                            " do not pair (is the mesh periodic?)");
-    }
+    for (CellSide s : {kLeft, kBottom}) pair_cyclic_faces(sides[s], sides[s ^ 1], s == kLeft ? m.pairs.x : m.pairs.y, s);
   }
   const bool top_free = o.uniaxial;
   for (CellSide s : {kLeft, kRight, kBottom, kTop, kNoSide}) {

@@ -12,25 +12,12 @@
 namespace grainmesh {
 
 void pair_periodic_nodes(const Tessellation& t, GrainMesh& m) {
-  m.pairs_x.clear();
-  m.pairs_y.clear();
+  m.pairs = {};
   if (!t.periodic) return;
-  const std::vector<Vec2>& pts = m.mesh.points;
-  for (int axis = 0; axis < 2; ++axis) {
-    const double far = axis == 0 ? t.width : t.height;
-    auto along = [axis](Vec2 p) { return axis == 0 ? p.y : p.x; };
-    auto across = [axis](Vec2 p) { return axis == 0 ? p.x : p.y; };
-    std::map<double, int> high;
-    for (int v = 0; v < static_cast<int>(pts.size()); ++v)
-      if (across(pts[v]) == far) high[along(pts[v])] = v;
-    auto& pairs = axis == 0 ? m.pairs_x : m.pairs_y;
-    for (int v = 0; v < static_cast<int>(pts.size()); ++v) {
-      if (across(pts[v]) != 0.0) continue;
-      const auto it = high.find(along(pts[v]));
-      if (it == high.end())
-        throw GeometryError("mesh: the node at " + to_text(pts[v]) + " on a cell side has no periodic partner");
-      pairs.emplace_back(v, it->second);
-    }
+  try {
+    m.pairs = pair_by_position(m.mesh.points, Box{{0.0, 0.0}, {t.width, t.height}});
+  } catch (const GeometryError& e) {
+    throw GeometryError(std::string("mesh: ") + e.what());
   }
 }
 
@@ -103,11 +90,11 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
       left += p.x == 0.0 ? 1 : 0;
       bottom += p.y == 0.0 ? 1 : 0;
     }
-    if (m.pairs_x.size() != left || m.pairs_y.size() != bottom)
+    if (m.pairs.x.size() != left || m.pairs.y.size() != bottom)
       throw GeometryError("conformity: not every node on the left or bottom side is paired");
-    for (const auto& [a, b] : m.pairs_x)
+    for (const auto& [a, b] : m.pairs.x)
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{W, 0.0}));
-    for (const auto& [a, b] : m.pairs_y)
+    for (const auto& [a, b] : m.pairs.y)
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{0.0, H}));
     if (c.max_pair_mismatch > tol) throw GeometryError("conformity: periodic node pairs do not match");
   }

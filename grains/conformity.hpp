@@ -8,9 +8,9 @@
 
 namespace grainmesh {
 
-// Fills m.pairs_x and m.pairs_y from the node positions (exact coordinates on the cell's
-// sides); empty when the tessellation is not periodic. Throws GeometryError for a side
-// node without a partner.
+// Fills m.pairs from the node positions (exact coordinates on the cell's sides), for a
+// mesh read from a file (a mesh the mesh stage made carries its pairs); empty when the
+// tessellation is not periodic. Throws GeometryError for a side node without a partner.
 void pair_periodic_nodes(const Tessellation& t, GrainMesh& m);
 
 // What check_conformity measured.

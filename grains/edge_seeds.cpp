@@ -52,10 +52,10 @@ constexpr double kSharpCorner = 60.0 * std::numbers::pi / 180.0;
 // there (the window keeps side crossings wide), nor on holes (a region's corners at a
 // hole are reflex or wide).
 void equal_legs_at_sharp_corners(const Tessellation& t, const EdgeIndex& index,
-                                 const std::vector<int>& partner, std::vector<std::vector<Vec2>>& seeds) {
+                                 const std::vector<SidePartner>& partner, std::vector<std::vector<Vec2>>& seeds) {
   std::vector<char> on_side(seeds.size(), 0);
   for (std::size_t e = 0; e < seeds.size(); ++e)
-    if (partner[e] >= 0) on_side[e] = on_side[partner[e]] = 1;
+    if (partner[e].low >= 0) on_side[e] = on_side[partner[e].low] = 1;
   auto usable = [&](int e) { return !seeds[e].empty() && !on_side[e]; };
   // Distance of edge e's seed nearest to its end v.
   auto first_distance = [&](int e, int v) {
@@ -91,6 +91,12 @@ void equal_legs_at_sharp_corners(const Tessellation& t, const EdgeIndex& index,
 }  // namespace
 
 std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& o, const FeatureSize& size) {
+  const EdgeIndex index(t);
+  return seed_edges(t, o, size, index, side_partners(t, index));
+}
+
+std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMeshOptions& o, const FeatureSize& size,
+                                          const EdgeIndex& index, const std::vector<SidePartner>& partner) {
   const std::size_t ne = t.edges.size();
   std::vector<double> h(ne);
   for (std::size_t e = 0; e < ne; ++e) {
@@ -99,44 +105,59 @@ std::vector<std::vector<Vec2>> seed_edges(const Tessellation& t, const GrainMesh
       if (r >= 0) s = std::min(s, region_size(o, t.regions[r].phase));
     h[e] = s;
   }
-  const EdgeIndex index(t);
-  // Periodic sides: right/top edge -> its partner on the left/bottom, sharing one size.
-  std::vector<int> partner(ne, -1);
-  if (t.periodic) {
-    std::unordered_map<int, int> to_left, to_bottom;  // right -> left, top -> bottom vertex
-    for (const auto& [l, r] : t.partners_x) to_left[r] = l;
-    for (const auto& [b, u] : t.partners_y) to_bottom[u] = b;
-    for (std::size_t e = 0; e < ne; ++e) {
-      const CellSide side = edge_side(t, t.edges[e]);
-      if (side != kRight && side != kTop) continue;
-      const auto& to_low = side == kRight ? to_left : to_bottom;
-      const auto a = to_low.find(t.edges[e].v0), b = to_low.find(t.edges[e].v1);
-      const int low = (a != to_low.end() && b != to_low.end()) ? index.find(a->second, b->second) : -1;
-      if (low < 0) throw GeometryError("mesh: a side edge of the periodic cell has no partner edge");
-      partner[e] = low;
-      h[low] = h[e] = std::min(h[e], h[low]);
-    }
-  }
+  // Periodic sides: right/top edge and its partner on the left/bottom share one size.
+  for (std::size_t e = 0; e < ne; ++e)
+    if (partner[e].low >= 0) h[partner[e].low] = h[e] = std::min(h[e], h[partner[e].low]);
   std::vector<std::vector<Vec2>> seeds(ne);
   for (std::size_t e = 0; e < ne; ++e) {
-    if (partner[e] >= 0) continue;
+    if (partner[e].low >= 0) continue;
     const Vec2 a = t.vertices[t.edges[e].v0], b = t.vertices[t.edges[e].v1];
     if (e % 256 == 0) o.distmesh.deadline.check("while seeding grain boundaries");
     seeds[e] = seed_segment(a, b, size, h[e]);
   }
   equal_legs_at_sharp_corners(t, index, partner, seeds);
   for (std::size_t e = 0; e < ne; ++e) {
-    if (partner[e] < 0) continue;
-    const TessEdge& low = t.edges[partner[e]];
+    if (partner[e].low < 0) continue;
     const bool right = edge_side(t, t.edges[e]) == kRight;
-    std::vector<Vec2> s = seeds[partner[e]];
+    std::vector<Vec2> s = seeds[partner[e].low];
     for (Vec2& p : s) (right ? p.x : p.y) = right ? t.width : t.height;
-    // Same direction when v0 of this edge is the partner of low.v0.
-    const Vec2 v0 = t.vertices[t.edges[e].v0], l0 = t.vertices[low.v0];
-    if ((right ? v0.y != l0.y : v0.x != l0.x)) std::reverse(s.begin(), s.end());
+    if (partner[e].reversed) std::reverse(s.begin(), s.end());
     seeds[e] = std::move(s);
   }
   return seeds;
+}
+
+std::vector<SidePartner> side_partners(const Tessellation& t, const EdgeIndex& index) {
+  std::vector<SidePartner> partner(t.edges.size());
+  if (!t.periodic) return partner;
+  std::unordered_map<int, int> to_left, to_bottom;  // right -> left, top -> bottom vertex
+  for (const auto& [l, r] : t.partners.x) to_left[r] = l;
+  for (const auto& [b, u] : t.partners.y) to_bottom[u] = b;
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const CellSide side = edge_side(t, t.edges[e]);
+    if (side != kRight && side != kTop) continue;
+    const auto& to_low = side == kRight ? to_left : to_bottom;
+    const auto a = to_low.find(t.edges[e].v0), b = to_low.find(t.edges[e].v1);
+    const int low = (a != to_low.end() && b != to_low.end()) ? index.find(a->second, b->second) : -1;
+    if (low < 0) throw GeometryError("mesh: a side edge of the periodic cell has no partner edge");
+    // The same direction when v0 of this edge is the partner of the low edge's v0.
+    partner[e] = {low, a->second != t.edges[low].v0};
+  }
+  return partner;
+}
+
+PeriodicPairs node_pairs(const Tessellation& t, const std::vector<SidePartner>& partner,
+                         const std::vector<int>& first_id, const std::vector<std::vector<Vec2>>& seeds) {
+  PeriodicPairs pairs = t.partners;  // the vertices: mesh node v is vertex v
+  for (std::size_t e = 0; e < partner.size(); ++e) {
+    if (partner[e].low < 0) continue;
+    auto& out = edge_side(t, t.edges[e]) == kRight ? pairs.x : pairs.y;
+    const int n = static_cast<int>(seeds[e].size());
+    for (int k = 0; k < n; ++k)
+      out.emplace_back(first_id[partner[e].low] + (partner[e].reversed ? n - 1 - k : k), first_id[e] + k);
+  }
+  for (auto* side : {&pairs.x, &pairs.y}) std::sort(side->begin(), side->end());
+  return pairs;
 }
 
 }  // namespace grainmesh

@@ -205,7 +205,7 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
     while (cls[v] != v) v = cls[v] = cls[cls[v]];
     return v;
   };
-  for (const auto* pairs : {&t.partners_x, &t.partners_y})
+  for (const auto* pairs : {&t.partners.x, &t.partners.y})
     for (const auto& [a, b] : *pairs) cls[root(a)] = root(b);
   std::vector<std::vector<int>> incident(t.vertices.size());
   for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {

@@ -36,9 +36,8 @@ void check_options(const GrainMeshOptions& o) {
 }
 
 // Every region meshed, options.threads at a time; an error names the region's grain.
-std::vector<RegionMesh> mesh_regions(const Tessellation& t, const EdgeNodes& nodes,
+std::vector<RegionMesh> mesh_regions(const Tessellation& t, const EdgeIndex& index, const EdgeNodes& nodes,
                                      const std::shared_ptr<const FeatureSize>& size, const GrainMeshOptions& o) {
-  const EdgeIndex index(t);
   const int nr = static_cast<int>(t.regions.size());
   std::vector<RegionMesh> results(nr);
   tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
@@ -90,7 +89,9 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
   check_options(o);
   const auto start = std::chrono::steady_clock::now();
   const auto size = std::make_shared<const FeatureSize>(tessellation_size(t, o));
-  EdgeNodes nodes{.seeds = seed_edges(t, o, *size), .first_id = {}};
+  const EdgeIndex index(t);
+  const std::vector<SidePartner> partner = side_partners(t, index);
+  EdgeNodes nodes{.seeds = seed_edges(t, o, *size, index, partner), .first_id = {}};
   GrainMesh out;
   out.sizing_seconds = since(start);
   // Mesh nodes: tessellation vertices, then edge seeds, then each region's interior.
@@ -100,11 +101,11 @@ GrainMesh mesh_tessellation(const Tessellation& t, const GrainMeshOptions& o) {
     out.mesh.points.insert(out.mesh.points.end(), seeds.begin(), seeds.end());
   }
   const auto regions_start = std::chrono::steady_clock::now();
-  const std::vector<RegionMesh> results = mesh_regions(t, nodes, size, o);
+  const std::vector<RegionMesh> results = mesh_regions(t, index, nodes, size, o);
   out.regions_seconds = since(regions_start);
   const auto merge_start = std::chrono::steady_clock::now();
   assemble(t, results, out);
-  pair_periodic_nodes(t, out);
+  out.pairs = node_pairs(t, partner, nodes.first_id, nodes.seeds);
   validate(out.mesh);
   out.merge_seconds = since(merge_start);
   out.seconds = since(start);

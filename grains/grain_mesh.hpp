@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/periodic_pairs.hpp"
 #include "mesh/distmesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
@@ -38,9 +39,9 @@ struct GrainMeshOptions {
 struct GrainMesh {
   TriMesh mesh;                      // mesh.region[t] = grain id of triangle t
   std::vector<int> phase;            // #T phase of each triangle
-  // Node pairs (left, right) with right = left + (W, 0) and (bottom, top) with
-  // top = bottom + (0, H); empty when the tessellation is not periodic.
-  std::vector<std::pair<int, int>> pairs_x, pairs_y;
+  // Periodic node pairs: the tessellation's vertex partners extended to the edge seeds
+  // copied across (node_pairs in edge_seeds.hpp); empty when not periodic.
+  PeriodicPairs pairs;
   int regions = 0;
   int iterations_max = 0;            // the most force iterations any region needed
   int unconverged_regions = 0;       // regions that hit the iteration limit (still valid)

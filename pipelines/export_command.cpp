@@ -112,6 +112,14 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
   m.mesh = std::move(vtu.mesh);
   m.cell = d.cell;
   m.periodic = d.periodic;
+  // A mesh read from a file: its periodic pairs from the nodes' exact coordinates.
+  if (m.periodic) {
+    try {
+      m.pairs = pair_by_position(m.mesh.points, m.cell);
+    } catch (const GeometryError& e) {
+      throw GeometryError(mesh_file.string() + ": " + e.what());
+    }
+  }
   // Grain meshes carry grain and phase; domain meshes their region, which is the phase.
   const std::vector<int>* phase = cell_ints("phase");
   const std::vector<int>* grain = cell_ints("grain");

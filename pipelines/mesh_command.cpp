@@ -167,8 +167,8 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   add_quality(report, q);
   report["max_grain_area_error"] = conformity.max_area_error;
   report["max_pair_mismatch"] = conformity.max_pair_mismatch;
-  report["pairs_x"] = m.pairs_x.size();
-  report["pairs_y"] = m.pairs_y.size();
+  report["pairs_x"] = m.pairs.x.size();
+  report["pairs_y"] = m.pairs.y.size();
   report["boundary_edges"] = conformity.boundary_edges;
   report["iterations_max"] = m.iterations_max;
   report["unconverged_regions"] = m.unconverged_regions;
@@ -208,7 +208,7 @@ void run_check_command(const std::filesystem::path& tessellation, const std::fil
   std::printf("grainmesh check: %s conforms to %s: %zu triangles, grain areas within %.1e, %zu + %zu periodic node "
               "pairs within %.1e, %zu edges on the cell's sides\n",
               mesh_file.string().c_str(), tessellation.string().c_str(), m.mesh.triangles.size(), c.max_area_error,
-              m.pairs_x.size(), m.pairs_y.size(), c.max_pair_mismatch, c.boundary_edges);
+              m.pairs.x.size(), m.pairs.y.size(), c.max_pair_mismatch, c.boundary_edges);
 }
 
 }  // namespace grainmesh

@@ -210,26 +210,10 @@ void build_edges(Tessellation& t) {
 }
 
 void build_partners(Tessellation& t) {
-  t.partners_x.clear();
-  t.partners_y.clear();
-  for (int axis = 0; axis < 2; ++axis) {
-    const double far = axis == 0 ? t.width : t.height;
-    std::unordered_map<double, int> high;
-    for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) {
-      const Vec2 p = t.vertices[v];
-      if ((axis == 0 ? p.x : p.y) == far) high[axis == 0 ? p.y : p.x] = v;
-    }
-    auto& out = axis == 0 ? t.partners_x : t.partners_y;
-    for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) {
-      const Vec2 p = t.vertices[v];
-      if ((axis == 0 ? p.x : p.y) != 0.0) continue;
-      const auto it = high.find(axis == 0 ? p.y : p.x);
-      if (it == high.end())
-        throw GeometryError("cut: a vertex on the " + std::string(axis == 0 ? "left" : "bottom") +
-                            " side has no periodic partner");
-      out.emplace_back(v, it->second);
-    }
-    if (out.size() != high.size()) throw GeometryError("cut: unmatched periodic partners");
+  try {
+    t.partners = pair_by_position(t.vertices, Box{{0.0, 0.0}, {t.width, t.height}});
+  } catch (const GeometryError& e) {
+    throw GeometryError(std::string("cut: ") + e.what());
   }
 }
 

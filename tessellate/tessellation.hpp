@@ -9,6 +9,7 @@
 
 #include "common/cell_side.hpp"
 #include "common/deadline.hpp"
+#include "common/periodic_pairs.hpp"
 #include "common/geometry.hpp"
 #include "common/random.hpp"
 
@@ -120,9 +121,8 @@ struct Tessellation {
   std::vector<TessEdge> edges;
   std::vector<Region> regions;
   // Periodic partners: each vertex on the left (bottom) side and the vertex on the right
-  // (top) side at exactly the position plus W (H). Pairs (left, right) / (bottom, top).
-  std::vector<std::pair<int, int>> partners_x;
-  std::vector<std::pair<int, int>> partners_y;
+  // (top) side at exactly the position plus W (H); empty when not periodic.
+  PeriodicPairs partners;
   TessellationStats stats;
 };
 

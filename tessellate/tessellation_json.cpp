@@ -105,7 +105,7 @@ std::string tessellation_to_json(const Tessellation& t) {
   Json regions = Json::array();
   for (const Region& r : t.regions) regions.push_back({{"grain", r.grain}, {"phase", r.phase}, {"rings", r.rings}});
   j["regions"] = regions;
-  j["partners"] = {{"x", t.partners_x}, {"y", t.partners_y}};
+  j["partners"] = {{"x", t.partners.x}, {"y", t.partners.y}};
   j["statistics"] = statistics(t.stats, t.phases);
   j["statistics"].update(descriptors_json(t));
   return j.dump(1) + "\n";
@@ -157,8 +157,8 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
       for (const Json& ring : r.at("rings")) region.rings.push_back(read_ints(ring));
       t.regions.push_back(std::move(region));
     }
-    t.partners_x = read_pairs(j.at("partners").at("x"));
-    t.partners_y = read_pairs(j.at("partners").at("y"));
+    t.partners.x = read_pairs(j.at("partners").at("x"));
+    t.partners.y = read_pairs(j.at("partners").at("y"));
     const Json& s = j.at("statistics");
     t.stats.grains = read_int(s.at("grains"));
     t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();

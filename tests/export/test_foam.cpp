@@ -276,6 +276,35 @@ TEST_CASE("cyclic cases: the displacement jump across left/right loads the perio
   CHECK_THROWS_AS(write_foam_case(periodic.path() / "x", e, {.cyclic = true, .uniaxial = true}), ConfigError);
 }
 
+TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[export]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  ExportMesh e = grain_export_mesh(t, m);
+  CHECK(e.pairs == m.pairs);  // carried from the mesh stage, not made again
+  const PolyMesh pm = build_polymesh(e, {.cyclic = true});
+  // Face k of left is the image of face k of right: its points moved by W.
+  const auto& left = pm.patches[0];
+  const auto& right = pm.patches[1];
+  REQUIRE(left.name == "left");
+  REQUIRE(right.name == "right");
+  REQUIRE(left.size == right.size);
+  const std::size_t n = m.mesh.points.size();
+  auto point = [&](int p) { return pm.points2d[static_cast<std::size_t>(p) % n]; };
+  for (int k = 0; k < left.size; ++k) {
+    const int fl = left.start + k, fr = right.start + k;
+    auto span = [&](int f) {  // the face's extent along the side: exact
+      std::pair<double, double> y{1e300, -1e300};
+      for (int q = pm.face_start[f]; q < pm.face_start[f + 1]; ++q)
+        y = {std::min(y.first, point(pm.face_points[q]).y), std::max(y.second, point(pm.face_points[q]).y)};
+      return y;
+    };
+    CHECK(span(fl) == span(fr));
+  }
+  // Without its pair, a node's faces have no partner: refused, naming the sides.
+  e.pairs.x.pop_back();
+  CHECK_THROWS_WITH(build_polymesh(e, {.cyclic = true}), Catch::Contains("the faces of left and right do not pair"));
+}
+
 TEST_CASE("the displacement starts from the field a uniform cell takes under the imposed mean strain, ASCII or "
           "binary",
           "[export]") {

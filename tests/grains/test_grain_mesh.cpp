@@ -66,7 +66,7 @@ void check_mesh(const Tessellation& t, double per_grain) {
   CHECK(c.max_area_error <= 1e-9);
   CHECK(c.max_pair_mismatch <= 1e-12 * std::max(t.width, t.height));
   CHECK(m.phase.size() == m.mesh.triangles.size());
-  CHECK(m.pairs_x.empty() != t.periodic);
+  CHECK(m.pairs.x.empty() != t.periodic);
   o.threads = 2;
   const GrainMesh m2 = mesh_tessellation(t, o);
   CHECK(m2.mesh.points == m.mesh.points);
@@ -287,4 +287,22 @@ TEST_CASE("bad mesh options are refused", "[mesh][grain]") {
   CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.0, .phase_size = {}}), ConfigError);
   CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.1, .phase_size = {}, .boundary_size = -1.0}), ConfigError);
   CHECK_THROWS_AS(mesh_tessellation(t, {.size = 0.1, .phase_size = {}, .gradient = 0.0}), ConfigError);
+}
+
+TEST_CASE("the mesh's periodic pairs are the cut's partners carried to the copied seeds", "[mesh][grain]") {
+  for (PhaseMode mode : {PhaseMode::grain, PhaseMode::binder}) {
+    INFO("binder " << (mode == PhaseMode::binder));
+    const Tessellation t = cell(60, 2.0, true, mode, 2, 3);
+    const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 40), .phase_size = {}});
+    // Made from the construction (vertex partners, seeds copied across), they are exactly
+    // the pairs the nodes' coordinates give; the cut's own pairs are among them.
+    GrainMesh by_position = m;
+    pair_periodic_nodes(t, by_position);
+    PeriodicPairs sorted = by_position.pairs;
+    for (auto* side : {&sorted.x, &sorted.y}) std::sort(side->begin(), side->end());
+    CHECK(m.pairs == sorted);
+    CHECK(m.pairs.x.size() > t.partners.x.size());
+    for (const auto& pair : t.partners.x) CHECK(std::count(m.pairs.x.begin(), m.pairs.x.end(), pair) == 1);
+    for (const auto& pair : t.partners.y) CHECK(std::count(m.pairs.y.begin(), m.pairs.y.end(), pair) == 1);
+  }
 }
