@@ -5,11 +5,11 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "domain/shape_parser.hpp"
+#include "export/mesh_description.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
-#include "domain/shape_parser.hpp"
-#include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"

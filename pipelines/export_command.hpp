@@ -1,6 +1,6 @@
 // `grainmesh export MESH.vtu -o CASE`: a mesh written by `grainmesh mesh` or `grainmesh
 // domain` (mesh.vtu and the mesh.json beside it) to an OpenFOAM case for
-// solidDisplacementFoam. Also the mesh.json both stages write.
+// solidDisplacementFoam.
 #pragma once
 
 #include <filesystem>
@@ -9,24 +9,11 @@
 #include <vector>
 
 #include "export/foam.hpp"
+#include "export/mesh_description.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/output_dir.hpp"
 
 namespace grainmesh {
-
-// mesh.json: what mesh.vtu does not say. Phases without known moduli have them unset.
-struct MeshDescription {
-  Box cell;
-  bool periodic = false;
-  struct PhaseInfo {
-    std::string name;
-    std::optional<double> youngs_modulus, poisson_ratio;
-  };
-  std::vector<PhaseInfo> phases;
-};
-
-// Writes `description` as `file` (JSON, format grainmesh-mesh version 1).
-void write_mesh_description(const std::filesystem::path& file, const MeshDescription& description);
 
 // The keys an export config (or --set) may use ("*" is a phase name).
 const std::vector<std::string>& export_config_keys();

@@ -7,11 +7,11 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "export/mesh_description.hpp"
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
-#include "pipelines/export_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"
