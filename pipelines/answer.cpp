@@ -161,14 +161,9 @@ void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, Json& effect
 }  // namespace
 
 Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings) {
-  const std::filesystem::path& dir = in.dir;
-  const Tessellation& t = in.t;
-  const GrainMesh& m = in.m;
-  const ExportMesh& e = in.e;
-  const FoamOptions& foam = in.foam;
-  const int picture_width = in.picture_width;
+  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures] = in;
 
-  const Homogenised h = solve_and_homogenise(dir / "case", e, in.pm, foam, in.deadline, in.staged.failed_dir() / "case");
+  const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
   const StressedCase stressed{"mixed", &h.cell_stress, 0};
   answer.stresses = phase_stresses_json({stressed}, t, m);
@@ -184,7 +179,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields, &h.cell_stress}});
-  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, in.all_pictures,
+  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures,
                        length_unit_name(foam.convert_to_meters));
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
@@ -206,23 +201,17 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
   return answer;
 }
 
-
 Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings) {
-  const std::filesystem::path& dir = in.dir;
-  const Tessellation& t = in.t;
-  const GrainMesh& m = in.m;
-  const ExportMesh& e = in.e;
-  const FoamOptions& foam = in.foam;
-  const int picture_width = in.picture_width;
+  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures] = in;
 
   std::vector<std::filesystem::path> dirs, shown;
   for (const LoadCase& lc : periodic_load_cases(e, foam)) {
     dirs.push_back(dir / periodic_case_dir(lc));
-    shown.push_back(in.staged.failed_dir() / periodic_case_dir(lc));
+    shown.push_back(staged.failed_dir() / periodic_case_dir(lc));
   }
   // As many solves side by side as there are cores for their processes.
   const int parallel = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / foam.processes);
-  const PeriodicHomogenised h = solve_periodic(dirs, e, in.pm, foam, parallel, in.deadline, shown);
+  const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
   const Stiffness& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
   std::vector<StressedCase> stressed;
@@ -265,7 +254,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
       write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, m);
   }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
-  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, in.all_pictures,
+  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures,
                        length_unit_name(foam.convert_to_meters));
 
   check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress), effective, warnings);

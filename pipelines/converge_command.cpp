@@ -36,9 +36,8 @@ std::vector<std::pair<std::string, double>> quantities(const Json& effective) {
   return q;
 }
 
-}  // namespace
-
-void run_converge_command(const Config& c, const std::filesystem::path& out, const ConvergeOptions& o) {
+// The study's checks: its levels, and no key that fixes an element size.
+void check_study(const Config& c, const ConvergeOptions& o) {
   if (o.levels < 3 || o.levels > 12)
     throw ConfigError("converge: --levels " + std::to_string(o.levels) +
                       ": give 3 to 12 (Richardson extrapolation needs three levels)");
@@ -49,15 +48,25 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
       c.fail(key, "fixes an element size, which would not follow the study's levels (mesh.triangles_per_grain); "
                   "remove it to study convergence");
-  check_output_replaceable(out, "converge");
-  StagedOutput staged(out, "converge");
-  const std::filesystem::path dir = staged.dir();
-  const std::string ini = config_ini(c);
+}
 
+// The runs of the study's levels: each quantity's value per level, the levels' cells,
+// triangles per grain and seconds, and their entries in the report.
+struct Levels {
   std::vector<std::string> names;
   std::vector<std::vector<double>> values;  // [quantity][level]
   std::vector<double> cells, tpg, seconds;
-  Json levels = Json::array();
+  Json json = Json::array();
+};
+
+// Runs the levels into `dir`; a failed solve keeps the study so far as DIR.failed.
+Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged, const ConvergeOptions& o) {
+  const std::filesystem::path dir = staged.dir();
+  Levels l;
+  std::vector<std::string>& names = l.names;
+  std::vector<std::vector<double>>& values = l.values;
+  std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
+  Json& levels = l.json;
   for (int k = 0; k < o.levels; ++k) {
     const int n = o.start << k;
     const std::string name = "tpg-" + std::to_string(n);
@@ -89,10 +98,24 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
     levels.push_back({{"triangles_per_grain", n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
   }
 
-  // The study: each quantity's limit, order and coarsest level within 0.1 %.
-  Json study = Json::object();
+  return l;
+}
+
+// Each quantity's Richardson estimate and the coarsest level within kWithin of its limit.
+struct Study {
   std::vector<RichardsonEstimate> estimates;
   std::vector<std::optional<int>> within;
+  Json json = Json::object();
+};
+
+Study study_of(const Levels& l) {
+  const std::vector<std::string>& names = l.names;
+  const std::vector<std::vector<double>>& values = l.values;
+  const std::vector<double>&cells = l.cells, &tpg = l.tpg;
+  Study st;
+  Json& study = st.json;
+  std::vector<RichardsonEstimate>& estimates = st.estimates;
+  std::vector<std::optional<int>>& within = st.within;
   for (std::size_t i = 0; i < names.size(); ++i) {
     estimates.push_back(richardson(values[i], cells));
     within.push_back(first_within(values[i], estimates.back().limit, kWithin));
@@ -106,8 +129,17 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
     study[names[i]] = s;
   }
 
-  // convergence.csv: a row per level, then the limit, the order and the coarsest level
-  // within 0.1 % of the limit (in triangles per grain).
+  return st;
+}
+
+// convergence.csv: a row per level, then the limit, the order and the coarsest level
+// within 0.1 % of the limit (in triangles per grain).
+std::string convergence_csv(const Levels& l, const Study& st) {
+  const std::vector<std::string>& names = l.names;
+  const std::vector<std::vector<double>>& values = l.values;
+  const std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
+  const std::vector<RichardsonEstimate>& estimates = st.estimates;
+  const std::vector<std::optional<int>>& within = st.within;
   std::string csv = "level,triangles_per_grain,cells,seconds";
   for (const std::string& n : names) csv.append(",").append(n);
   csv += "\n";
@@ -125,11 +157,18 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   row("observed_order", [&](std::size_t i) { return estimates[i].order ? to_text(*estimates[i].order, 3) : std::string(); });
   row("coarsest_within_0.1_percent",
       [&](std::size_t i) { return within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]) : std::string(); });
-  write_text_file(dir / "convergence.csv", csv);
 
-  // convergence.png: each quantity's distance from its limit, in per cent, over the cells;
-  // under mixed both estimators of the modulus from the traction value's limit, which the
-  // area average approaches from above.
+  return csv;
+}
+
+// convergence.png: each quantity's distance from its limit, in per cent, over the cells;
+// under mixed both estimators of the modulus from the traction value's limit, which the
+// area average approaches from above.
+void write_convergence_png(const std::filesystem::path& file, const Levels& l, const Study& st) {
+  const std::vector<std::string>& names = l.names;
+  const std::vector<std::vector<double>>& values = l.values;
+  const std::vector<double>& cells = l.cells;
+  const std::vector<RichardsonEstimate>& estimates = st.estimates;
   const bool mixed = names.front() == "modulus";
   Plot plot{.x_label = "cells",
             .y_label = mixed ? "modulus: deviation from the Richardson limit (%)" : "deviation from the Richardson limit (%)",
@@ -148,10 +187,28 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
                          .colour = band_colour});
   plot.series.push_back({.name = "", .points = {{cells.front(), -0.1}, {cells.back(), -0.1}}, .line = true,
                          .colour = band_colour});
-  write_plot_png(dir / "convergence.png", plot);
+  write_plot_png(file, plot);
 
+}
+
+}  // namespace
+
+void run_converge_command(const Config& c, const std::filesystem::path& out, const ConvergeOptions& o) {
+  check_study(c, o);
+  check_output_replaceable(out, "converge");
+  StagedOutput staged(out, "converge");
+  const std::filesystem::path dir = staged.dir();
+  const std::string ini = config_ini(c);
+  const Levels l = run_levels(c, ini, staged, o);
+  const Study st = study_of(l);
+  write_text_file(dir / "convergence.csv", convergence_csv(l, st));
+  write_convergence_png(dir / "convergence.png", l, st);
+  const std::vector<std::string>& names = l.names;
+  const std::vector<double>& tpg = l.tpg;
+  const std::vector<RichardsonEstimate>& estimates = st.estimates;
+  const std::vector<std::optional<int>>& within = st.within;
   write_text_file(dir / "config.ini", ini);
-  Json report{{"config", c.source()}, {"levels", levels}, {"study", study}, {"tolerance", kWithin}};
+  Json report{{"config", c.source()}, {"levels", l.json}, {"study", st.json}, {"tolerance", kWithin}};
   Warnings warnings;
   for (std::size_t i = 0; i < names.size(); ++i)
     if (!estimates[i].asymptotic && !estimates[i].settled)
