@@ -85,15 +85,8 @@ std::vector<Phase> read_phases(const Config& c) {
   return phases;
 }
 
-}  // namespace
-
-TessellateJob read_tessellate_job(const Config& c) {
-  c.check_keys(tessellate_config_keys());
-  TessellateJob job;
-  TessellationOptions& o = job.options;
-  o.width = positive(c, "domain.width");
-  o.height = positive(c, "domain.height");
-  o.periodic = c.flag("domain.periodic", true);
+// o.grains (and o.seeds) from tessellation.grains, .grain_size or .seeds.
+void read_grain_count(const Config& c, TessellationOptions& o) {
   if (c.has("tessellation.grains") && c.has("tessellation.grain_size"))
     c.fail("tessellation.grain_size", "give either tessellation.grains or tessellation.grain_size, not both");
   if (c.has("tessellation.seeds")) {
@@ -124,24 +117,10 @@ TessellateJob read_tessellate_job(const Config& c) {
     if (n > 10'000'000) c.fail("tessellation.grains", "must be at most 10 million");
     o.grains = static_cast<int>(n);
   }
-  job.seed = c.unsigned_integer("tessellation.seed", 1);
-  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
-  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
-  o.lloyd_iterations = static_cast<int>(lloyd);
-  o.size_cv = c.number("tessellation.size_cv", 0.0);
-  if (!(o.size_cv >= 0.0 && o.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
-  o.min_edge = c.number("tessellation.min_edge", o.min_edge);
-  if (!(o.min_edge >= 0.0 && o.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
-  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
-  if (mode == "grain") o.phase_mode = PhaseMode::grain;
-  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
-  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
-  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
-  if (arr == "random") o.arrangement = Arrangement::random;
-  else if (arr == "dispersed") o.arrangement = Arrangement::dispersed;
-  else if (arr == "clustered") o.arrangement = Arrangement::clustered;
-  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
-  o.phases = read_phases(c);
+}
+
+// Binder mode's matrix phase: named, else the phase called matrix or binder.
+void read_matrix_phase(const Config& c, TessellationOptions& o) {
   if (o.phase_mode == PhaseMode::binder) {
     std::string matrix = c.optional_text("tessellation.matrix_phase").value_or("");
     if (matrix.empty())
@@ -155,6 +134,10 @@ TessellateJob read_tessellate_job(const Config& c) {
   } else if (c.has("tessellation.matrix_phase")) {
     c.fail("tessellation.matrix_phase", "only used with tessellation.phase_mode = binder");
   }
+}
+
+// A contiguity target and the phase it is of (grain mode only).
+void read_contiguity(const Config& c, TessellationOptions& o) {
   if (c.has("tessellation.contiguity")) {
     const double target = c.number("tessellation.contiguity");
     if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
@@ -173,6 +156,38 @@ TessellateJob read_tessellate_job(const Config& c) {
   } else if (c.has("tessellation.contiguity_phase")) {
     c.fail("tessellation.contiguity_phase", "only used with tessellation.contiguity");
   }
+}
+
+}  // namespace
+
+TessellateJob read_tessellate_job(const Config& c) {
+  c.check_keys(tessellate_config_keys());
+  TessellateJob job;
+  TessellationOptions& o = job.options;
+  o.width = positive(c, "domain.width");
+  o.height = positive(c, "domain.height");
+  o.periodic = c.flag("domain.periodic", true);
+  read_grain_count(c, o);
+  job.seed = c.unsigned_integer("tessellation.seed", 1);
+  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
+  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
+  o.lloyd_iterations = static_cast<int>(lloyd);
+  o.size_cv = c.number("tessellation.size_cv", 0.0);
+  if (!(o.size_cv >= 0.0 && o.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
+  o.min_edge = c.number("tessellation.min_edge", o.min_edge);
+  if (!(o.min_edge >= 0.0 && o.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
+  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
+  if (mode == "grain") o.phase_mode = PhaseMode::grain;
+  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
+  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
+  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
+  if (arr == "random") o.arrangement = Arrangement::random;
+  else if (arr == "dispersed") o.arrangement = Arrangement::dispersed;
+  else if (arr == "clustered") o.arrangement = Arrangement::clustered;
+  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
+  o.phases = read_phases(c);
+  read_matrix_phase(c, o);
+  read_contiguity(c, o);
   const long long width = c.integer("output.picture_width", job.picture_width);
   if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
   o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
