@@ -13,95 +13,117 @@
 
 namespace grainmesh {
 
-SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
-                    const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void check_installed(const FoamOptions& o) {
   if (std::system("command -v solidDisplacementFoam > /dev/null 2>&1") != 0)
     throw IoError("--solve: solidDisplacementFoam is not installed (Debian package openfoam; scripts/install-deps.sh)");
   if (o.processes > 1 && std::system("command -v mpirun > /dev/null 2>&1") != 0)
     throw IoError("solve.processes: mpirun is not installed (Debian package openmpi-bin, which openfoam brings)");
-  const std::filesystem::path log = case_dir / "log.solidDisplacementFoam";
-  // Errors name the field, and the load case when there are several.
-  const std::string field = load_case.empty() ? "D" : "D (load case " + load_case + ")";
-  const std::string who = load_case.empty() ? std::string("--solve") : "load case " + load_case;
-  const std::filesystem::path shown = case_shown_as.empty() ? case_dir : case_shown_as;  // in messages
-  const std::string see = "; see " + (shown / log.filename()).string();
-  const std::vector<std::string> environment = foam_environment();
-  const std::vector<std::string> command = solver_command(o);
-  const bool parallel = o.processes > 1;
-  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  // A utility around the parallel solve (decomposePar, reconstructPar), its log beside;
-  // its wall-clock seconds.
-  auto utility = [&](const std::vector<std::string>& argv) {
-    const auto started = std::chrono::steady_clock::now();
-    const std::string utility_log = "log." + argv.front();
-    const int status = run_child(argv, case_dir, case_dir / utility_log, deadline, argv.front(), environment);
-    if (status != 0)
-      throw SolveError(who + ": " + argv.front() + " failed (exit code " + std::to_string(status) + "); see " +
-                       (shown / utility_log).string());
-    return seconds_since(started);
-  };
-  SolveRun r;
-  if (parallel) r.decompose_seconds = utility({"decomposePar", "-force"});
+}
 
-  // A thousand times the displacement the load can give is divergence, not an answer.
+// One solve of a case: where it runs, how, and how its errors name it.
+struct SolveJob {
+  std::filesystem::path case_dir, log;
+  const Deadline& deadline;
+  std::vector<std::string> environment;
+  std::vector<std::string> command;
+  bool parallel = false;
+  std::string field, who;         // errors name the field, and the load case when there are several
+  std::filesystem::path shown;    // the case as messages show it
+  std::string see;                // "; see LOG"
+};
+
+// A utility around the parallel solve (decomposePar, reconstructPar), its log beside;
+// its wall-clock seconds.
+double run_utility(const SolveJob& job, const std::vector<std::string>& argv) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::string utility_log = "log." + argv.front();
+  const int status = run_child(argv, job.case_dir, job.case_dir / utility_log, job.deadline, argv.front(), job.environment);
+  if (status != 0)
+    throw SolveError(job.who + ": " + argv.front() + " failed (exit code " + std::to_string(status) + "); see " +
+                     (job.shown / utility_log).string());
+  return seconds_since(started);
+}
+
+// What the monitor watches for: convergence by grainmesh's measure, a stall, divergence (a
+// thousand times the displacement the load can give), the case's own stop.
+SolveMonitor::Options watch_options(const ExportMesh& m, const FoamOptions& o, const CaseStop& stop) {
   const double load_scale = std::max(load_strain(m.cell, m.phases, o), thermal_strain(m.phases, o)) *
                             std::max(m.cell.width(), m.cell.height());
+  return {.tolerance = kSolverTolerance,
+          .stall_corrections = 500,
+          .diverged_range = 1e3 * load_scale * o.convert_to_meters,
+          .case_watches = {stop.alone != 1, stop.alone != 0},
+          .case_tolerance = stop.tolerance,
+          .case_patience = 50,
+          .stress_window = kStressWindow,
+          .stress_tolerance = kStressTolerance};
+}
+
+// How the runs of the solver ended: the last one's monitor and exit status, and the
+// corrections of them all.
+struct Followed {
+  SolveMonitor monitor;
+  int status = 0;
+  int total = 0;
+};
+
+// Runs until converged. Where the case stops itself on its residual before the effective
+// stress has settled (a shear load on one material: the stress converges more slowly than
+// the residual), it is continued from where it stopped with its stop ten times tighter (a
+// few corrections more each time), up to eight times; each run's log is kept as log.*.N.
+// Each run is followed and killed as soon as it stalls, diverges or will not stop on its
+// own; its seconds are added to r.solver_seconds.
+Followed run_until_converged(const SolveJob& job, const ExportMesh& m, const FoamOptions& o, SolveRun& r) {
   const CaseStop stop = case_stop(m, o);
-  SolveMonitor::Options watch{.tolerance = kSolverTolerance,
-                              .stall_corrections = 500,
-                              .diverged_range = 1e3 * load_scale * o.convert_to_meters,
-                              .case_watches = {stop.alone != 1, stop.alone != 0},
-                              .case_tolerance = stop.tolerance,
-                              .case_patience = 50,
-                              .stress_window = kStressWindow,
-                              .stress_tolerance = kStressTolerance};
-  // One run of the solver, followed: killed as soon as it stalls, diverges or will not
-  // stop on its own.
+  SolveMonitor::Options watch = watch_options(m, o, stop);
   auto solve = [&](SolveMonitor& monitor) {
     const auto started = std::chrono::steady_clock::now();
-    const int status = run_child(command, case_dir, log, deadline, "solidDisplacementFoam", environment,
-                                 [&](std::string_view text) {
+    const int status = run_child(job.command, job.case_dir, job.log, job.deadline, "solidDisplacementFoam",
+                                 job.environment, [&](std::string_view text) {
                                    const SolveMonitor::State s = monitor.feed(text);
                                    return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
                                  });
     r.solver_seconds += seconds_since(started);
     return status;
   };
-  // Runs until converged. Where the case stops itself on its residual before the
-  // effective stress has settled (a shear load on one material: the stress converges
-  // more slowly than the residual), it is continued from where it stopped with its stop ten
-  // times tighter (a few corrections more each time), up to eight times; each run's log is
-  // kept as log.*.N.
-  SolveMonitor monitor(watch);
-  int status = 0, start = 0, total = 0;
+  Followed f{SolveMonitor(watch)};
+  int start = 0;
   double tighter = 1.0;
   for (int part = 0;; ++part) {
     if (part > 0) {
-      std::filesystem::rename(log, log.string() + "." + std::to_string(part));
-      start = std::stoi(latest_time_dir(parallel ? case_dir / "processor0" : case_dir).filename().string());
+      std::filesystem::rename(job.log, job.log.string() + "." + std::to_string(part));
+      start = std::stoi(latest_time_dir(job.parallel ? job.case_dir / "processor0" : job.case_dir).filename().string());
       tighter *= 0.1;
       watch.case_tolerance = stop.tolerance * tighter;
-      write_control_dict(case_dir, m, o, kMaxCorrections, tighter, start);
+      write_control_dict(job.case_dir, m, o, kMaxCorrections, tighter, start);
     }
-    monitor = SolveMonitor(watch);
-    status = solve(monitor);
-    if (monitor.state() == SolveMonitor::State::case_stuck) {
+    f.monitor = SolveMonitor(watch);
+    f.status = solve(f.monitor);
+    if (f.monitor.state() == SolveMonitor::State::case_stuck) {
       // Converged by the measure, but OpenFOAM's own residual of a component near zero is
       // noise: solved again to exactly where the measure was met (the same corrections, one
       // process, so the same numbers), and written there.
-      write_control_dict(case_dir, m, o, start + monitor.converged_at(), tighter, start);
-      monitor = SolveMonitor(watch);
-      status = solve(monitor);
+      write_control_dict(job.case_dir, m, o, start + f.monitor.converged_at(), tighter, start);
+      f.monitor = SolveMonitor(watch);
+      f.status = solve(f.monitor);
     }
-    total += monitor.corrections();
-    const bool stopped_itself = monitor.state() == SolveMonitor::State::running && status == 0 &&
-                                start + monitor.corrections() < kMaxCorrections;
+    f.total += f.monitor.corrections();
+    const bool stopped_itself = f.monitor.state() == SolveMonitor::State::running && f.status == 0 &&
+                                start + f.monitor.corrections() < kMaxCorrections;
     if (!stopped_itself || part == 8) break;
   }
+  return f;
+}
 
-  // What to do about a solve that goes nowhere.
+// Throws SolveError, with what to do about it, unless the solve converged.
+void check_converged(const SolveJob& job, const Followed& f, const ExportMesh& m, const FoamOptions& o) {
+  const SolveMonitor& monitor = f.monitor;
   const std::string advice =
       harmonic_stiffness(m, o) && stiffness_contrast(m, o) > 3.0
           ? ": the stiffness contrast " + to_text(stiffness_contrast(m, o), 3) +
@@ -109,27 +131,48 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
           : ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
   const SolveMonitor::State state = monitor.state();
   if (state == SolveMonitor::State::diverging || state == SolveMonitor::State::stalled)
-    throw SolveError(field + ": solidDisplacementFoam " +
+    throw SolveError(job.field + ": solidDisplacementFoam " +
                      (state == SolveMonitor::State::diverging ? "diverges: " : "stalls: ") + monitor.diagnosis() +
-                     advice + see);
-  const std::string text = read_text_file(log, "the solver's log");
-  if (status == 128 + SIGFPE || text.find("sigFpe") != std::string::npos)
-    throw SolveError(field + ": solidDisplacementFoam diverges: floating-point overflow after " +
-                     std::to_string(monitor.corrections()) + " corrections" + advice + see);
-  if (status != 0 || text.find("\nEnd") == std::string::npos)
-    throw SolveError(who + ": " + command.front() +
-                     " failed (exit code " + std::to_string(status) + ")" + see);
+                     advice + job.see);
+  const std::string text = read_text_file(job.log, "the solver's log");
+  if (f.status == 128 + SIGFPE || text.find("sigFpe") != std::string::npos)
+    throw SolveError(job.field + ": solidDisplacementFoam diverges: floating-point overflow after " +
+                     std::to_string(monitor.corrections()) + " corrections" + advice + job.see);
+  if (f.status != 0 || text.find("\nEnd") == std::string::npos)
+    throw SolveError(job.who + ": " + job.command.front() + " failed (exit code " + std::to_string(f.status) + ")" +
+                     job.see);
   if (state != SolveMonitor::State::converged || !(monitor.measure() < kSolverTolerance))
-    throw SolveError(field + ": solidDisplacementFoam did not converge in " + std::to_string(total) +
+    throw SolveError(job.field + ": solidDisplacementFoam did not converge in " + std::to_string(f.total) +
                      " corrections (residual " + to_text(monitor.measure(), 3) + ", the effective stress's change " +
                      to_text(monitor.stress_change(), 3) + "; tolerances " + to_text(kSolverTolerance) + " and " +
-                     to_text(kStressTolerance) + ")" + advice + see);
+                     to_text(kStressTolerance) + ")" + advice + job.see);
+}
 
-  if (parallel) r.reconstruct_seconds = utility({"reconstructPar", "-latestTime"});
-  r.corrections = total;
-  r.final_residual = monitor.measure();
-  r.component_residuals = monitor.residuals();
-  r.stress_change = monitor.stress_change();
+}  // namespace
+
+SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+                    const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
+  check_installed(o);
+  const std::filesystem::path shown = case_shown_as.empty() ? case_dir : case_shown_as;
+  const SolveJob job{.case_dir = case_dir,
+                     .log = case_dir / "log.solidDisplacementFoam",
+                     .deadline = deadline,
+                     .environment = foam_environment(),
+                     .command = solver_command(o),
+                     .parallel = o.processes > 1,
+                     .field = load_case.empty() ? "D" : "D (load case " + load_case + ")",
+                     .who = load_case.empty() ? std::string("--solve") : "load case " + load_case,
+                     .shown = shown,
+                     .see = "; see " + (shown / "log.solidDisplacementFoam").string()};
+  SolveRun r;
+  if (job.parallel) r.decompose_seconds = run_utility(job, {"decomposePar", "-force"});
+  const Followed f = run_until_converged(job, m, o, r);
+  check_converged(job, f, m, o);
+  if (job.parallel) r.reconstruct_seconds = run_utility(job, {"reconstructPar", "-latestTime"});
+  r.corrections = f.total;
+  r.final_residual = f.monitor.measure();
+  r.component_residuals = f.monitor.residuals();
+  r.stress_change = f.monitor.stress_change();
   r.result_dir = latest_time_dir(case_dir);
   return r;
 }
