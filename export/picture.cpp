@@ -177,50 +177,76 @@ std::vector<double> nice_ticks(double lo, double hi) {
   return ticks;
 }
 
-void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
-  Box box;
-  for (const Vec2 p : mesh.points) box.extend(p);
-  if (box.empty() || mesh.triangles.empty()) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
-  if (options.view) {
-    if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
-    box = *options.view;
+namespace {
+
+// The 1st and 99th percentiles of a field's values (a range of 1 when they coincide).
+std::pair<double, double> percentile_range(std::vector<double> v) {
+  const std::size_t k = v.size() / 100;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  const double least = v[k];
+  std::nth_element(v.begin(), v.end() - 1 - static_cast<std::ptrdiff_t>(k), v.end());
+  double most = v[v.size() - 1 - k];
+  if (!(most > least)) most = least + 1.0;
+  return {least, most};
+}
+
+// The colour bar under a field: least value on the left, greatest on the right, ticked,
+// with the field's name.
+void draw_colour_bar(cairo_t* c, const Canvas& canvas, const PictureOptions& options, double least, double most) {
+  const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 56.0;
+  for (int i = 0; i < 256; ++i) {
+    const Rgb col = viridis(i / 255.0);
+    cairo_set_source_rgb(c, col.r, col.g, col.b);
+    cairo_rectangle(c, x0 + (x1 - x0) * i / 256.0, y0, (x1 - x0) / 256.0 + 0.5, 14.0);
+    cairo_fill(c);
   }
-  const bool field = !options.field.empty();
-  if (field && options.field.size() != mesh.triangles.size())
-    throw IoError(file.string() + ": the field has " + std::to_string(options.field.size()) + " values for " +
-                  std::to_string(mesh.triangles.size()) + " triangles");
-  const bool key = has_key(options, field);
-  Canvas canvas(box, options, (field ? 64 : 0) + (key ? static_cast<int>(kKeyRow) : 0));
-  cairo_t* c = canvas.get();
-  const double scale = canvas.scale();
+  cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
+  cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(c, 12.0);
+  cairo_set_line_width(c, 1.0);
+  char text[64];
+  cairo_text_extents_t ext;
+  for (const double v : nice_ticks(least, most)) {
+    const double x = x0 + (x1 - x0) * (v - least) / (most - least);
+    cairo_move_to(c, x, y0 + 14.0);
+    cairo_line_to(c, x, y0 + 19.0);
+    cairo_stroke(c);
+    std::snprintf(text, sizeof text, "%.4g", v);
+    cairo_text_extents(c, text, &ext);
+    cairo_move_to(c, std::clamp(x - 0.5 * ext.x_advance, x0, x1 - ext.x_advance), y0 + 31.0);
+    cairo_show_text(c, text);
+  }
+  // The title, and what the ends mean: the colours stop at the 1st and 99th percentiles.
+  const std::string title = options.field_name + "   (ends: 1st and 99th percentile, beyond in the end colours)";
+  cairo_set_font_size(c, 13.0);
+  cairo_text_extents(c, title.c_str(), &ext);
+  cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 49.0);
+  cairo_show_text(c, title.c_str());
+}
+
+// True when the given vertices all lie beyond one side of the window `box`.
+bool outside_window(const TriMesh& mesh, const Box& box, std::initializer_list<int> vertices) {
+  bool left = true, right = true, below = true, above = true;
+  for (int v : vertices) {
+    const Vec2 p = mesh.points[v];
+    left = left && p.x < box.lo.x;
+    right = right && p.x > box.hi.x;
+    below = below && p.y < box.lo.y;
+    above = above && p.y > box.hi.y;
+  }
+  return left || right || below || above;
+}
+
+
+// Clips to the window and fills the triangles: by the field's colour, else by region.
+void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
+               bool field, double least, double most) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
-  // The colour range: the field's 1st to 99th percentile, so that a few peaks (at
-  // junctions) do not wash out the rest; values beyond take the end colours.
-  double least = 0.0, most = 1.0;
-  if (field) {
-    std::vector<double> v = options.field;
-    const std::size_t k = v.size() / 100;
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-    least = v[k];
-    std::nth_element(v.begin(), v.end() - 1 - static_cast<std::ptrdiff_t>(k), v.end());
-    most = v[v.size() - 1 - k];
-    if (!(most > least)) most = least + 1.0;
-  }
   // A detail: clip to the window, and skip what lies wholly outside it.
   const Vec2 lo = px(box.lo), hi = px(box.hi);
   cairo_rectangle(c, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
   cairo_clip(c);
-  auto outside = [&](std::initializer_list<int> vertices) {
-    bool left = true, right = true, below = true, above = true;
-    for (int v : vertices) {
-      const Vec2 p = mesh.points[v];
-      left = left && p.x < box.lo.x;
-      right = right && p.x > box.hi.x;
-      below = below && p.y < box.lo.y;
-      above = above && p.y > box.hi.y;
-    }
-    return left || right || below || above;
-  };
+  auto outside = [&](std::initializer_list<int> vertices) { return outside_window(mesh, box, vertices); };
 
   // Adds triangle t to the current path, unless it lies outside the window.
   auto trace = [&](std::size_t t) {
@@ -263,6 +289,15 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     cairo_fill(c);
   }
 
+}
+
+// The mesh's edges (thin, when they are long enough to see and no field is drawn), the
+// outline between regions (or options.outline_by) and the boundary.
+void stroke_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
+                 bool field) {
+  auto px = [&](Vec2 p) { return canvas.px(p); };
+  const double scale = canvas.scale();
+  auto outside = [&](std::initializer_list<int> vertices) { return outside_window(mesh, box, vertices); };
   cairo_set_antialias(c, CAIRO_ANTIALIAS_DEFAULT);
   cairo_set_line_cap(c, CAIRO_LINE_CAP_ROUND);
   const std::vector<MeshEdge> edges = mesh_edges(mesh);
@@ -289,39 +324,34 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
          {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 
+}
+
+}  // namespace
+
+void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
+  Box box;
+  for (const Vec2 p : mesh.points) box.extend(p);
+  if (box.empty() || mesh.triangles.empty()) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
+  if (options.view) {
+    if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
+    box = *options.view;
+  }
+  const bool field = !options.field.empty();
+  if (field && options.field.size() != mesh.triangles.size())
+    throw IoError(file.string() + ": the field has " + std::to_string(options.field.size()) + " values for " +
+                  std::to_string(mesh.triangles.size()) + " triangles");
+  const bool key = has_key(options, field);
+  Canvas canvas(box, options, (field ? 64 : 0) + (key ? static_cast<int>(kKeyRow) : 0));
+  cairo_t* c = canvas.get();
+  auto px = [&](Vec2 p) { return canvas.px(p); };
+  // The colour range: the field's 1st to 99th percentile, so that a few peaks (at
+  // junctions) do not wash out the rest; values beyond take the end colours.
+  const auto [least, most] = field ? percentile_range(options.field) : std::pair{0.0, 1.0};
+  fill_mesh(c, canvas, mesh, box, options, field, least, most);
+  stroke_mesh(c, canvas, mesh, box, options, field);
   cairo_reset_clip(c);
   if (key) draw_key(c, canvas, options, box.width(), field, px(box.lo).y + options.margin_px * 0.5);
-  if (field) {  // the colour bar: least value on the left, greatest on the right, ticked
-    const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 56.0;
-    for (int i = 0; i < 256; ++i) {
-      const Rgb col = viridis(i / 255.0);
-      cairo_set_source_rgb(c, col.r, col.g, col.b);
-      cairo_rectangle(c, x0 + (x1 - x0) * i / 256.0, y0, (x1 - x0) / 256.0 + 0.5, 14.0);
-      cairo_fill(c);
-    }
-    cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
-    cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(c, 12.0);
-    cairo_set_line_width(c, 1.0);
-    char text[64];
-    cairo_text_extents_t ext;
-    for (const double v : nice_ticks(least, most)) {
-      const double x = x0 + (x1 - x0) * (v - least) / (most - least);
-      cairo_move_to(c, x, y0 + 14.0);
-      cairo_line_to(c, x, y0 + 19.0);
-      cairo_stroke(c);
-      std::snprintf(text, sizeof text, "%.4g", v);
-      cairo_text_extents(c, text, &ext);
-      cairo_move_to(c, std::clamp(x - 0.5 * ext.x_advance, x0, x1 - ext.x_advance), y0 + 31.0);
-      cairo_show_text(c, text);
-    }
-    // The title, and what the ends mean: the colours stop at the 1st and 99th percentiles.
-    const std::string title = options.field_name + "   (ends: 1st and 99th percentile, beyond in the end colours)";
-    cairo_set_font_size(c, 13.0);
-    cairo_text_extents(c, title.c_str(), &ext);
-    cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 49.0);
-    cairo_show_text(c, title.c_str());
-  }
+  if (field) draw_colour_bar(c, canvas, options, least, most);
   canvas.save(file);
 }
 
@@ -357,130 +387,6 @@ void write_tessellation_png(const std::filesystem::path& file, const Tessellatio
   }
   if (key) draw_key(c, canvas, options, t.width, false, canvas.px({0.0, 0.0}).y + options.margin_px * 0.5);
   canvas.save(file);
-}
-
-void write_plot_png(const std::filesystem::path& file, const Plot& plot) {
-  Box data;
-  for (const PlotSeries& s : plot.series)
-    for (std::size_t k = 0; k < s.points.size(); ++k) {
-      const Vec2 p = s.points[k];
-      if (!is_finite(p)) continue;
-      data.extend(p);
-      const double e = k < s.error.size() && std::isfinite(s.error[k]) ? s.error[k] : 0.0;
-      data.extend(Vec2{p.x, p.y - e});
-      data.extend(Vec2{p.x, p.y + e});
-    }
-  if (data.empty()) throw IoError(file.string() + ": nothing to plot");
-  // Some air around the data, and a range even for a single value.
-  const Vec2 pad{std::max(0.05 * data.width(), 1e-9 * std::max(1.0, std::abs(data.lo.x))),
-                 std::max(0.08 * data.height(), 1e-9 * std::max(1.0, std::abs(data.lo.y)))};
-  data = Box{data.lo - pad, data.hi + pad};
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create(CAIRO_FORMAT_RGB24, plot.width_px, plot.height_px), cairo_surface_destroy);
-  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), cairo_destroy);
-  cairo_t* c = cr.get();
-  cairo_set_source_rgb(c, 1, 1, 1);
-  cairo_paint(c);
-  const double left = 90, right = plot.width_px - 200.0, top = 20, bottom = plot.height_px - 60.0;
-  auto px = [&](Vec2 p) {
-    return Vec2{left + (p.x - data.lo.x) / data.width() * (right - left),
-                bottom - (p.y - data.lo.y) / data.height() * (bottom - top)};
-  };
-  static constexpr std::array<Rgb, 6> palette{
-      {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65}, {0.35, 0.35, 0.35}, {0.90, 0.62, 0.00}}};
-  cairo_select_font_face(c, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(c, 12.0);
-  // Axes with round ticks.
-  cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
-  cairo_set_line_width(c, 1.0);
-  cairo_rectangle(c, left, top, right - left, bottom - top);
-  cairo_stroke(c);
-  char text[64];
-  cairo_text_extents_t ext;
-  for (const double fx : nice_ticks(data.lo.x, data.hi.x)) {
-    const double x = px({fx, data.lo.y}).x;
-    cairo_move_to(c, x, bottom);
-    cairo_line_to(c, x, bottom + 5);
-    cairo_stroke(c);
-    std::snprintf(text, sizeof text, "%.4g", fx);
-    cairo_text_extents(c, text, &ext);
-    cairo_move_to(c, x - 0.5 * ext.x_advance, bottom + 18);
-    cairo_show_text(c, text);
-  }
-  for (const double fy : nice_ticks(data.lo.y, data.hi.y)) {
-    const double y = px({data.lo.x, fy}).y;
-    cairo_move_to(c, left - 5, y);
-    cairo_line_to(c, left, y);
-    cairo_stroke(c);
-    std::snprintf(text, sizeof text, "%.4g", fy);
-    cairo_text_extents(c, text, &ext);
-    cairo_move_to(c, left - 8 - ext.x_advance, y + 4);
-    cairo_show_text(c, text);
-  }
-  cairo_move_to(c, 0.5 * (left + right) - 40, plot.height_px - 15.0);
-  cairo_show_text(c, plot.x_label.c_str());
-  cairo_save(c);
-  cairo_move_to(c, 18, 0.5 * (top + bottom) + 60);
-  cairo_rotate(c, -M_PI / 2);
-  cairo_show_text(c, plot.y_label.c_str());
-  cairo_restore(c);
-  // The series, and the legend on the right.
-  double legend_y = top + 10;
-  for (const PlotSeries& s : plot.series) {
-    const Rgb col = palette[static_cast<std::size_t>(s.colour) % palette.size()];
-    cairo_set_source_rgb(c, col.r, col.g, col.b);
-    if (s.line) {
-      const double dash[] = {6.0, 4.0};
-      cairo_set_dash(c, dash, 2, 0);
-      cairo_set_line_width(c, 1.5);
-      bool first = true;
-      for (const Vec2 p : s.points) {
-        if (!is_finite(p)) continue;
-        const Vec2 q = px(p);
-        first ? cairo_move_to(c, q.x, q.y) : cairo_line_to(c, q.x, q.y);
-        first = false;
-      }
-      cairo_stroke(c);
-      if (!s.name.empty()) {
-        cairo_move_to(c, right + 15, legend_y);
-        cairo_line_to(c, right + 35, legend_y);
-        cairo_stroke(c);
-      }
-      cairo_set_dash(c, nullptr, 0, 0);
-    } else {
-      for (std::size_t k = 0; k < s.points.size(); ++k) {
-        const Vec2 p = s.points[k];
-        if (!is_finite(p)) continue;
-        const Vec2 q = px(p);
-        cairo_arc(c, q.x, q.y, 3.5, 0, 2 * M_PI);
-        cairo_fill(c);
-        if (k < s.error.size() && std::isfinite(s.error[k]) && s.error[k] > 0.0) {
-          // The bar, with caps.
-          const Vec2 lo = px({p.x, p.y - s.error[k]}), hi = px({p.x, p.y + s.error[k]});
-          cairo_set_line_width(c, 1.5);
-          cairo_move_to(c, q.x, lo.y);
-          cairo_line_to(c, q.x, hi.y);
-          for (const double y : {lo.y, hi.y}) {
-            cairo_move_to(c, q.x - 5, y);
-            cairo_line_to(c, q.x + 5, y);
-          }
-          cairo_stroke(c);
-        }
-      }
-      if (!s.name.empty()) {
-        cairo_arc(c, right + 25, legend_y, 3.5, 0, 2 * M_PI);
-        cairo_fill(c);
-      }
-    }
-    if (s.name.empty()) continue;  // drawn, not in the legend
-    cairo_set_source_rgb(c, 0.1, 0.1, 0.1);
-    cairo_move_to(c, right + 42, legend_y + 4);
-    cairo_show_text(c, s.name.c_str());
-    legend_y += 20;
-  }
-  cairo_surface_flush(surface.get());
-  if (cairo_surface_write_to_png(surface.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
-    throw IoError(file.string() + ": cannot write PNG");
 }
 
 }  // namespace grainmesh
