@@ -120,17 +120,11 @@ std::vector<std::string> write_cases(const std::filesystem::path& dir, const Exp
 // report.json of a run before the solve: what was made and how long each stage took.
 Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, const GrainMesh& m, const MeshQuality& q,
                 const std::vector<std::string>& case_dirs, const Json& seconds, const Json& memory, bool solve) {
-  Json phases = Json::array();
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    phases.push_back({{"name", t.phases[p].name},
-                      {"target_fraction", t.stats.phases[p].target_fraction},
-                      {"achieved_fraction", t.stats.phases[p].achieved_fraction},
-                      {"grains", t.stats.phases[p].grains}});
   Json report{{"config", c.source()},
               {"config_fingerprint", config_fingerprint(c)},
               {"seed", plan.tess_job.seed},
               {"grains", t.stats.grains},
-              {"phases", phases},
+              {"phases", phases_json(t)},
               {"statistics", descriptors_json(t)},
               {"mesh",
                {{"points", m.mesh.points.size()},

@@ -264,20 +264,6 @@ std::vector<std::string> tessellation_warnings(const Tessellation& t) {
   return warnings;
 }
 
-namespace {
-
-Json phases_json(const Tessellation& t) {
-  Json out = Json::array();
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    out.push_back({{"name", t.phases[p].name},
-                   {"target_fraction", t.stats.phases[p].target_fraction},
-                   {"achieved_fraction", t.stats.phases[p].achieved_fraction},
-                   {"grains", t.stats.phases[p].grains}});
-  return out;
-}
-
-}  // namespace
-
 void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);

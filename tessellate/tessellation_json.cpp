@@ -172,4 +172,14 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
   return t;
 }
 
+nlohmann::ordered_json phases_json(const Tessellation& t) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    out.push_back({{"name", t.phases[p].name},
+                   {"target_fraction", t.stats.phases[p].target_fraction},
+                   {"achieved_fraction", t.stats.phases[p].achieved_fraction},
+                   {"grains", t.stats.phases[p].grains}});
+  return out;
+}
+
 }  // namespace grainmesh

@@ -28,6 +28,9 @@ std::string tessellation_to_json(const Tessellation& t);
 // {PHASE: value}, null where undefined (no boundary; no other phase touching).
 nlohmann::ordered_json descriptors_json(const Tessellation& t);
 
+// The phases as the reports give them: [{name, target_fraction, achieved_fraction, grains}].
+nlohmann::ordered_json phases_json(const Tessellation& t);
+
 // Parses and validates; errors (GeometryError) start with `source`.
 Tessellation tessellation_from_json(const std::string& text, const std::string& source);
 
