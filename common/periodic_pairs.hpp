@@ -15,7 +15,6 @@ namespace grainmesh {
 struct PeriodicPairs {
   std::vector<std::pair<int, int>> x, y;
 
-  bool empty() const { return x.empty() && y.empty(); }
   friend bool operator==(const PeriodicPairs&, const PeriodicPairs&) = default;
 };
 

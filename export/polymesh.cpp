@@ -81,10 +81,12 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
     const Vec2 mid = 0.5 * (mesh.points[f.a] + mesh.points[f.b]);
     return is_vertical(side) ? mid.y : mid.x;
   };
-  for (CellSide s : {kLeft, kRight, kBottom, kTop})
+  for (CellSide s : {kLeft, kRight, kBottom, kTop}) {
+    if (cyclic && (s == kRight || s == kTop)) continue;  // ordered as the images of left and bottom below
     std::sort(sides[s].begin(), sides[s].end(), [&](const SideFace& x, const SideFace& y) {
       return cyclic ? along(x, s) < along(y, s) : x.owner < y.owner;
     });
+  }
   if (cyclic) {
     if (!sides[kNoSide].empty())
       throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");

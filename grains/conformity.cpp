@@ -49,10 +49,7 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
   dist.reserve(t.regions.size());
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     PolygonRings rings;
-    for (const auto& ring : t.regions[r].rings) {
-      rings.emplace_back();
-      for (int v : ring) rings.back().push_back(t.vertices[v]);
-    }
+    for (const auto& ring : t.regions[r].rings) rings.push_back(ring_points(t.vertices, ring));
     dist.emplace_back(rings);
     regions_of[t.regions[r].grain].push_back(static_cast<int>(r));
   }

@@ -22,7 +22,6 @@ class PointSet {
 
   std::size_t size() const { return p_.size(); }
   std::size_t fixed() const { return fixed_; }
-  bool is_fixed(std::size_t i) const { return i < fixed_; }
   const std::vector<Vec2>& positions() const { return p_; }
   Vec2& operator[](std::size_t i) { return p_[i]; }
   const Vec2& operator[](std::size_t i) const { return p_[i]; }

@@ -11,7 +11,6 @@
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
-#include "export/picture.hpp"
 #include "pipelines/result_pictures.hpp"
 
 namespace grainmesh {
@@ -161,7 +160,7 @@ void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, Json& effect
 }  // namespace
 
 Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures] = in;
+  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
@@ -179,8 +178,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields, &h.cell_stress}});
-  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures,
-                       length_unit_name(foam.convert_to_meters));
+  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -202,7 +200,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
 }
 
 Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures] = in;
+  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   std::vector<std::filesystem::path> dirs, shown;
   for (const LoadCase& lc : periodic_load_cases(e, foam)) {
@@ -254,8 +252,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
       write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, m);
   }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
-  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures,
-                       length_unit_name(foam.convert_to_meters));
+  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures, unit);
 
   check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress), effective, warnings);
   return answer;

@@ -28,7 +28,7 @@ std::string periodic_case_dir(const LoadCase& c);
 
 // What the answers are computed from and written beside: the run's staging directory
 // `dir` (cases in it), its tessellation, mesh and exported mesh, the export's options,
-// the run's time limit and its pictures (none when picture_width is 0).
+// the run's time limit and its pictures (none when picture_width is 0) with their unit.
 struct SolveInput {
   const std::filesystem::path& dir;
   const StagedOutput& staged;
@@ -40,6 +40,7 @@ struct SolveInput {
   const Deadline& deadline;
   int picture_width;
   bool all_pictures;
+  const std::string& unit;  // the pictures' length unit (length_unit_name of convert_to_meters)
 };
 
 // The mixed (thesis) load's answer in report.json (case/), with the bounds that hold for

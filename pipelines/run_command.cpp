@@ -279,7 +279,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
 
   const double solve_seconds =
       solve ? solve_stage(SolveInput{dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
-                                     all_pictures},
+                                     all_pictures, unit},
                           staged, plan.boundary, stage, memory, report, warnings)
             : 0.0;
   report["seconds"]["solve"] = solve_seconds;

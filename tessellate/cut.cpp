@@ -106,12 +106,6 @@ class VertexTable {
   PointMap<int> ids_;
 };
 
-std::vector<Vec2> ring_points(const std::vector<Vec2>& vs, const std::vector<int>& ring) {
-  std::vector<Vec2> pts;
-  for (int v : ring) pts.push_back(vs[v]);
-  return pts;
-}
-
 // Matrix regions in binder mode: the cell minus the grain pieces, traced as rings.
 void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
   const double W = t.width, H = t.height;

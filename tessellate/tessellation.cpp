@@ -96,8 +96,7 @@ std::vector<std::vector<int>> cell_neighbours(const TorusGraph& g, const std::ve
 double region_sharpest(const Tessellation& t, const Region& r) {
   double best = 2.0 * std::numbers::pi;
   for (std::size_t q = 0; q < r.rings.size(); ++q) {
-    std::vector<Vec2> pts;
-    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
+    std::vector<Vec2> pts = ring_points(t.vertices, r.rings[q]);
     if (q > 0) std::reverse(pts.begin(), pts.end());
     best = std::min(best, sharpest_corner(pts));
   }
@@ -393,13 +392,17 @@ void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector
 
 CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b) { return side_along(Box{{0.0, 0.0}, {t.width, t.height}}, a, b); }
 
+std::vector<Vec2> ring_points(const std::vector<Vec2>& vertices, const std::vector<int>& ring) {
+  std::vector<Vec2> pts;
+  pts.reserve(ring.size());
+  for (int v : ring) pts.push_back(vertices[v]);
+  return pts;
+}
+
 double region_area(const Tessellation& t, const Region& r) {
   double a = 0.0;
-  for (std::size_t q = 0; q < r.rings.size(); ++q) {
-    std::vector<Vec2> pts;
-    for (int v : r.rings[q]) pts.push_back(t.vertices[v]);
-    a += (q == 0 ? 1.0 : -1.0) * polygon_area(pts);
-  }
+  for (std::size_t q = 0; q < r.rings.size(); ++q)
+    a += (q == 0 ? 1.0 : -1.0) * polygon_area(ring_points(t.vertices, r.rings[q]));
   return a;
 }
 

@@ -140,6 +140,9 @@ void validate(const Tessellation& t);
 // points on a side carry its coordinate.
 CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b);
 
+// The positions of a ring of vertex ids, in its order.
+std::vector<Vec2> ring_points(const std::vector<Vec2>& vertices, const std::vector<int>& ring);
+
 // Area of a region (outer minus holes).
 double region_area(const Tessellation& t, const Region& r);
 

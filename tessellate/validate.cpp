@@ -52,8 +52,7 @@ void check_areas(const Tessellation& t) {
   double total = 0.0;
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     for (const auto& ring : t.regions[r].rings) {
-      std::vector<Vec2> pts;
-      for (int v : ring) pts.push_back(t.vertices[v]);
+      const std::vector<Vec2> pts = ring_points(t.vertices, ring);
       if (!(polygon_area(pts) > 0.0)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not counter-clockwise");
       if (!ring_is_simple(pts)) throw GeometryError("tessellation: region " + std::to_string(r) + " has a ring that is not simple");
     }
