@@ -28,7 +28,7 @@ ExportMesh grid_mesh(int n) {
       const int grain = (j / 10) * (n / 10 + 1) + i / 10;  // 10 x 10 squares per grain
       for (const auto& t : {std::array<int, 3>{a, b, d}, std::array<int, 3>{a, d, c}}) {
         e.mesh.triangles.push_back(t);
-        e.mesh.region.push_back(grain);
+        e.grain.push_back(grain);
         e.phase.push_back(grain % 7 == 0 ? 1 : 0);
       }
     }

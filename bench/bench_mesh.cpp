@@ -201,8 +201,8 @@ Json fibres_global(const std::filesystem::path& source) {
   const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(source / "data/examples/fibres_6.ini")));
   const MeshQuality q = measure_quality(r.mesh);
   double fibre = 0.0;
-  for (std::size_t k = 0; k < r.mesh.region.size(); ++k)
-    if (r.mesh.region[k] == 1) fibre += triangle_area(r.mesh, static_cast<int>(k));
+  for (std::size_t k = 0; k < r.phase.size(); ++k)
+    if (r.phase[k] == 1) fibre += triangle_area(r.mesh, static_cast<int>(k));
   return {{"seconds", r.stats.seconds},  {"triangles", r.mesh.triangles.size()},
           {"q_min", q.q_min},            {"q_mean", q.q_mean},
           {"min_angle_deg", q.min_angle_deg},

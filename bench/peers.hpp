@@ -96,7 +96,6 @@ inline TriMesh read_msh2(const std::filesystem::path& file) {
     }
   }
   if (m.triangles.empty()) throw std::runtime_error(file.string() + " holds no triangles");
-  m.region.assign(m.triangles.size(), 0);
   return m;
 }
 

@@ -52,11 +52,12 @@ struct FoamPhase {
   double alpha = 0.0;           // linear thermal expansion, 1/K
 };
 
-// What the export needs of a mesh: triangles with a grain (mesh.region) and a phase each,
+// What the export needs of a mesh: triangles with a grain and a phase each,
 // the phases, and the cell whose sides become the patches left, right, bottom, top
 // (boundary edges elsewhere, e.g. around a hole, form the patch `boundary`).
 struct ExportMesh {
   TriMesh mesh;
+  std::vector<int> grain;         // #T
   std::vector<int> phase;         // #T, index into phases
   std::vector<FoamPhase> phases;
   Box cell;

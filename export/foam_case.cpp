@@ -15,7 +15,7 @@ namespace {
 
 // Refuses what the case cannot carry: a phase without a usable E, nu (or alpha, under a
 // temperature change), a temperature change off a cyclic case, a triangle without a
-// phase, a load the cell cannot take (check_load).
+// grain or phase, a load the cell cannot take (check_load).
 void check_case_input(const ExportMesh& m, const FoamOptions& o) {
   for (const FoamPhase& p : m.phases) {
     if (!(p.youngs_modulus > 0.0) || !std::isfinite(p.youngs_modulus))
@@ -30,7 +30,8 @@ void check_case_input(const ExportMesh& m, const FoamOptions& o) {
   for (const FoamPhase& p : m.phases)
     if (thermal && !(p.alpha >= 0.0 && std::isfinite(p.alpha)))
       throw ConfigError("phase." + p.name + ".alpha: must be a finite number >= 0 (1/K), got " + to_text(p.alpha));
-  if (m.phase.size() != m.mesh.triangles.size()) throw GeometryError("export: the mesh needs a phase per triangle");
+  if (m.phase.size() != m.mesh.triangles.size() || m.grain.size() != m.mesh.triangles.size())
+    throw GeometryError("export: the mesh needs a grain and a phase per triangle");
   for (int ph : m.phase)
     if (ph < 0 || static_cast<std::size_t>(ph) >= m.phases.size())
       throw GeometryError("export: a triangle names phase " + std::to_string(ph) + ", which does not exist");

@@ -42,7 +42,7 @@ bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& o) {
 }
 
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
-  ExportMesh e{.mesh = m.mesh, .phase = m.phase, .phases = {}, .cell = Box{{0.0, 0.0}, {t.width, t.height}},
+  ExportMesh e{.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = {}, .cell = Box{{0.0, 0.0}, {t.width, t.height}},
                .periodic = t.periodic, .pairs = m.pairs};
   e.phases = foam_phases(t.phases);
   return e;

@@ -238,7 +238,7 @@ bool outside_window(const TriMesh& mesh, const Box& box, std::initializer_list<i
 }
 
 
-// Clips to the window and fills the triangles: by the field's colour, else by region.
+// Clips to the window and fills the triangles: by the field's colour, else by fill_by.
 void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
                bool field, double least, double most) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
@@ -275,13 +275,14 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box&
     }
     cairo_restore(c);
   }
-  int max_region = field ? -1 : 0;
+  auto label = [&](std::size_t t) { return options.fill_by.empty() ? 0 : options.fill_by[t]; };
+  int max_label = field ? -1 : 0;
   if (!field)
-    for (int r : mesh.region) max_region = std::max(max_region, r);
-  for (int r = 0; r <= max_region; ++r) {
+    for (int r : options.fill_by) max_label = std::max(max_label, r);
+  for (int r = 0; r <= max_label; ++r) {
     bool any = false;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      if (mesh.region[t] == r && trace(t)) any = true;
+      if (label(t) == r && trace(t)) any = true;
     }
     if (!any) continue;
     const Rgb col = region_colour(r);
@@ -292,7 +293,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box&
 }
 
 // The mesh's edges (thin, when they are long enough to see and no field is drawn), the
-// outline between regions (or options.outline_by) and the boundary.
+// outline between labels (outline_by, else fill_by) and the boundary.
 void stroke_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
                  bool field) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
@@ -319,9 +320,10 @@ void stroke_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Bo
   if (mean_len >= 3.0 && !field)
     stroke([](const MeshEdge&) { return true; }, std::clamp(mean_len / 25.0, 0.4, 1.0), {0.25, 0.25, 0.30});
   const double thick = std::clamp(mean_len / 6.0, 1.5, 3.0);
-  const std::vector<int>& outline = options.outline_by.empty() ? mesh.region : options.outline_by;
-  stroke([&](const MeshEdge& e) { return e.right >= 0 && outline[e.left] != outline[e.right]; }, thick,
-         {0.75, 0.15, 0.10});
+  const std::vector<int>& outline = options.outline_by.empty() ? options.fill_by : options.outline_by;
+  if (!outline.empty())
+    stroke([&](const MeshEdge& e) { return e.right >= 0 && outline[e.left] != outline[e.right]; }, thick,
+           {0.75, 0.15, 0.10});
   stroke([](const MeshEdge& e) { return e.right < 0; }, thick, {0.05, 0.05, 0.10});
 
 }
@@ -337,9 +339,14 @@ void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, cons
     box = *options.view;
   }
   const bool field = !options.field.empty();
-  if (field && options.field.size() != mesh.triangles.size())
-    throw IoError(file.string() + ": the field has " + std::to_string(options.field.size()) + " values for " +
-                  std::to_string(mesh.triangles.size()) + " triangles");
+  auto check_size = [&](std::size_t n, const char* what) {
+    if (n != 0 && n != mesh.triangles.size())
+      throw IoError(file.string() + ": the " + what + " has " + std::to_string(n) + " values for " +
+                    std::to_string(mesh.triangles.size()) + " triangles");
+  };
+  check_size(options.field.size(), "field");
+  check_size(options.fill_by.size(), "fill labelling");
+  check_size(options.outline_by.size(), "outline labelling");
   const bool key = has_key(options, field);
   Canvas canvas(box, options, (field ? 64 : 0) + (key ? static_cast<int>(kKeyRow) : 0));
   cairo_t* c = canvas.get();

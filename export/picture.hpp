@@ -15,14 +15,17 @@ namespace grainmesh {
 struct PictureOptions {
   int width_px = 1200;  // image width; the height follows the mesh's aspect ratio
   int margin_px = 20;
-  std::vector<int> outline_by{};  // #T labels: thick lines where they differ; empty = the region
+  // #T labels (e.g. phases) filling the triangles: 0 grey-blue, 1 orange, further labels
+  // from a fixed palette; empty: all 0.
+  std::vector<int> fill_by{};
+  std::vector<int> outline_by{};  // #T labels (e.g. grains): thick lines where they differ; empty = fill_by
   std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
-  // A field to show instead of the regions: one value per triangle, coloured (viridis)
+  // A field to show instead of fill_by: one value per triangle, coloured (viridis)
   // from its 1st to its 99th percentile, with a ticked colour bar titled `field_name`
   // below.
   std::vector<double> field{};
   std::string field_name{};
-  // Below the picture: the name of each region label's colour (a legend; regions drawn,
+  // Below the picture: the name of each fill_by label's colour (a legend; labels drawn,
   // not a field), and a scale bar labelled in `length_unit` (e.g. "µm"; empty: the
   // number alone, in the caller's unit).
   std::vector<std::string> legend{};
@@ -40,9 +43,9 @@ double scale_bar_length(double longest);
 // gives three).
 std::vector<double> nice_ticks(double lo, double hi);
 
-// Triangles filled by region (region 0 grey-blue, 1 orange, further labels from a
-// fixed palette) or by a field, thin mesh edges when they are at least a few pixels long,
-// and thick lines along the mesh boundary and between regions (outline_by). Throws IoError.
+// Triangles filled by label (fill_by) or by a field, thin mesh edges when they are at
+// least a few pixels long, and thick lines along the mesh boundary and between labels
+// (outline_by). Throws IoError, also for label or field arrays not of one value per triangle.
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
 
 // The cell with its regions filled by phase (holes left open), grain boundaries in thin

@@ -121,7 +121,6 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
 // Zones: a cellZone per phase (every cell in exactly one), optionally per grain; faceZones
 // of grain boundaries and phase interfaces.
 void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
-  const TriMesh& mesh = m.mesh;
   for (std::size_t p = 0; p < m.phases.size(); ++p) {
     std::vector<int> cells;
     for (int t = 0; t < pm.cells; ++t)
@@ -130,7 +129,7 @@ void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
   }
   if (o.grain_zones) {
     std::map<int, std::vector<int>> by_grain;
-    for (int t = 0; t < pm.cells; ++t) by_grain[mesh.region[t]].push_back(t);
+    for (int t = 0; t < pm.cells; ++t) by_grain[m.grain[t]].push_back(t);
     for (auto& [g, cells] : by_grain) pm.cell_zones.emplace_back("grain" + std::to_string(g), std::move(cells));
   }
   // faceZones: grain boundaries and phase interfaces; a face's flip says that it points
@@ -139,9 +138,9 @@ void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
   PolyMesh::FaceZone interfaces{.name = "phaseInterfaces", .faces = {}, .flip = {}};
   for (int f = 0; f < pm.internal_faces(); ++f) {
     const int o_ = pm.owner[f], nb = pm.neighbour[f];
-    if (mesh.region[o_] != mesh.region[nb]) {
+    if (m.grain[o_] != m.grain[nb]) {
       grains.faces.push_back(f);
-      grains.flip.push_back(mesh.region[o_] > mesh.region[nb]);
+      grains.flip.push_back(m.grain[o_] > m.grain[nb]);
     }
     if (m.phase[o_] != m.phase[nb]) {
       interfaces.faces.push_back(f);

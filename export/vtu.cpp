@@ -197,7 +197,6 @@ VtuContents read_vtu(const std::filesystem::path& file) {
     if (array->GetDataType() == VTK_INT) {
       std::vector<int> v(n);
       for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<int>(component(i));
-      if (f.name == "region" && components == 1) out.mesh.region = v;
       f.values = std::move(v);
     } else {
       std::vector<double> v(n);
@@ -214,8 +213,14 @@ VtuContents read_vtu(const std::filesystem::path& file) {
     for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i) l.labels.push_back(strings->GetValue(i));
     out.labels.push_back(std::move(l));
   }
-  if (out.mesh.region.empty()) out.mesh.region.assign(out.mesh.triangles.size(), 0);
   return out;
+}
+
+const std::vector<int>* VtuContents::ints(const std::string& name) const {
+  for (const CellField& f : fields)
+    if (f.name == name && f.components == 1 && std::holds_alternative<std::vector<int>>(f.values))
+      return &std::get<std::vector<int>>(f.values);
+  return nullptr;
 }
 
 }  // namespace grainmesh

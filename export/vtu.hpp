@@ -33,12 +33,13 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
                const std::vector<FieldLabels>& labels = {});
 
 // Reads a VTU written by write_vtu: points, triangles, every cell array (integer arrays
-// as int, the rest as double) and every string array of the field data. `mesh.region` is
-// filled from a cell array named "region" when there is one. Throws IoError.
+// as int, the rest as double) and every string array of the field data. Throws IoError.
 struct VtuContents {
   TriMesh mesh;
   std::vector<CellField> fields;
   std::vector<FieldLabels> labels;
+  // The integer scalar cell array `name` (e.g. "grain", "phase"), or nullptr.
+  const std::vector<int>* ints(const std::string& name) const;
 };
 VtuContents read_vtu(const std::filesystem::path& file);
 

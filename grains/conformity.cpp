@@ -25,7 +25,7 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
   const TriMesh& mesh = m.mesh;
   const double W = t.width, H = t.height;
   Conformity c;
-  if (m.phase.size() != mesh.triangles.size() || mesh.region.size() != mesh.triangles.size())
+  if (m.phase.size() != mesh.triangles.size() || m.grain.size() != mesh.triangles.size())
     throw GeometryError("conformity: the mesh needs a grain and a phase for each of its triangles");
   // Nodes: no two at one place, and every tessellation vertex among them.
   PointMap<int> node;
@@ -56,7 +56,7 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
   const double tol = 1e-12 * std::max(W, H);
   std::vector<double> area(t.grains.size(), 0.0);
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
-    const int g = mesh.region[k];
+    const int g = m.grain[k];
     if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size())
       throw GeometryError("conformity: triangle " + std::to_string(k) + " names grain " + std::to_string(g));
     const Vec2 centre = triangle_centroid(mesh, static_cast<int>(k));

@@ -74,7 +74,7 @@ void assemble(const Tessellation& t, const std::vector<RegionMesh>& results, Gra
       for (int& v : tri)
         if (v < 0) v = base + (-1 - v);
       out.mesh.triangles.push_back(tri);
-      out.mesh.region.push_back(t.regions[r].grain);
+      out.grain.push_back(t.regions[r].grain);
       out.phase.push_back(t.regions[r].phase);
     }
     out.iterations_max = std::max(out.iterations_max, results[r].iterations);

@@ -37,7 +37,8 @@ struct GrainMeshOptions {
 };
 
 struct GrainMesh {
-  TriMesh mesh;                      // mesh.region[t] = grain id of triangle t
+  TriMesh mesh;
+  std::vector<int> grain;            // #T grain of each triangle
   std::vector<int> phase;            // #T phase of each triangle
   // Periodic node pairs: the tessellation's vertex partners extended to the edge seeds
   // copied across (node_pairs in edge_seeds.hpp); empty when not periodic.

@@ -95,7 +95,8 @@ DistMeshResult Engine::run(Rng& rng) {
   if (fixed_boundary() && remove_crowding_points() > 0) optimize_stars();
   if (fixed_boundary() && try_steiner_points() > 0) optimize_stars();
 
-  DistMeshResult result{compact(), stats_};
+  DistMeshResult result{compact(), {}, stats_};
+  result.phase = interface_phase(result.mesh);
   validate(result.mesh);
   result.stats.finish_seconds = since(finish);
   result.stats.seconds = since(start);

@@ -94,8 +94,8 @@ struct DistMeshStats {
 };
 
 struct DistMeshResult {
-  // region[t] is 1 when triangle t lies inside the interface (dI < 0), else 0.
   TriMesh mesh;
+  std::vector<int> phase;  // #T: 1 where the triangle lies inside the interface (dI < 0), else 0
   DistMeshStats stats;
 };
 

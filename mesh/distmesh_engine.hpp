@@ -136,6 +136,7 @@ class Engine {
   std::size_t try_steiner_points();
   std::pair<double, double> shortfall(double target) const;
   TriMesh compact() const;
+  std::vector<int> interface_phase(const TriMesh& mesh) const;  // DistMeshResult::phase
 
   const DistMeshProblem& pb_;
   const DistMeshOptions& opt_;

@@ -250,11 +250,15 @@ TriMesh Engine::compact() const {
     }
   mesh.triangles.reserve(tris_.size());
   for (const auto& t : tris_) mesh.triangles.push_back({new_id[t[0]], new_id[t[1]], new_id[t[2]]});
-  mesh.region.assign(mesh.triangles.size(), 0);
+  return mesh;
+}
+
+std::vector<int> Engine::interface_phase(const TriMesh& mesh) const {
+  std::vector<int> phase(mesh.triangles.size(), 0);
   if (pb_.interface)
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      mesh.region[t] = (*pb_.interface)(triangle_centroid(mesh, static_cast<int>(t))) < 0.0 ? 1 : 0;
-  return mesh;
+      phase[t] = (*pb_.interface)(triangle_centroid(mesh, static_cast<int>(t))) < 0.0 ? 1 : 0;
+  return phase;
 }
 
 

@@ -88,9 +88,6 @@ std::vector<int> boundary_points(const TriMesh& mesh, const std::vector<MeshEdge
 
 void validate(const TriMesh& mesh) {
   const int np = static_cast<int>(mesh.points.size());
-  if (mesh.region.size() != mesh.triangles.size())
-    throw GeometryError("mesh: " + std::to_string(mesh.region.size()) + " region labels for " +
-                        std::to_string(mesh.triangles.size()) + " triangles");
   std::vector<char> used(mesh.points.size(), 0);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& v = mesh.triangles[t];

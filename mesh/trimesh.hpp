@@ -11,7 +11,6 @@ namespace grainmesh {
 struct TriMesh {
   std::vector<Vec2> points;                   // #P positions
   std::vector<std::array<int, 3>> triangles;  // #T vertex ids into points, counter-clockwise
-  std::vector<int> region;                    // #T region label of each triangle
 };
 
 // One edge of a mesh. `left` is the triangle in which the edge runs a -> b
@@ -35,8 +34,7 @@ double mesh_area(const TriMesh& mesh);
 // Ids of the points on boundary edges, ascending.
 std::vector<int> boundary_points(const TriMesh& mesh, const std::vector<MeshEdge>& edges);
 
-// Checks the invariants every stage promises: ids in range, one region label per
-// triangle, every triangle counter-clockwise with positive area (exact test), every
+// Checks the invariants every stage promises: ids in range, every triangle counter-clockwise with positive area (exact test), every
 // point used, edges manifold. Throws GeometryError naming the first violation.
 void validate(const TriMesh& mesh);
 

@@ -162,7 +162,7 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
     boundary_distance = std::max(boundary_distance, std::abs(job.problem.domain(mesh.points[v])));
   std::vector<double> region_area;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto r = static_cast<std::size_t>(mesh.region[t]);
+    const auto r = static_cast<std::size_t>(result.phase[t]);
     if (region_area.size() <= r) region_area.resize(r + 1, 0.0);
     region_area[r] += triangle_area(mesh, static_cast<int>(t));
   }
@@ -178,8 +178,9 @@ Json run_and_write(const Config& c, const std::filesystem::path& out) {
     warnings.add("mesh: the force iterations stopped (" + result.stats.stop_reason +
                  ") before the points settled (the mesh is valid; see distmesh.max_iterations)");
   StagedOutput staged(out, "domain");
-  write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", mesh.region}, {"quality", triangle_quality(mesh)}});
-  write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width, .scale_bar = true});
+  // The file calls the interface's sides "region" (0 outside, 1 inside); the export reads them as phases.
+  write_vtu(staged.dir() / "mesh.vtu", mesh, {{"region", result.phase}, {"quality", triangle_quality(mesh)}});
+  write_mesh_png(staged.dir() / "mesh.png", mesh, {.width_px = job.picture_width, .fill_by = result.phase, .scale_bar = true});
   // For the export: the bounding box is the cell; inside the interface is the second phase.
   MeshDescription description;
   for (const Vec2 p : mesh.points) description.cell.extend(p);

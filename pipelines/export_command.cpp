@@ -57,11 +57,6 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
   std::filesystem::path json_file = mesh_file;
   json_file.replace_extension(".json");
   const MeshDescription d = read_mesh_description(json_file);
-  auto cell_ints = [&](const std::string& name) -> const std::vector<int>* {
-    for (const CellField& f : vtu.fields)
-      if (f.name == name && std::holds_alternative<std::vector<int>>(f.values)) return &std::get<std::vector<int>>(f.values);
-    return nullptr;
-  };
   ExportMesh m;
   m.mesh = std::move(vtu.mesh);
   m.cell = d.cell;
@@ -75,14 +70,14 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
     }
   }
   // Grain meshes carry grain and phase; domain meshes their region, which is the phase.
-  const std::vector<int>* phase = cell_ints("phase");
-  const std::vector<int>* grain = cell_ints("grain");
-  const std::vector<int>* region = cell_ints("region");
+  const std::vector<int>* phase = vtu.ints("phase");
+  const std::vector<int>* grain = vtu.ints("grain");
+  const std::vector<int>* region = vtu.ints("region");
   if (!phase) phase = region;
   if (!grain) grain = phase;
   if (!phase) throw GeometryError(mesh_file.string() + ": no integer cell array 'phase' or 'region'");
   m.phase = *phase;
-  m.mesh.region = *grain;
+  m.grain = *grain;
   for (int p : m.phase)
     if (p < 0 || static_cast<std::size_t>(p) >= d.phases.size())
       throw GeometryError(mesh_file.string() + ": a cell has phase " + std::to_string(p) + ", but " + json_file.string() +
@@ -117,7 +112,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
   StagedOutput staged(out, "export");
   write_foam_case(staged.dir(), m, o);
   // The same cells for VTK readers: cell k of the case is triangle k.
-  write_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  write_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", m.grain}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<int> cells_per_phase(m.phases.size(), 0);
   for (int p : m.phase) ++cells_per_phase[p];

@@ -123,24 +123,22 @@ std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q,
 
 void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width,
                       bool detail, const std::string& length_unit) {
-  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.mesh.region}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.grain}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
   MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
   for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
   write_mesh_description(dir / "mesh.json", description);
   if (picture_width == 0) return;
-  TriMesh by_phase = m.mesh;
-  by_phase.region = m.phase;
   std::vector<std::string> names;
   for (const Phase& p : t.phases) names.push_back(p.name);
-  write_mesh_png(dir / "mesh.png", by_phase,
-                 {.width_px = picture_width, .outline_by = m.mesh.region, .legend = names, .scale_bar = true,
+  write_mesh_png(dir / "mesh.png", m.mesh,
+                 {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .legend = names, .scale_bar = true,
                   .length_unit = length_unit});
   if (!detail) return;
   // A detail at the centre, three grains wide, where single elements show.
   const double side = std::min({3.0 * std::sqrt(t.width * t.height / std::max(1, t.stats.grains)), t.width, t.height});
   const Vec2 centre{0.5 * t.width, 0.5 * t.height}, half{0.5 * side, 0.5 * side};
-  write_mesh_png(dir / "mesh_detail.png", by_phase,
-                 {.width_px = picture_width, .outline_by = m.mesh.region, .view = Box{centre - half, centre + half},
+  write_mesh_png(dir / "mesh_detail.png", m.mesh,
+                 {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .view = Box{centre - half, centre + half},
                   .legend = names, .scale_bar = true, .length_unit = length_unit});
 }
 
@@ -191,11 +189,10 @@ void run_check_command(const std::filesystem::path& tessellation, const std::fil
   GrainMesh m;
   m.mesh = std::move(vtu.mesh);
   auto cell_ints = [&](const std::string& name) {
-    for (const CellField& f : vtu.fields)
-      if (f.name == name && std::holds_alternative<std::vector<int>>(f.values)) return std::get<std::vector<int>>(f.values);
+    if (const std::vector<int>* v = vtu.ints(name)) return *v;
     throw IoError(mesh_file.string() + ": no integer cell array '" + name + "' (is it a grainmesh mesh.vtu?)");
   };
-  m.mesh.region = cell_ints("grain");
+  m.grain = cell_ints("grain");
   m.phase = cell_ints("phase");
   Conformity c;
   try {

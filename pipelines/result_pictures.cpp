@@ -21,7 +21,7 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
   }
   for (const auto& [name, field] : pictures)
     write_mesh_png(dir / name, m.mesh,
-                   {.width_px = picture_width, .outline_by = {}, .view = {}, .field = field.first,
+                   {.width_px = picture_width, .fill_by = {}, .outline_by = m.grain, .view = {}, .field = field.first,
                     .field_name = field.second, .legend = {}, .scale_bar = true, .length_unit = unit});
 }
 

@@ -121,7 +121,8 @@ TEST_CASE("checkMesh accepts the thesis' 6-fibre cell, its two regions as phase 
   const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(test::example("fibres_6"))));
   ExportMesh e;
   e.mesh = r.mesh;
-  e.phase = r.mesh.region;  // 1 inside the fibres
+  e.phase = r.phase;  // 1 inside the fibres
+  e.grain = r.phase;  // a domain mesh: each side of the interface one grain
   e.phases = {{"matrix", 3e9, 0.35}, {"fibre", 70e9, 0.22}};
   for (const Vec2 p : r.mesh.points) e.cell.extend(p);
   REQUIRE(std::count(e.phase.begin(), e.phase.end(), 1) > 0);
@@ -232,6 +233,7 @@ TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of t
   ExportMesh e;
   e.mesh = r.mesh;
   e.phase.assign(r.mesh.triangles.size(), 0);
+  e.grain = e.phase;
   e.phases = {{"steel", 2e11, 0.3}};
   for (const Vec2 p : r.mesh.points) e.cell.extend(p);
   test::ScratchDir dir("plate");
@@ -303,6 +305,22 @@ TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[ex
   // Without its pair, a node's faces have no partner: refused, naming the sides.
   e.pairs.x.pop_back();
   CHECK_THROWS_WITH(build_polymesh(e, {.cyclic = true}), Catch::Contains("the faces of left and right do not pair"));
+}
+
+TEST_CASE("the export refuses a mesh without one grain and one phase per triangle", "[export]") {
+  const Tessellation t = microstructure(true);
+  const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
+  const ExportMesh e = grain_export_mesh(t, m);
+  REQUIRE(e.grain == m.grain);
+  REQUIRE(e.phase == m.phase);
+  test::ScratchDir dir("foam_labels");
+  for (bool grain : {true, false}) {
+    ExportMesh short_labels = e;
+    (grain ? short_labels.grain : short_labels.phase).pop_back();
+    CHECK_THROWS_WITH(write_foam_case(dir.path() / "x", short_labels, {}),
+                      Catch::Contains("the mesh needs a grain and a phase per triangle"));
+  }
+  CHECK_FALSE(fs::exists(dir.path() / "x"));
 }
 
 TEST_CASE("the displacement starts from the field a uniform cell takes under the imposed mean strain, ASCII or "

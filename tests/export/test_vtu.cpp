@@ -8,20 +8,24 @@
 using namespace grainmesh;
 
 namespace {
-TriMesh square() { return {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, {0, 1}}; }
+TriMesh square() { return {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}}; }
+const std::vector<int> kLabels{0, 1};  // one per triangle of square()
 }  // namespace
 
 TEST_CASE("VTU files read back exactly", "[export]") {
   test::ScratchDir dir("vtu");
   const TriMesh m = square();
-  write_vtu(dir / "m.vtu", m, {{"region", m.region}, {"quality", std::vector<double>{0.25, 0.75}}});
+  write_vtu(dir / "m.vtu", m, {{"region", kLabels}, {"quality", std::vector<double>{0.25, 0.75}}});
   const VtuContents back = read_vtu(dir / "m.vtu");
   CHECK(back.mesh.points == m.points);
   CHECK(back.mesh.triangles == m.triangles);
-  CHECK(back.mesh.region == m.region);
+  REQUIRE(back.ints("region") != nullptr);
+  CHECK(*back.ints("region") == kLabels);
+  CHECK(back.ints("quality") == nullptr);  // not an integer array
+  CHECK(back.ints("grain") == nullptr);
   REQUIRE(back.fields.size() == 2);
   CHECK(back.fields[0].name == "region");
-  CHECK(std::get<std::vector<int>>(back.fields[0].values) == m.region);
+  CHECK(std::get<std::vector<int>>(back.fields[0].values) == kLabels);
   CHECK(back.fields[1].name == "quality");
   CHECK(std::get<std::vector<double>>(back.fields[1].values) == std::vector<double>{0.25, 0.75});
 }
@@ -47,8 +51,8 @@ TEST_CASE("VTU vectors, tensors and labels read back exactly", "[export]") {
 TEST_CASE("VTU output is byte-for-byte deterministic", "[export]") {
   test::ScratchDir dir("vtu");
   const TriMesh m = square();
-  write_vtu(dir / "a.vtu", m, {{"region", m.region}});
-  write_vtu(dir / "b.vtu", m, {{"region", m.region}});
+  write_vtu(dir / "a.vtu", m, {{"region", kLabels}});
+  write_vtu(dir / "b.vtu", m, {{"region", kLabels}});
   CHECK(test::read_file(dir / "a.vtu") == test::read_file(dir / "b.vtu"));
 }
 
@@ -75,4 +79,11 @@ TEST_CASE("mesh pictures are PNG files of the asked width", "[export]") {
   CHECK(be32(16) == 300);
   CHECK(be32(20) == 300);  // square mesh, square picture
   CHECK_THROWS_AS(write_mesh_png(dir / "e.png", TriMesh{}), IoError);
+  // Labels filled and outlined: one per triangle, or refused naming what is short.
+  write_mesh_png(dir / "l.png", square(), {.width_px = 300, .fill_by = kLabels});
+  CHECK(test::read_file(dir / "l.png") != png);  // the second triangle is orange
+  CHECK_THROWS_WITH(write_mesh_png(dir / "s.png", square(), {.width_px = 300, .fill_by = {0}}),
+                    Catch::Matchers::Contains("the fill labelling has 1 values for 2 triangles"));
+  CHECK_THROWS_WITH(write_mesh_png(dir / "s.png", square(), {.width_px = 300, .outline_by = {0, 1, 2}}),
+                    Catch::Matchers::Contains("the outline labelling has 3 values for 2 triangles"));
 }

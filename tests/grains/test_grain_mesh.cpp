@@ -254,7 +254,7 @@ TEST_CASE("grading: grain boundaries and junctions get their own sizes, the grai
     if (junction_distance(a) == 0.0 || junction_distance(b) == 0.0) {
       at_junctions += len;
       ++n_junction;
-    } else if (e.right >= 0 && m.mesh.region[e.left] != m.mesh.region[e.right] &&
+    } else if (e.right >= 0 && m.grain[e.left] != m.grain[e.right] &&
                junction_distance(0.5 * (a + b)) > 3.0 * h) {
       on_boundaries += len;
       ++n_boundary;

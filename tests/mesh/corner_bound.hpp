@@ -57,7 +57,7 @@ inline CornerBoundCheck check_corner_bound(const Tessellation& t, const GrainMes
     double alpha = std::numbers::pi;  // no corner: the plain bound
     for (int v : m.mesh.triangles[k])
       if (v < nv) {
-        const auto it = angle.find({m.mesh.region[k], v});
+        const auto it = angle.find({m.grain[k], v});
         if (it != angle.end()) alpha = std::min(alpha, it->second);
       }
     out.sharpest_corner = std::min(out.sharpest_corner, alpha);

@@ -102,9 +102,9 @@ TEST_CASE("internal boundaries: no triangle straddles dI = 0", "[distmesh]") {
     }
     REQUIRE_FALSE((lo < 0 && hi > 0));
     // The label agrees with the side the triangle's corners are on.
-    if (hi > 0) CHECK(r.mesh.region[t] == 0);
-    if (lo < 0) CHECK(r.mesh.region[t] == 1);
-    inside += r.mesh.region[t];
+    if (hi > 0) CHECK(r.phase[t] == 0);
+    if (lo < 0) CHECK(r.phase[t] == 1);
+    inside += r.phase[t];
   }
   CHECK(inside > 0);
 }

@@ -68,7 +68,7 @@ void check_example(const std::string& name) {
     CHECK(r.stats.interface_straddling == 0);
     double inner = 0.0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      if (mesh.region[t] == 1) inner += triangle_area(mesh, static_cast<int>(t));
+      if (r.phase[t] == 1) inner += triangle_area(mesh, static_cast<int>(t));
     CHECK(std::abs(inner / area - *want.inner_fraction) <= 0.005);
   }
 }
