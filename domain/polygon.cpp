@@ -103,63 +103,48 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
   // About two edges per cell.
   const double side = std::max(bounds_.width(), bounds_.height());
   const int n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(a_.size()) / 2.0)), 1, 2048);
-  cell_ = side / n;
-  nx_ = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell_)));
-  ny_ = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell_)));
-  auto cx = [&](double x) { return std::clamp(static_cast<int>((x - bounds_.lo.x) / cell_), 0, nx_ - 1); };
-  auto cy = [&](double y) { return std::clamp(static_cast<int>((y - bounds_.lo.y) / cell_), 0, ny_ - 1); };
-  std::vector<std::vector<int>> cells(static_cast<std::size_t>(nx_) * ny_), rows(ny_);
-  for (int e = 0; e < static_cast<int>(a_.size()); ++e) {
-    const int x0 = cx(std::min(a_[e].x, b_[e].x)), x1 = cx(std::max(a_[e].x, b_[e].x));
-    const int y0 = cy(std::min(a_[e].y, b_[e].y)), y1 = cy(std::max(a_[e].y, b_[e].y));
-    for (int y = y0; y <= y1; ++y) {
-      rows[y].push_back(e);
-      for (int x = x0; x <= x1; ++x) cells[static_cast<std::size_t>(y) * nx_ + x].push_back(e);
-    }
-  }
-  auto flatten = [](const std::vector<std::vector<int>>& lists, std::vector<int>& start, std::vector<int>& flat) {
-    start.assign(lists.size() + 1, 0);
-    for (std::size_t c = 0; c < lists.size(); ++c) start[c + 1] = start[c] + static_cast<int>(lists[c].size());
-    flat.clear();
-    for (const auto& l : lists) flat.insert(flat.end(), l.begin(), l.end());
+  const double cell = side / n;
+  grid_ = GridFrame{.lo = bounds_.lo,
+                    .cell = cell,
+                    .nx = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell))),
+                    .ny = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell)))};
+  auto rows_of = [&](std::size_t e) {
+    return std::pair{grid_.clamped_row(std::min(a_[e].y, b_[e].y)), grid_.clamped_row(std::max(a_[e].y, b_[e].y))};
   };
-  flatten(cells, start_, edges_);
-  flatten(rows, row_start_, row_edges_);
+  cells_ = CellLists(grid_.cells(), a_.size(), [&](std::size_t e, auto&& emit) {
+    const int x0 = grid_.clamped_column(std::min(a_[e].x, b_[e].x)), x1 = grid_.clamped_column(std::max(a_[e].x, b_[e].x));
+    const auto [y0, y1] = rows_of(e);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) emit(grid_.index(x, y));
+  });
+  rows_ = CellLists(static_cast<std::size_t>(grid_.ny), a_.size(), [&](std::size_t e, auto&& emit) {
+    const auto [y0, y1] = rows_of(e);
+    for (int y = y0; y <= y1; ++y) emit(static_cast<std::size_t>(y));
+  });
 }
 
 double PolygonDistance::unsigned_distance(Vec2 p) const {
   double best = std::numeric_limits<double>::infinity();
-  if (nx_ == 0) {
+  if (grid_.empty()) {
     for (std::size_t e = 0; e < a_.size(); ++e) best = std::min(best, segment_distance2(p, a_[e], b_[e]));
     return std::sqrt(best);
   }
   // Square rings of cells around p's (clamped) cell, until the ring is farther than the
   // best distance found: every edge in a nearer cell has been seen.
-  const int px = static_cast<int>(std::floor((p.x - bounds_.lo.x) / cell_));
-  const int py = static_cast<int>(std::floor((p.y - bounds_.lo.y) / cell_));
-  const int qx = std::clamp(px, 0, nx_ - 1), qy = std::clamp(py, 0, ny_ - 1);
+  const int qx = grid_.clamped_column(p.x), qy = grid_.clamped_row(p.y);
   // How far p lies outside the grid along each axis: rings count from the clamped cell.
   const double out_x = std::max({bounds_.lo.x - p.x, 0.0, p.x - bounds_.hi.x});
   const double out_y = std::max({bounds_.lo.y - p.y, 0.0, p.y - bounds_.hi.y});
-  const int rings = std::max(nx_, ny_);
+  const int rings = std::max(grid_.nx, grid_.ny);
   for (int r = 0; r <= rings; ++r) {
     // A cell of ring r is r columns or r rows from the clamped cell: along that axis at
     // least (r - 1) cells plus p's distance outside, along the other p's distance outside.
-    const double step = std::max(0, r - 1) * cell_;
+    const double step = std::max(0, r - 1) * grid_.cell;
     const double reach = std::min(std::hypot(out_x + step, out_y), std::hypot(out_x, out_y + step));
     if (r > 0 && reach > 0.0 && reach * reach > best) break;
-    for (int y = qy - r; y <= qy + r; ++y) {
-      if (y < 0 || y >= ny_) continue;
-      const bool edge_row = y == qy - r || y == qy + r;
-      for (int x = qx - r; x <= qx + r; x += (edge_row ? 1 : 2 * r)) {
-        if (x >= 0 && x < nx_) {
-          const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
-          for (int k = start_[c]; k < start_[c + 1]; ++k)
-            best = std::min(best, segment_distance2(p, a_[edges_[k]], b_[edges_[k]]));
-        }
-        if (!edge_row && r == 0) break;
-      }
-    }
+    grid_.for_ring(qx, qy, r, [&](int x, int y) {
+      for (int e : cells_[grid_.index(x, y)]) best = std::min(best, segment_distance2(p, a_[e], b_[e]));
+    });
   }
   return std::sqrt(best);
 }
@@ -167,10 +152,7 @@ double PolygonDistance::unsigned_distance(Vec2 p) const {
 bool PolygonDistance::contains(Vec2 p) const {
   if (!bounds_.contains(p)) return false;
   bool odd = false;
-  const int row = nx_ == 0 ? -1 : std::clamp(static_cast<int>((p.y - bounds_.lo.y) / cell_), 0, ny_ - 1);
-  const int count = row < 0 ? static_cast<int>(a_.size()) : row_start_[row + 1] - row_start_[row];
-  for (int k = 0; k < count; ++k) {
-    const int e = row < 0 ? k : row_edges_[row_start_[row] + k];
+  auto crosses = [&](std::size_t e) {  // false: p lies on the edge
     const Vec2 a = a_[e], b = b_[e];
     if ((a.y > p.y) != (b.y > p.y)) {
       const int o = orient2d(a, b, p);
@@ -180,6 +162,14 @@ bool PolygonDistance::contains(Vec2 p) const {
                orient2d(a, b, p) == 0) {
       return false;  // on an edge the crossing test does not see: horizontal, or at a vertex
     }
+    return true;
+  };
+  if (grid_.empty()) {
+    for (std::size_t e = 0; e < a_.size(); ++e)
+      if (!crosses(e)) return false;
+  } else {
+    for (int e : rows_[static_cast<std::size_t>(grid_.clamped_row(p.y))])
+      if (!crosses(static_cast<std::size_t>(e))) return false;
   }
   return odd;
 }

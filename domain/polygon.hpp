@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/spatial_grid.hpp"
 
 namespace grainmesh {
 
@@ -40,10 +41,9 @@ class PolygonDistance {
   Box bounds_;
   // Large polygons (a binder matrix) bin their edges in a uniform grid: every cell an
   // edge's box touches lists it. Empty for small polygons.
-  double cell_ = 0.0;
-  int nx_ = 0, ny_ = 0;
-  std::vector<int> start_, edges_;  // cell c lists edges_[start_[c] .. start_[c + 1])
-  std::vector<int> row_start_, row_edges_;  // the same by rows, for the inside test
+  GridFrame grid_;
+  CellLists cells_;
+  CellLists rows_;  // the same by rows, for the inside test
 
 };
 

@@ -1,6 +1,7 @@
 #include "grains/feature_size.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -20,39 +21,31 @@ FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gr
   }
   // A source binds only within (base - finest) / gradient of itself; bins a quarter of
   // that let a query stop after the nearest few.
-  cell_ = std::max(0.25 * (base_ - finest_) / gradient_, 1e-300);
-  lo_ = box.lo;
-  nx_ = static_cast<int>(std::min(1024.0, std::floor(box.width() / cell_) + 1));
-  ny_ = static_cast<int>(std::min(1024.0, std::floor(box.height() / cell_) + 1));
-  cell_ = std::max({cell_, box.width() / nx_, box.height() / ny_});
-  std::vector<int> bin(sources_.size());
-  start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-  least_.assign(static_cast<std::size_t>(nx_) * ny_, base_);
+  double cell = std::max(0.25 * (base_ - finest_) / gradient_, 1e-300);
+  const int nx = static_cast<int>(std::min(1024.0, std::floor(box.width() / cell) + 1));
+  const int ny = static_cast<int>(std::min(1024.0, std::floor(box.height() / cell) + 1));
+  cell = std::max({cell, box.width() / nx, box.height() / ny});
+  grid_ = GridFrame{.lo = box.lo, .cell = cell, .nx = nx, .ny = ny};
+  std::vector<std::size_t> bin(sources_.size());
+  least_.assign(grid_.cells(), base_);
   for (std::size_t k = 0; k < sources_.size(); ++k) {
-    const int x = std::min(nx_ - 1, static_cast<int>((sources_[k].p.x - lo_.x) / cell_));
-    const int y = std::min(ny_ - 1, static_cast<int>((sources_[k].p.y - lo_.y) / cell_));
-    bin[k] = y * nx_ + x;
-    ++start_[bin[k] + 1];
+    bin[k] = grid_.index(grid_.clamped_column(sources_[k].p.x), grid_.clamped_row(sources_[k].p.y));
     least_[bin[k]] = std::min(least_[bin[k]], sources_[k].h);
   }
-  for (std::size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
-  order_.resize(sources_.size());
-  std::vector<int> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t k = 0; k < sources_.size(); ++k) order_[fill[bin[k]]++] = static_cast<int>(k);
+  binned_ = CellLists(grid_.cells(), sources_.size(), [&](std::size_t k, auto&& emit) { emit(bin[k]); });
   // The least size anywhere in each bin: most queries lie where no source binds, and
   // this answers them at once.
-  floor_.assign(static_cast<std::size_t>(nx_) * ny_, base_);
+  floor_.assign(grid_.cells(), base_);
+  const Vec2 lo = grid_.lo;
   for (const SizeSource& s : sources_) {
     const double reach = (base_ - s.h) / gradient_;
-    const int x0 = std::max(0, static_cast<int>(std::floor((s.p.x - reach - lo_.x) / cell_)));
-    const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((s.p.x + reach - lo_.x) / cell_)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((s.p.y - reach - lo_.y) / cell_)));
-    const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((s.p.y + reach - lo_.y) / cell_)));
+    const int x0 = std::max(0, grid_.column(s.p.x - reach)), x1 = std::min(nx - 1, grid_.column(s.p.x + reach));
+    const int y0 = std::max(0, grid_.row(s.p.y - reach)), y1 = std::min(ny - 1, grid_.row(s.p.y + reach));
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) {
-        const double dx = std::max({0.0, lo_.x + x * cell_ - s.p.x, s.p.x - (lo_.x + (x + 1) * cell_)});
-        const double dy = std::max({0.0, lo_.y + y * cell_ - s.p.y, s.p.y - (lo_.y + (y + 1) * cell_)});
-        double& f = floor_[static_cast<std::size_t>(y) * nx_ + x];
+        const double dx = std::max({0.0, lo.x + x * cell - s.p.x, s.p.x - (lo.x + (x + 1) * cell)});
+        const double dy = std::max({0.0, lo.y + y * cell - s.p.y, s.p.y - (lo.y + (y + 1) * cell)});
+        double& f = floor_[grid_.index(x, y)];
         f = std::min(f, s.h + gradient_ * std::sqrt(dx * dx + dy * dy));
       }
   }
@@ -60,37 +53,27 @@ FeatureSize::FeatureSize(std::vector<SizeSource> sources, double base, double gr
 
 double FeatureSize::at(Vec2 x, double cap) const {
   double h = std::min(cap, base_);
-  if (nx_ == 0) {
+  if (grid_.empty()) {
     for (const SizeSource& s : sources_) h = std::min(h, s.h + gradient_ * norm(x - s.p));
     return h;
   }
   // Rings of bins around x, nearest first: ring k lies at least (k - 1) cells away, so
   // once finest + gradient (k - 1) cell reaches h nothing further can lower it.
-  const double fx = (x.x - lo_.x) / cell_, fy = (x.y - lo_.y) / cell_;
+  const double cell = grid_.cell;
+  const double fx = (x.x - grid_.lo.x) / cell, fy = (x.y - grid_.lo.y) / cell;
   const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  if (cx >= 0 && cx < nx_ && cy >= 0 && cy < ny_ && floor_[static_cast<std::size_t>(cy) * nx_ + cx] >= h) return h;
+  if (grid_.contains(cx, cy) && floor_[grid_.index(cx, cy)] >= h) return h;
   auto visit = [&](int bx, int by) {
-    const int b = by * nx_ + bx;
+    const std::size_t b = grid_.index(bx, by);
     // The distance from x to the bin bounds what its sources can give.
     const double dx = std::max({0.0, bx - fx, fx - (bx + 1)}), dy = std::max({0.0, by - fy, fy - (by + 1)});
-    if (least_[b] + gradient_ * cell_ * std::sqrt(dx * dx + dy * dy) >= h) return;
-    for (int i = start_[b]; i < start_[b + 1]; ++i) {
-      const SizeSource& s = sources_[order_[i]];
-      h = std::min(h, s.h + gradient_ * norm(x - s.p));
-    }
+    if (least_[b] + gradient_ * cell * std::sqrt(dx * dx + dy * dy) >= h) return;
+    for (int k : binned_[b]) h = std::min(h, sources_[k].h + gradient_ * norm(x - sources_[k].p));
   };
   for (int k = 0;; ++k) {
-    if (k > 0 && finest_ + gradient_ * (k - 1) * cell_ >= h) break;
-    const int x0 = cx - k, x1 = cx + k, y0 = cy - k, y1 = cy + k;
-    for (int by = std::max(0, y0); by <= std::min(ny_ - 1, y1); ++by) {
-      if (by == y0 || by == y1) {
-        for (int bx = std::max(0, x0); bx <= std::min(nx_ - 1, x1); ++bx) visit(bx, by);
-      } else {
-        if (x0 >= 0 && x0 < nx_) visit(x0, by);
-        if (x1 >= 0 && x1 < nx_) visit(x1, by);
-      }
-    }
-    if (x0 <= 0 && y0 <= 0 && x1 >= nx_ - 1 && y1 >= ny_ - 1) break;  // the whole grid seen
+    if (k > 0 && finest_ + gradient_ * (k - 1) * cell >= h) break;
+    grid_.for_ring(cx, cy, k, visit);
+    if (cx - k <= 0 && cy - k <= 0 && cx + k >= grid_.nx - 1 && cy + k >= grid_.ny - 1) break;  // the whole grid seen
   }
   return h;
 }
@@ -118,11 +101,12 @@ struct CappedNode final : SizeFunction::Node {
 // Edges (with their periodic images) in a uniform grid, for "nearest edge within R".
 class EdgeGrid {
  public:
-  EdgeGrid(const Tessellation& t, double cell, double reach) : cell_(cell) {
-    lo_ = {-reach, -reach};
-    nx_ = std::max(1, static_cast<int>(std::ceil((t.width + 2 * reach) / cell)));
-    ny_ = std::max(1, static_cast<int>(std::ceil((t.height + 2 * reach) / cell)));
-    bins_.resize(static_cast<std::size_t>(nx_) * ny_);
+  EdgeGrid(const Tessellation& t, double cell, double reach) {
+    grid_ = GridFrame{.lo = {-reach, -reach},
+                      .cell = cell,
+                      .nx = std::max(1, static_cast<int>(std::ceil((t.width + 2 * reach) / cell))),
+                      .ny = std::max(1, static_cast<int>(std::ceil((t.height + 2 * reach) / cell)))};
+    std::vector<std::array<int, 4>> spans;  // columns x0 .. x1, rows y0 .. y1 of each segment
     const int k = t.periodic ? 1 : 0;
     for (int e = 0; e < static_cast<int>(t.edges.size()); ++e)
       for (int j = -k; j <= k; ++j)
@@ -132,24 +116,27 @@ class EdgeGrid {
           Box box;
           box.extend(a);
           box.extend(b);
-          const int x0 = bin_x(box.lo.x), x1 = bin_x(box.hi.x), y0 = bin_y(box.lo.y), y1 = bin_y(box.hi.y);
-          if (x1 < 0 || y1 < 0 || x0 >= nx_ || y0 >= ny_) continue;
+          const int x0 = grid_.column(box.lo.x), x1 = grid_.column(box.hi.x);
+          const int y0 = grid_.row(box.lo.y), y1 = grid_.row(box.hi.y);
+          if (x1 < 0 || y1 < 0 || x0 >= grid_.nx || y0 >= grid_.ny) continue;
           segments_.push_back({a, b, e});
-          for (int y = std::max(y0, 0); y <= std::min(y1, ny_ - 1); ++y)
-            for (int x = std::max(x0, 0); x <= std::min(x1, nx_ - 1); ++x)
-              bins_[static_cast<std::size_t>(y) * nx_ + x].push_back(static_cast<int>(segments_.size()) - 1);
+          spans.push_back({std::max(x0, 0), std::min(x1, grid_.nx - 1), std::max(y0, 0), std::min(y1, grid_.ny - 1)});
         }
+    bins_ = CellLists(grid_.cells(), segments_.size(), [&](std::size_t s, auto&& emit) {
+      for (int y = spans[s][2]; y <= spans[s][3]; ++y)
+        for (int x = spans[s][0]; x <= spans[s][1]; ++x) emit(grid_.index(x, y));
+    });
   }
 
   // Distance from p to the nearest edge for which `skip(edge)` is false, at most `reach`.
   template <typename Skip>
   double nearest(Vec2 p, double reach, Skip&& skip) const {
     double best = reach;
-    const int x0 = std::max(0, bin_x(p.x - reach)), x1 = std::min(nx_ - 1, bin_x(p.x + reach));
-    const int y0 = std::max(0, bin_y(p.y - reach)), y1 = std::min(ny_ - 1, bin_y(p.y + reach));
+    const int x0 = std::max(0, grid_.column(p.x - reach)), x1 = std::min(grid_.nx - 1, grid_.column(p.x + reach));
+    const int y0 = std::max(0, grid_.row(p.y - reach)), y1 = std::min(grid_.ny - 1, grid_.row(p.y + reach));
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x)
-        for (int s : bins_[static_cast<std::size_t>(y) * nx_ + x]) {
+        for (int s : bins_[grid_.index(x, y)]) {
           const Seg& g = segments_[s];
           if (skip(g.edge)) continue;
           best = std::min(best, std::sqrt(segment_distance2(p, g.a, g.b)));
@@ -162,13 +149,9 @@ class EdgeGrid {
     Vec2 a, b;
     int edge;
   };
-  int bin_x(double x) const { return static_cast<int>(std::floor((x - lo_.x) / cell_)); }
-  int bin_y(double y) const { return static_cast<int>(std::floor((y - lo_.y) / cell_)); }
-  double cell_;
-  Vec2 lo_;
-  int nx_ = 1, ny_ = 1;
+  GridFrame grid_;
   std::vector<Seg> segments_;
-  std::vector<std::vector<int>> bins_;
+  CellLists bins_;
 };
 
 // On a periodic cell, the images of the sources that reach across a side, so that the
@@ -194,76 +177,98 @@ SizeFunction capped_size(std::shared_ptr<const FeatureSize> size, double cap) {
   return SizeFunction(std::make_shared<CappedNode>(std::move(size), cap));
 }
 
-std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
-                                        double gradient) {
-  const double reach = max_size / fraction;  // features wider than this never bind
-  const EdgeGrid grid(t, std::max(spacing, reach), reach);
-  // A vertex and its periodic partners are one point of the torus.
-  std::vector<int> cls(t.vertices.size());
-  for (std::size_t v = 0; v < cls.size(); ++v) cls[v] = static_cast<int>(v);
-  auto root = [&](int v) {
-    while (cls[v] != v) v = cls[v] = cls[cls[v]];
-    return v;
-  };
-  for (const auto* pairs : {&t.partners.x, &t.partners.y})
-    for (const auto& [a, b] : *pairs) cls[root(a)] = root(b);
-  std::vector<std::vector<int>> incident(t.vertices.size());
-  for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
-    incident[root(t.edges[e].v0)].push_back(e);
-    incident[root(t.edges[e].v1)].push_back(e);
+namespace {
+
+// Sources at a tessellation's features (see feature_sources), in order: one per vertex,
+// then each edge's samples.
+class FeatureSampler {
+ public:
+  FeatureSampler(const Tessellation& t, double spacing, double max_size, double fraction, double gradient)
+      : t_(t), spacing_(spacing), max_size_(max_size), fraction_(fraction), gradient_(gradient),
+        reach_(max_size / fraction), grid_(t, std::max(spacing, reach_), reach_), point_(torus_points(t)),
+        incident_(t.vertices.size()) {
+    for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
+      incident_[point_[t.edges[e].v0]].push_back(e);
+      incident_[point_[t.edges[e].v1]].push_back(e);
+    }
   }
+
+  std::vector<SizeSource> sources() {
+    std::vector<double> vertex_size(t_.vertices.size());  // what each vertex's source wants
+    for (int v = 0; v < static_cast<int>(t_.vertices.size()); ++v) vertex_size[v] = vertex_source(v);
+    for (int e = 0; e < static_cast<int>(t_.edges.size()); ++e)
+      if (!on_side(e)) edge_sources(e, vertex_size);
+    return std::move(out_);
+  }
+
+ private:
+  // A vertex and its periodic partners are one point of the torus: its representative.
+  static std::vector<int> torus_points(const Tessellation& t) {
+    std::vector<int> cls(t.vertices.size());
+    for (std::size_t v = 0; v < cls.size(); ++v) cls[v] = static_cast<int>(v);
+    auto root = [&](int v) {
+      while (cls[v] != v) v = cls[v] = cls[cls[v]];
+      return v;
+    };
+    for (const auto* pairs : {&t.partners.x, &t.partners.y})
+      for (const auto& [a, b] : *pairs) cls[root(a)] = root(b);
+    for (int v = 0; v < static_cast<int>(cls.size()); ++v) cls[v] = root(v);
+    return cls;
+  }
+
   // Cell-side edges are not features of their own on a periodic cell: the grain goes on.
-  auto on_side = [&](int e) {
-    const TessEdge& ed = t.edges[e];
-    return t.periodic && (ed.left < 0 || ed.right < 0);
-  };
-  std::vector<SizeSource> out;
-  auto add = [&](Vec2 p, double lfs) {
-    if (fraction * lfs < max_size) out.push_back({p, fraction * lfs});
-  };
-  std::vector<double> vertex_size(t.vertices.size());  // what each vertex's source wants
-  for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) {
-    const auto& mine = incident[root(v)];
-    double lfs = grid.nearest(t.vertices[v], reach, [&](int e) {
+  bool on_side(int e) const {
+    const TessEdge& ed = t_.edges[e];
+    return t_.periodic && (ed.left < 0 || ed.right < 0);
+  }
+
+  // A source wanting fraction x lfs, when that is below max_size; returns what it wants.
+  double add(Vec2 p, double lfs) {
+    if (fraction_ * lfs < max_size_) out_.push_back({p, fraction_ * lfs});
+    return fraction_ * lfs;
+  }
+
+  // Vertex v's source: the nearest edge not ending at v, and v's shortest edge.
+  double vertex_source(int v) {
+    const auto& mine = incident_[point_[v]];
+    double lfs = grid_.nearest(t_.vertices[v], reach_, [&](int e) {
       return on_side(e) || std::find(mine.begin(), mine.end(), e) != mine.end();
     });
     for (int e : mine)
-      if (!on_side(e)) lfs = std::min(lfs, norm(t.vertices[t.edges[e].v1] - t.vertices[t.edges[e].v0]));
-    add(t.vertices[v], lfs);
-    vertex_size[v] = fraction * lfs;
+      if (!on_side(e)) lfs = std::min(lfs, norm(t_.vertices[t_.edges[e].v1] - t_.vertices[t_.edges[e].v0]));
+    return add(t_.vertices[v], lfs);
   }
-  for (int e = 0; e < static_cast<int>(t.edges.size()); ++e) {
-    if (on_side(e)) continue;
-    const TessEdge& ed = t.edges[e];
-    const Vec2 a = t.vertices[ed.v0], b = t.vertices[ed.v1];
+
+  // True when edge f does not count for edge e's samples: e itself, a cell side, or an
+  // edge meeting e at an end. Near a junction those come arbitrarily close without making
+  // anything thin, unless they meet at an acute angle: a sharp corner wants small elements.
+  bool ignored(int e, int f) const {
+    const TessEdge& ed = t_.edges[e];
+    if (f == e || on_side(f)) return true;
+    const int r0 = point_[ed.v0], r1 = point_[ed.v1];
+    const int o0 = point_[t_.edges[f].v0], o1 = point_[t_.edges[f].v1];
+    if (o0 != r0 && o0 != r1 && o1 != r0 && o1 != r1) return false;
+    const int shared = (o0 == r0 || o1 == r0) ? ed.v0 : ed.v1;
+    const Vec2 v = t_.vertices[shared];
+    const Vec2 mine = t_.vertices[shared == ed.v0 ? ed.v1 : ed.v0] - v;
+    const TessEdge& o = t_.edges[f];
+    Vec2 other = t_.vertices[o.v0] == v ? t_.vertices[o.v1] - v : t_.vertices[o.v0] - v;
+    if (!(t_.vertices[o.v0] == v || t_.vertices[o.v1] == v)) return true;  // meets an image: leave it
+    return dot(mine, other) < kAcute * norm(mine) * norm(other);
+  }
+
+  // Samples about every `spacing` along edge e; where a thin feature wants far smaller
+  // elements, more between them, so that the field between two samples (growing by the
+  // gradient) stays near what the feature wants.
+  void edge_sources(int e, const std::vector<double>& vertex_size) {
+    const TessEdge& ed = t_.edges[e];
+    const Vec2 a = t_.vertices[ed.v0], b = t_.vertices[ed.v1];
     const double len = norm(b - a);
-    const int r0 = root(ed.v0), r1 = root(ed.v1);
-    // Edges meeting this one at its ends do not count: near a junction they come
-    // arbitrarily close without making anything thin.
-    auto ignored = [&](int f) {
-      if (f == e || on_side(f)) return true;
-      const int o0 = root(t.edges[f].v0), o1 = root(t.edges[f].v1);
-      if (o0 != r0 && o0 != r1 && o1 != r0 && o1 != r1) return false;
-      // An edge meeting this one at an acute angle makes a sharp corner, which
-      // wants small elements close to it; wider junctions do not.
-      const int shared = (o0 == r0 || o1 == r0) ? ed.v0 : ed.v1;
-      const Vec2 v = t.vertices[shared];
-      const Vec2 mine = (shared == ed.v0 ? b : a) - v;
-      const TessEdge& o = t.edges[f];
-      Vec2 other = t.vertices[o.v0] == v ? t.vertices[o.v1] - v : t.vertices[o.v0] - v;
-      if (!(t.vertices[o.v0] == v || t.vertices[o.v1] == v)) return true;  // meets an image: leave it
-      return dot(mine, other) < kAcute * norm(mine) * norm(other);
-    };
     auto sample = [&](double s) {
       const Vec2 p = a + s * (b - a);
-      const double lfs = grid.nearest(p, reach, ignored);
-      add(p, lfs);
-      return fraction * lfs;
+      return add(p, grid_.nearest(p, reach_, [&](int f) { return ignored(e, f); }));
     };
-    // Samples about every `spacing`; where a thin feature wants far smaller elements,
-    // more between them, so that the field between two samples (growing by the gradient)
-    // stays near what the feature wants.
-    const int n = std::max(2, static_cast<int>(std::ceil(len / spacing)));
+    const int n = std::max(2, static_cast<int>(std::ceil(len / spacing_)));
     std::vector<std::pair<double, double>> at;  // (s, wanted size)
     for (int k = 1; k < n; ++k) at.push_back({static_cast<double>(k) / n, 0.0});
     for (auto& [s, h] : at) h = sample(s);
@@ -276,7 +281,7 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
     for (int added = 0; !gaps.empty() && added < kMaxRefinedSamples; gaps.pop_front()) {
       const auto [s0, h0, s1, h1] = gaps.front();
       const double wanted = std::min(h0, h1);
-      if (wanted >= max_size || (s1 - s0) * len <= wanted / gradient) continue;
+      if (wanted >= max_size_ || (s1 - s0) * len <= wanted / gradient_) continue;
       // Within its own size of an end, the end's vertex source rules (and toward a sharp
       // corner the samples would want ever less).
       if ((s0 == 0.0 && s1 * len <= vertex_size[ed.v0]) || (s1 == 1.0 && (1.0 - s0) * len <= vertex_size[ed.v1]))
@@ -288,6 +293,21 @@ std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, d
       gaps.push_back({mid, hm, s1, s1 == 1.0 ? hm : h1});
     }
   }
+
+  const Tessellation& t_;
+  const double spacing_, max_size_, fraction_, gradient_;
+  const double reach_;  // features wider than this never bind
+  const EdgeGrid grid_;
+  const std::vector<int> point_;                 // per vertex: its torus point's representative
+  std::vector<std::vector<int>> incident_;       // per representative: the edges ending there
+  std::vector<SizeSource> out_;
+};
+
+}  // namespace
+
+std::vector<SizeSource> feature_sources(const Tessellation& t, double spacing, double max_size, double fraction,
+                                        double gradient) {
+  std::vector<SizeSource> out = FeatureSampler(t, spacing, max_size, fraction, gradient).sources();
   add_periodic_images(t, max_size, gradient, out);
   return out;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/spatial_grid.hpp"
 #include "domain/size_function.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -33,12 +34,11 @@ class FeatureSize {
   std::vector<SizeSource> sources_;
   double base_;
   double gradient_;
-  // Sources binned in a uniform grid of cells `cell_` wide from `lo_`, with the least
-  // size in each bin.
-  Vec2 lo_{};
-  double cell_ = 1.0, finest_ = 0.0;
-  int nx_ = 0, ny_ = 0;
-  std::vector<int> start_, order_;  // bin b holds order_[start_[b] .. start_[b + 1])
+  // Sources binned in a uniform grid (none for a few sources), with the least size in
+  // each bin.
+  double finest_ = 0.0;
+  GridFrame grid_;
+  CellLists binned_;           // per bin: its sources
   std::vector<double> least_;  // per bin: the least size a source in it wants
   std::vector<double> floor_;  // per bin: the least size anywhere in it
 };

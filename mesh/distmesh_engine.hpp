@@ -8,10 +8,10 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "common/spatial_grid.hpp"
 #include "domain/size_grading.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/distmesh.hpp"
@@ -39,28 +39,21 @@ inline constexpr double kSteinerClearance = 0.1;
 // cell size. Linear in the number of points for evenly spread inputs.
 class PointGrid {
  public:
-  explicit PointGrid(double cell) : cell_(cell) {}
-  void insert(Vec2 p) { cells_[key(cell_of(p.x), cell_of(p.y))].push_back(p); }
+  explicit PointGrid(double cell) : grid_(cell) {}
+  void insert(Vec2 p) { grid_.add(grid_.cell_of(p.x), grid_.cell_of(p.y), p); }
   bool near(Vec2 p, double radius) const {
-    const std::int64_t cx = cell_of(p.x), cy = cell_of(p.y);
-    const std::int64_t reach = static_cast<std::int64_t>(std::ceil(radius / cell_));
+    const std::int64_t cx = grid_.cell_of(p.x), cy = grid_.cell_of(p.y);
+    const std::int64_t reach = static_cast<std::int64_t>(std::ceil(radius / grid_.cell()));
     for (std::int64_t i = cx - reach; i <= cx + reach; ++i)
-      for (std::int64_t j = cy - reach; j <= cy + reach; ++j) {
-        const auto it = cells_.find(key(i, j));
-        if (it == cells_.end()) continue;
-        for (const Vec2 q : it->second)
-          if (norm2(q - p) < radius * radius) return true;
-      }
+      for (std::int64_t j = cy - reach; j <= cy + reach; ++j)
+        if (const std::vector<Vec2>* cell = grid_.at(i, j))
+          for (const Vec2 q : *cell)
+            if (norm2(q - p) < radius * radius) return true;
     return false;
   }
 
  private:
-  std::int64_t cell_of(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
-  static std::uint64_t key(std::int64_t i, std::int64_t j) {
-    return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint64_t>(j & 0xffffffff);
-  }
-  double cell_;
-  std::unordered_map<std::uint64_t, std::vector<Vec2>> cells_;
+  HashGrid<Vec2> grid_;
 };
 
 // The size field the engine works with: absolute edge lengths. The user's relative size

@@ -1,6 +1,7 @@
 #include "mesh/distmesh_engine.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "mesh/quality.hpp"
 

@@ -59,6 +59,85 @@ std::vector<int> arrangement_order(const std::vector<int>& free, const std::vect
   return out;
 }
 
+// One phase's grains as they are picked: the phase, its target area, the grains chosen
+// and their area.
+struct PhasePick {
+  int phase = -1;
+  double target = 0.0;
+  double sum = 0.0;
+  std::vector<int> chosen;
+};
+
+// Offers the free grains in the arrangement's order, taking each that brings the sum
+// closer to the target, until it is reached.
+PhasePick pick_in_order(const std::vector<double>& areas, const std::vector<int>& order, int phase, double target,
+                        std::vector<int>& label) {
+  PhasePick pick{.phase = phase, .target = target, .sum = 0.0, .chosen = {}};
+  for (int g : order) {
+    if (pick.sum >= target) break;
+    if (std::abs(pick.sum + areas[g] - target) < std::abs(pick.sum - target)) {
+      pick.sum += areas[g];
+      label[g] = phase;
+      pick.chosen.push_back(g);
+    }
+  }
+  return pick;
+}
+
+// Best single swaps, at most eight: a chosen grain out, a free one of the right size in,
+// while that brings the sum closer to the target. A swap keeps the arrangement:
+// clustered grains join next to the phase, dispersed ones away from it.
+void swap_towards_target(const std::vector<double>& areas, const std::vector<std::vector<int>>& neighbours,
+                         Arrangement arrangement, const std::vector<int>& free, std::vector<int>& label,
+                         PhasePick& pick) {
+  const int p = pick.phase;
+  const double target = pick.target;
+  double& sum = pick.sum;
+  for (int round = 0; round < 8; ++round) {
+    std::vector<std::pair<double, int>> pool;
+    for (int g : free)
+      if (label[g] < 0) pool.emplace_back(areas[g], g);
+    std::sort(pool.begin(), pool.end());
+    double best_gain = 0.0;
+    int best_out = -1, best_in = -1;
+    auto consider = [&](int out, int in) {
+      const double gain = std::abs(sum - target) - std::abs(sum - (out >= 0 ? areas[out] : 0.0) + areas[in] - target);
+      if (gain > best_gain) {
+        best_gain = gain;
+        best_out = out;
+        best_in = in;
+      }
+    };
+    auto fits = [&](int in, int out) {
+      if (arrangement == Arrangement::random) return true;
+      bool touches = false;
+      for (int n : neighbours[in]) touches = touches || (n != out && label[n] == p);
+      return arrangement == Arrangement::clustered ? touches : !touches;
+    };
+    constexpr int kScan = 64;  // pool entries looked at on either side of the ideal size
+    for (int out : pick.chosen) {
+      if (label[out] != p) continue;
+      const double want = areas[out] + (target - sum);
+      const auto at = std::lower_bound(pool.begin(), pool.end(), std::make_pair(want, -1)) - pool.begin();
+      for (auto k = at; k < static_cast<std::ptrdiff_t>(pool.size()) && k < at + kScan; ++k)
+        if (fits(pool[k].second, out)) {
+          consider(out, pool[k].second);
+          break;
+        }
+      for (auto k = at - 1; k >= 0 && k >= at - kScan; --k)
+        if (fits(pool[k].second, out)) {
+          consider(out, pool[k].second);
+          break;
+        }
+    }
+    if (best_out < 0) break;
+    label[best_out] = -1;
+    label[best_in] = p;
+    sum += areas[best_in] - areas[best_out];
+    std::replace(pick.chosen.begin(), pick.chosen.end(), best_out, best_in);
+  }
+}
+
 }  // namespace
 
 std::vector<int> assign_phases(const std::vector<double>& areas, const std::vector<std::vector<int>>& neighbours,
@@ -82,64 +161,9 @@ std::vector<int> assign_phases(const std::vector<double>& areas, const std::vect
     std::vector<int> free;
     for (int g = 0; g < n; ++g)
       if (label[g] < 0) free.push_back(g);
-    const double target = all[p].fraction * total_area;
-    double sum = 0.0;
-    std::vector<int> chosen;
-    for (int g : arrangement_order(free, neighbours, label, arrangement, rank)) {
-      if (sum >= target) break;
-      // Take the grain if that brings the sum closer to the target.
-      if (std::abs(sum + areas[g] - target) < std::abs(sum - target)) {
-        sum += areas[g];
-        label[g] = p;
-        chosen.push_back(g);
-      }
-    }
-    // Best single swaps: a chosen grain out, a free one of the right size in.
-    for (int round = 0; round < 8; ++round) {
-      std::vector<std::pair<double, int>> pool;
-      for (int g : free)
-        if (label[g] < 0) pool.emplace_back(areas[g], g);
-      std::sort(pool.begin(), pool.end());
-      double best_gain = 0.0;
-      int best_out = -1, best_in = -1;
-      auto consider = [&](int out, int in) {
-        const double gain = std::abs(sum - target) - std::abs(sum - (out >= 0 ? areas[out] : 0.0) + areas[in] - target);
-        if (gain > best_gain) {
-          best_gain = gain;
-          best_out = out;
-          best_in = in;
-        }
-      };
-      // A swap keeps the arrangement: clustered grains join next to the phase, dispersed
-      // ones away from it.
-      auto fits = [&](int in, int out) {
-        if (arrangement == Arrangement::random) return true;
-        bool touches = false;
-        for (int n : neighbours[in]) touches = touches || (n != out && label[n] == p);
-        return arrangement == Arrangement::clustered ? touches : !touches;
-      };
-      constexpr int kScan = 64;  // pool entries looked at on either side of the ideal size
-      for (int out : chosen) {
-        if (label[out] != p) continue;
-        const double want = areas[out] + (target - sum);
-        const auto at = std::lower_bound(pool.begin(), pool.end(), std::make_pair(want, -1)) - pool.begin();
-        for (auto k = at; k < static_cast<std::ptrdiff_t>(pool.size()) && k < at + kScan; ++k)
-          if (fits(pool[k].second, out)) {
-            consider(out, pool[k].second);
-            break;
-          }
-        for (auto k = at - 1; k >= 0 && k >= at - kScan; --k)
-          if (fits(pool[k].second, out)) {
-            consider(out, pool[k].second);
-            break;
-          }
-      }
-      if (best_out < 0) break;
-      label[best_out] = -1;
-      label[best_in] = p;
-      sum += areas[best_in] - areas[best_out];
-      std::replace(chosen.begin(), chosen.end(), best_out, best_in);
-    }
+    PhasePick pick = pick_in_order(areas, arrangement_order(free, neighbours, label, arrangement, rank), p,
+                                   all[p].fraction * total_area, label);
+    swap_towards_target(areas, neighbours, arrangement, free, label, pick);
   }
   for (int& l : label)
     if (l < 0) l = rest;

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "common/errors.hpp"
+#include "common/spatial_grid.hpp"
 #include "tessellate/torus.hpp"
 
 namespace grainmesh {
@@ -68,10 +69,14 @@ struct Built {
   bool margin_ok = true;
 };
 
-Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, double W, double H, bool periodic,
-            double margin) {
+// The weighted points to triangulate: on a torus each seed's images within `margin` of
+// the cell (Corner{seed, i, j}: shifted by (i W, j H)); in the plane the seeds and eight
+// far points (Corner{n + k, 0, 0}, positions in `far`) with nothing to say inside the
+// cell, so that every seed's cell is bounded.
+std::vector<std::pair<WPoint, Corner>> weighted_points(const std::vector<Vec2>& seeds, const std::vector<double>& weights,
+                                                       double W, double H, bool periodic, double margin,
+                                                       std::vector<Vec2>& far) {
   const int n = static_cast<int>(seeds.size());
-  const double w_max = *std::max_element(weights.begin(), weights.end());
   std::vector<std::pair<WPoint, Corner>> points;
   const int ki = periodic ? static_cast<int>(std::ceil(margin / W)) : 0;
   const int kj = periodic ? static_cast<int>(std::ceil(margin / H)) : 0;
@@ -82,17 +87,24 @@ Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, 
         if (p.x < -margin || p.x > W + margin || p.y < -margin || p.y > H + margin) continue;
         points.push_back({WPoint(K::Point_2(p.x, p.y), weights[s]), Corner{s, i, j}});
       }
-  std::vector<Vec2> dummies;
   if (!periodic) {
-    // Far points with nothing to say inside the cell, so every seed's cell is bounded.
     const double r = 4.0 * std::hypot(W, H);
     for (int k = 0; k < 8; ++k) {
       const double a = 2.0 * M_PI * k / 8.0;
       const Vec2 p{0.5 * W + r * std::cos(a), 0.5 * H + r * std::sin(a)};
-      dummies.push_back(p);
+      far.push_back(p);
       points.push_back({WPoint(K::Point_2(p.x, p.y), 0.0), Corner{n + k, 0, 0}});
     }
   }
+  return points;
+}
+
+Built build(const std::vector<Vec2>& seeds, const std::vector<double>& weights, double W, double H, bool periodic,
+            double margin) {
+  const int n = static_cast<int>(seeds.size());
+  const double w_max = *std::max_element(weights.begin(), weights.end());
+  std::vector<Vec2> dummies;
+  const auto points = weighted_points(seeds, weights, W, H, periodic, margin, dummies);
   Regular rt;
   rt.insert(points.begin(), points.end());
 
@@ -162,23 +174,18 @@ void merge_close_vertices(TorusGraph& g, double d) {
   std::vector<int> rep(nv);
   std::iota(rep.begin(), rep.end(), 0);
   std::vector<Corner> delta(nv);
-  struct CellHash {
-    std::size_t operator()(const std::pair<long long, long long>& k) const {
-      return std::hash<long long>()(k.first * 1000003LL + k.second);
-    }
-  };
-  const long long nx = g.periodic ? std::max<long long>(1, static_cast<long long>(g.width / d)) : 0;
-  const long long ny = g.periodic ? std::max<long long>(1, static_cast<long long>(g.height / d)) : 0;
-  auto wrap = [](long long a, long long m) { return m > 0 ? ((a % m) + m) % m : a; };
-  std::unordered_map<std::pair<long long, long long>, std::vector<int>, CellHash> grid;
+  // On a torus the cells wrap: nx x ny of them, at least d wide.
+  const std::int64_t nx = g.periodic ? std::max<std::int64_t>(1, static_cast<std::int64_t>(g.width / d)) : 0;
+  const std::int64_t ny = g.periodic ? std::max<std::int64_t>(1, static_cast<std::int64_t>(g.height / d)) : 0;
+  auto wrap = [](std::int64_t a, std::int64_t m) { return m > 0 ? ((a % m) + m) % m : a; };
+  HashGrid<int> grid(d);
   for (int v = 0; v < nv; ++v) {
-    const long long cx = static_cast<long long>(std::floor(g.vertices[v].x / d));
-    const long long cy = static_cast<long long>(std::floor(g.vertices[v].y / d));
-    for (long long dy = -1; dy <= 1 && rep[v] == v; ++dy)
-      for (long long dx = -1; dx <= 1 && rep[v] == v; ++dx) {
-        const auto it = grid.find({wrap(cx + dx, nx), wrap(cy + dy, ny)});
-        if (it == grid.end()) continue;
-        for (int u : it->second) {
+    const std::int64_t cx = grid.cell_of(g.vertices[v].x), cy = grid.cell_of(g.vertices[v].y);
+    for (std::int64_t dy = -1; dy <= 1 && rep[v] == v; ++dy)
+      for (std::int64_t dx = -1; dx <= 1 && rep[v] == v; ++dx) {
+        const std::vector<int>* cell = grid.at(wrap(cx + dx, nx), wrap(cy + dy, ny));
+        if (!cell) continue;
+        for (int u : *cell) {
           Vec2 e = g.vertices[v] - g.vertices[u];
           Corner k{};
           if (g.periodic) {
@@ -193,7 +200,7 @@ void merge_close_vertices(TorusGraph& g, double d) {
           }
         }
       }
-    if (rep[v] == v) grid[{wrap(cx, nx), wrap(cy, ny)}].push_back(v);
+    if (rep[v] == v) grid.add(wrap(cx, nx), wrap(cy, ny), v);
   }
   std::vector<int> new_id(nv, -1);
   std::vector<Vec2> kept;
