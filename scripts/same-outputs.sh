@@ -10,7 +10,8 @@
 #   scripts/same-outputs.sh [BASE]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-base=${1:-HEAD}
+# The commit itself, resolved here: inside the worktree, HEAD would name the worktree's own.
+base=$(git rev-parse --verify "${1:-HEAD}^{commit}")
 root=$PWD
 work=$root/scratch/same-outputs
 rm -rf "$work/out"

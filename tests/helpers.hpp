@@ -18,7 +18,10 @@
 
 namespace grainmesh::test {
 
-inline std::filesystem::path source_dir() { return GRAINMESH_SOURCE_DIR; }
+// The source tree and the grainmesh program under test (tests/paths.cpp).
+std::filesystem::path source_dir();
+const char* grainmesh_binary();
+
 inline std::filesystem::path example(const std::string& name) {
   return source_dir() / "data" / "examples" / (name + ".ini");
 }
@@ -89,7 +92,7 @@ inline CommandResult run_grainmesh(const std::vector<std::string>& args, const s
                                    const std::string& env = {}) {
   ScratchDir io("io");
   std::string cmd = (in.empty() ? std::string() : "cd " + shell_quote(in.string()) + " && ") + env + " " +
-                    shell_quote(GRAINMESH_BINARY);
+                    shell_quote(test::grainmesh_binary());
   for (const auto& a : args) cmd.append(" ").append(shell_quote(a));
   cmd.append(" >").append(shell_quote((io / "out").string())).append(" 2>").append(shell_quote((io / "err").string()));
   const int status = std::system(cmd.c_str());

@@ -33,7 +33,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 // grainmesh with `args`, its output discarded, not waited for.
 pid_t spawn_grainmesh(const std::vector<std::string>& args) {
-  std::vector<std::string> all{GRAINMESH_BINARY};
+  std::vector<std::string> all{test::grainmesh_binary()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
@@ -43,7 +43,7 @@ pid_t spawn_grainmesh(const std::vector<std::string>& args) {
   posix_spawn_file_actions_addopen(&io, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&io, 2, "/dev/null", O_WRONLY, 0);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, GRAINMESH_BINARY, &io, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, test::grainmesh_binary(), &io, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&io);
   REQUIRE(rc == 0);
   return pid;
