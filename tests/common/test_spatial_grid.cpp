@@ -9,7 +9,8 @@ using namespace grainmesh;
 
 TEST_CASE("grid rings visit every cell once, nearest ring first", "[common][grid]") {
   const GridFrame g{.lo = {-1.0, 2.0}, .cell = 0.5, .nx = 7, .ny = 4};
-  for (auto [cx, cy] : {std::pair{0, 0}, std::pair{3, 2}, std::pair{6, 3}, std::pair{-2, 9}}) {
+  for (const auto& centre : {std::pair{0, 0}, std::pair{3, 2}, std::pair{6, 3}, std::pair{-2, 9}}) {
+    const int cx = centre.first, cy = centre.second;
     std::map<std::pair<int, int>, int> seen;
     for (int r = 0; r <= 12; ++r)
       g.for_ring(cx, cy, r, [&](int x, int y) {
