@@ -6,58 +6,14 @@
 
 #include "common/errors.hpp"
 #include "common/predicates.hpp"
+#include "mesh/edge_list.hpp"
 
 namespace grainmesh {
 
 std::vector<MeshEdge> mesh_edges(const TriMesh& mesh) {
-  // Half-edges bucketed by their lower end (a counting sort, linear), each bucket (a few
-  // half-edges) put in order of the higher end by a stable insertion sort, so that equal
-  // edges stay in triangle order.
-  struct HalfEdge {
-    int high, a, b, tri;
-  };
-  const std::size_t np = mesh.points.size();
-  std::vector<std::size_t> start(np + 2, 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= np || static_cast<std::size_t>(b) >= np)
-        throw GeometryError("mesh: triangle " + std::to_string(t) + " has a point id out of range");
-      ++start[static_cast<std::size_t>(std::min(a, b)) + 2];
-    }
-  for (std::size_t v = 2; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<HalfEdge> half(3 * mesh.triangles.size());
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      half[start[static_cast<std::size_t>(std::min(a, b)) + 1]++] = {std::max(a, b), a, b, t};
-    }
-  for (std::size_t v = 0; v < np; ++v)
-    for (std::size_t i = start[v] + 1; i < start[v + 1]; ++i)
-      for (std::size_t j = i; j > start[v] && half[j - 1].high > half[j].high; --j) std::swap(half[j - 1], half[j]);
-  auto same = [](const HalfEdge& x, const HalfEdge& y) { return std::min(x.a, x.b) == std::min(y.a, y.b) && x.high == y.high; };
-
-  std::vector<MeshEdge> edges;
-  edges.reserve(half.size() / 2 + 1);
-  for (std::size_t i = 0; i < half.size();) {
-    std::size_t j = i + 1;
-    while (j < half.size() && same(half[j], half[i])) ++j;
-    const HalfEdge& h = half[i];
-    if (j - i > 2)
-      throw GeometryError("mesh: edge " + std::to_string(h.a) + "-" + std::to_string(h.b) + " has " +
-                          std::to_string(j - i) + " triangles");
-    if (j - i == 2) {
-      const HalfEdge& g = half[i + 1];
-      if (g.a == h.a)
-        throw GeometryError("mesh: triangles " + std::to_string(h.tri) + " and " + std::to_string(g.tri) +
-                            " are oriented inconsistently");
-      edges.push_back({h.a, h.b, h.tri, g.tri});
-    } else {
-      edges.push_back({h.a, h.b, h.tri, -1});
-    }
-    i = j;
-  }
-  return edges;
+  return mesh_detail::edges_of_rings(
+      mesh.points.size(), mesh.triangles.size(),
+      [&](std::size_t t) { return std::span<const int>(mesh.triangles[t].data(), 3); }, "triangle");
 }
 
 double triangle_area(const TriMesh& mesh, int t) {

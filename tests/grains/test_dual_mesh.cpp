@@ -1,0 +1,113 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "common/errors.hpp"
+#include "common/random.hpp"
+#include "grains/grain_mesh.hpp"
+#include "mesh/dual_mesh.hpp"
+#include "tessellate/tessellation.hpp"
+
+using namespace grainmesh;
+
+namespace {
+
+Tessellation cells(bool periodic, int grains, std::uint64_t seed, double binder = 0.0) {
+  TessellationOptions o;
+  o.width = 3.0;
+  o.height = 1.7;
+  o.grains = grains;
+  o.periodic = periodic;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 800e9, 0.1, {}}, Phase{"Co", 0.2, false, 300e9, 0.1, {}}};
+  if (binder > 0.0) {
+    o.phases[1].fraction = binder;
+    o.phase_mode = PhaseMode::binder;
+    o.matrix_phase = 1;
+  }
+  Rng rng(seed);
+  return tessellate(o, rng);
+}
+
+// Every invariant of a dual split by grain: one grain per cell, each grain's cells add up
+// to its area, cells no more than `max_ratio` of the triangles, pairs exact.
+void check_dual(const Tessellation& t, const GrainMesh& m, double max_ratio) {
+  const DualMesh d = dual_mesh(m.mesh, m.grain, m.pairs);
+  REQUIRE_NOTHROW(validate(d.mesh));
+  REQUIRE(d.node.size() == d.mesh.cells());
+  REQUIRE(d.triangle.size() == d.mesh.cells());
+  std::vector<double> area(t.grains.size(), 0.0);
+  for (std::size_t c = 0; c < d.mesh.cells(); ++c) area[m.grain[d.triangle[c]]] += cell_area(d.mesh, c);
+  double worst = 0.0;
+  for (std::size_t g = 0; g < t.grains.size(); ++g)
+    worst = std::max(worst, std::abs(area[g] - t.grains[g].area) / t.grains[g].area);
+  CHECK(worst <= 1e-9);
+  INFO(d.mesh.cells() << " cells from " << m.mesh.triangles.size() << " triangles");
+  CHECK(static_cast<double>(d.mesh.cells()) <= max_ratio * static_cast<double>(m.mesh.triangles.size()));
+  CHECK(d.circumcentres + d.centroids == m.mesh.triangles.size());
+  CHECK(d.circumcentres > 0.9 * static_cast<double>(m.mesh.triangles.size()));
+  if (t.periodic) {
+    // The carried pairs are exactly the pairs by position of the dual's side points.
+    const PeriodicPairs by_position = pair_by_position(d.mesh.points, Box{{0.0, 0.0}, {t.width, t.height}});
+    for (const auto* side : {&d.pairs.x, &d.pairs.y}) {
+      const auto& want = side == &d.pairs.x ? by_position.x : by_position.y;
+      CHECK(std::set<std::pair<int, int>>(side->begin(), side->end()) ==
+            std::set<std::pair<int, int>>(want.begin(), want.end()));
+    }
+  } else {
+    CHECK(d.pairs.x.empty());
+    CHECK(d.pairs.y.empty());
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the dual of two triangles: four corner cells covering the square", "[dual]") {
+  const TriMesh square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}};
+  for (const std::vector<int>& label : {std::vector<int>{0, 0}, std::vector<int>{0, 1}}) {
+    const DualMesh d = dual_mesh(square, label);
+    // Right triangles: centroids; nodes 0 and 2 are split when the labels differ.
+    CHECK(d.centroids == 2);
+    CHECK(d.mesh.cells() == (label[0] == label[1] ? 4u : 6u));
+    double total = 0.0;
+    for (std::size_t c = 0; c < d.mesh.cells(); ++c) total += cell_area(d.mesh, c);
+    CHECK(total == Approx(1.0).epsilon(1e-15));
+  }
+  CHECK_THROWS_WITH(dual_mesh(square, {0}), Catch::Contains("1 labels for 2 triangles"));
+}
+
+TEST_CASE("an interior node of acute triangles gets its Voronoi cell", "[dual]") {
+  // A regular hexagon around the origin: six equilateral triangles.
+  TriMesh hex;
+  hex.points.push_back({0, 0});
+  for (int k = 0; k < 6; ++k) hex.points.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)});
+  for (int k = 0; k < 6; ++k) hex.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  const DualMesh d = dual_mesh(hex, std::vector<int>(6, 0));
+  CHECK(d.circumcentres == 6);
+  REQUIRE(d.node[0] == 0);
+  // The centre's cell: the hexagon of the circumcentres (the spokes' midpoints left out),
+  // of side 1/sqrt(3): area sqrt(3)/2.
+  CHECK(d.mesh.cell(0).size() == 6);
+  CHECK(cell_area(d.mesh, 0) == Approx(std::sqrt(3.0) / 2.0).epsilon(1e-14));
+  double total = 0.0;
+  for (std::size_t c = 0; c < d.mesh.cells(); ++c) total += cell_area(d.mesh, c);
+  CHECK(total == Approx(1.5 * std::sqrt(3.0)).epsilon(1e-14));
+}
+
+TEST_CASE("dual cells of grain meshes keep every grain exact and their periodic pairs", "[dual][grains]") {
+  for (bool periodic : {true, false})
+    for (std::uint64_t seed : {1, 2}) {
+      INFO("periodic " << periodic << " seed " << seed);
+      const Tessellation t = cells(periodic, 40, seed);
+      // About 90 triangles per grain: a node has about two triangles, and a node on a
+      // grain boundary one cell per grain (0.66 to 0.68 measured).
+      check_dual(t, mesh_tessellation(t, {.size = 0.06, .phase_size = {}}), 0.7);
+    }
+  // About 330 triangles per grain: fewer of the nodes lie on grain boundaries (0.59).
+  const Tessellation fine = cells(true, 40, 1);
+  check_dual(fine, mesh_tessellation(fine, {.size = 0.03, .phase_size = {}}), 0.6);
+  const Tessellation binder = cells(true, 30, 3, 0.12);
+  check_dual(binder, mesh_tessellation(binder, {.size = 0.05, .phase_size = {}}), 0.7);
+}
