@@ -105,7 +105,7 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
 }
 
 CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o) {
-  const std::size_t cells = m.mesh.triangles.size();
+  const std::size_t cells = m.mesh.cells();
   CaseFields f{read_cell_field(result_dir / "D", "vector", cells),
                read_cell_field(result_dir / kStressField, "symmTensor", cells)};
   if (o.delta_T == 0.0) return f;

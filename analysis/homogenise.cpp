@@ -19,7 +19,7 @@ MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
   MeanStress s;
   double area = 0.0;
   for (std::size_t k = 0; k < sigma.size(); ++k) {  // cell k is triangle k
-    const double a = triangle_area(m.mesh, static_cast<int>(k));
+    const double a = cell_area(m.mesh, k);
     s.xx += a * sigma[k].xx;
     s.yy += a * sigma[k].yy;
     s.xy += a * sigma[k].xy;
@@ -35,7 +35,7 @@ std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions
   if (o.delta_T == 0.0) return cases;
   double area = 0.0, free = 0.0;
   for (std::size_t t = 0; t < m.phase.size(); ++t) {
-    const double a = triangle_area(m.mesh, static_cast<int>(t));
+    const double a = cell_area(m.mesh, t);
     area += a;
     free += a * free_expansion(m.phases[m.phase[t]], o.plane_stress);
   }

@@ -34,7 +34,7 @@ Distribution distribution(const std::vector<double>& values, const std::vector<d
   return d;
 }
 
-std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const TriMesh& mesh,
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const CellMesh& mesh,
                                           const std::vector<int>& phase, int phases, int loaded_component,
                                           const std::vector<StressState>* balanced) {
   auto loaded = [&](const StressState& s) {
@@ -42,9 +42,9 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states
   };
   std::vector<PhaseStresses> out(static_cast<std::size_t>(phases));
   std::vector<std::vector<double>> weights(out.size()), mises(out.size()), principal(out.size()), pressure(out.size());
-  double cell_area = 0.0, cell_loaded = 0.0;
+  double total_area = 0.0, cell_loaded = 0.0;
   for (std::size_t k = 0; k < states.size(); ++k) {
-    const double a = triangle_area(mesh, static_cast<int>(k));
+    const double a = cell_area(mesh, k);
     const StressState& s = states[k];
     const std::size_t p = static_cast<std::size_t>(phase[k]);
     PhaseStresses& ps = out[p];
@@ -56,17 +56,17 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states
     mises[p].push_back(von_mises(s));
     principal[p].push_back(largest_principal(s));
     pressure[p].push_back(hydrostatic(s));
-    cell_area += a;
+    total_area += a;
     cell_loaded += a * loaded(b);
   }
-  const double cell_mean = cell_loaded / cell_area;
+  const double cell_mean = cell_loaded / total_area;
   for (std::size_t p = 0; p < out.size(); ++p) {
     PhaseStresses& ps = out[p];
     if (ps.area_fraction > 0.0) {
       ps.mean.xx /= ps.area_fraction, ps.mean.yy /= ps.area_fraction, ps.mean.zz /= ps.area_fraction;
       ps.mean.xy /= ps.area_fraction;
     }
-    ps.area_fraction /= cell_area;
+    ps.area_fraction /= total_area;
     ps.von_mises = distribution(mises[p], weights[p]);
     ps.max_principal = distribution(principal[p], weights[p]);
     ps.hydrostatic = distribution(pressure[p], weights[p]);
@@ -75,7 +75,7 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states
   return out;
 }
 
-std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins) {
   std::vector<double> mises;
   for (const StressState& s : cell_stress) mises.push_back(von_mises(s));
@@ -85,7 +85,7 @@ std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressStat
   std::vector<double> area(static_cast<std::size_t>(phases), 0.0);
   for (std::size_t k = 0; k < mises.size(); ++k) {
     const int bin = std::clamp(static_cast<int>((mises[k] - low) / width), 0, bins - 1);
-    const double a = triangle_area(mesh, static_cast<int>(k));
+    const double a = cell_area(mesh, k);
     share[phase[k]][bin] += a;
     area[phase[k]] += a;
   }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/stress_measures.hpp"
-#include "mesh/trimesh.hpp"
+#include "mesh/cell_mesh.hpp"
 
 namespace grainmesh {
 
@@ -31,13 +31,13 @@ struct PhaseStresses {
 // With `balanced` stresses (the face forces' virial, DiscreteTraction::virial_stress), the
 // in-plane mean tensor and the partition are theirs: the phases' means then add up,
 // area-weighted, to the cell's mean stress exactly.
-std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                           const std::vector<int>& phase, int phases, int loaded_component,
                                           const std::vector<StressState>* balanced = nullptr);
 
 // Each phase's area-weighted histogram of the von Mises stress: `bins` equal bins over the
 // range of all cells, each point (the bin's centre, the share of the phase's area in it).
-std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const TriMesh& mesh,
+std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins);
 
 }  // namespace grainmesh

@@ -5,9 +5,9 @@
 
 namespace grainmesh {
 
-void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
+void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
                        const std::vector<SolvedFields>& cases) {
-  const std::size_t cells = m.mesh.triangles.size();
+  const std::size_t cells = m.mesh.cells();
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
   for (const SolvedFields& c : cases) {
     const FieldValues& D = c.fields->displacement;

@@ -8,7 +8,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "grains/grain_mesh.hpp"
+#include "export/foam.hpp"
 
 namespace grainmesh {
 
@@ -24,7 +24,7 @@ struct SolvedFields {
 // tensor, Pa, the recovered cell stress; zz the out-of-plane stress), von_mises and
 // max_principal (Pa); field data phase_names. Throws IoError naming the file when it
 // cannot be written.
-void write_results_vtu(const std::filesystem::path& file, const GrainMesh& m, const std::vector<std::string>& phase_names,
+void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
                        const std::vector<SolvedFields>& cases);
 
 }  // namespace grainmesh

@@ -33,11 +33,11 @@ struct GradientFit {
 }  // namespace
 
 std::vector<StressState> recovered_stress(const CaseFields& fields, const ExportMesh& m, const FoamOptions& o) {
-  const TriMesh& mesh = m.mesh;
-  const std::size_t cells = mesh.triangles.size();
+  const CellMesh& mesh = m.mesh;
+  const std::size_t cells = mesh.cells();
   const double metres = o.convert_to_meters;
   std::vector<Vec2> centre(cells);
-  for (std::size_t t = 0; t < cells; ++t) centre[t] = triangle_centroid(mesh, static_cast<int>(t));
+  for (std::size_t t = 0; t < cells; ++t) centre[t] = cell_centroid(mesh, t);
   std::vector<Lame> lames;
   std::vector<double> thermal;  // threeK alpha delta_T of each phase
   for (const FoamPhase& p : m.phases) {
@@ -50,11 +50,11 @@ std::vector<StressState> recovered_stress(const CaseFields& fields, const Export
   // The cells of the same phase that share a corner with each cell.
   std::vector<std::vector<int>> at_vertex(mesh.points.size());
   for (std::size_t t = 0; t < cells; ++t)
-    for (int v : mesh.triangles[t]) at_vertex[v].push_back(static_cast<int>(t));
+    for (int v : mesh.cell(t)) at_vertex[v].push_back(static_cast<int>(t));
   std::vector<int> seen;
   for (std::size_t t = 0; t < cells; ++t) {
     seen.clear();
-    for (int v : mesh.triangles[t])
+    for (int v : mesh.cell(t))
       for (int q : at_vertex[v])
         if (q != static_cast<int>(t) && m.phase[q] == m.phase[t] && std::find(seen.begin(), seen.end(), q) == seen.end()) {
           seen.push_back(q);

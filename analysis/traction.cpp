@@ -54,8 +54,8 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, cons
   gamma_.resize(pm.cells);
   volume_.resize(pm.cells);
   for (int c = 0; c < pm.cells; ++c) {
-    centre_[c] = scale_ * triangle_centroid(m.mesh, c);
-    volume_[c] = triangle_area(m.mesh, c) * thickness_ * scale_ * scale_ * scale_;
+    centre_[c] = scale_ * cell_centroid(m.mesh, static_cast<std::size_t>(c));
+    volume_[c] = cell_area(m.mesh, static_cast<std::size_t>(c)) * thickness_ * scale_ * scale_ * scale_;
     gamma_[c] = lame(m.phases[m.phase[c]], o.plane_stress).gamma();
   }
   patch_of_face_.assign(pm.faces(), -1);
@@ -174,7 +174,7 @@ Vec2 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOpti
   Vec2 sum{};
   for (int f = p.start; f < p.start + p.size; ++f) {
     const FaceGeometry g =
-        face_geometry(pm, f, o.convert_to_meters, pm.thickness, o.convert_to_meters * triangle_centroid(m.mesh, pm.owner[f]));
+        face_geometry(pm, f, o.convert_to_meters, pm.thickness, o.convert_to_meters * cell_centroid(m.mesh, static_cast<std::size_t>(pm.owner[f])));
     const double* s = sigma[static_cast<std::size_t>(f - p.start)];
     sum += Vec2{g.S.x * s[0] + g.S.y * s[1], g.S.x * s[1] + g.S.y * s[3]};
   }

@@ -27,7 +27,7 @@ ExportMesh grid_mesh(int n) {
       const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
       const int grain = (j / 10) * (n / 10 + 1) + i / 10;  // 10 x 10 squares per grain
       for (const auto& t : {std::array<int, 3>{a, b, d}, std::array<int, 3>{a, d, c}}) {
-        e.mesh.triangles.push_back(t);
+        e.mesh.add_cell(t);
         e.grain.push_back(grain);
         e.phase.push_back(grain % 7 == 0 ? 1 : 0);
       }
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
       std::uintmax_t bytes = 0;
       for (const auto& f : std::filesystem::recursive_directory_iterator(dir))
         if (f.is_regular_file()) bytes += f.file_size();
-      return Json{{"seconds", seconds}, {"cells", mesh.mesh.triangles.size()}, {"bytes", bytes}};
+      return Json{{"seconds", seconds}, {"cells", mesh.mesh.cells()}, {"bytes", bytes}};
     });
     std::filesystem::remove_all(dir);
     if (row.contains("error")) {

@@ -11,6 +11,7 @@
 #include "common/geometry.hpp"
 #include "common/periodic_pairs.hpp"
 #include "grains/grain_mesh.hpp"
+#include "mesh/cell_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -56,7 +57,7 @@ struct FoamPhase {
 // the phases, and the cell whose sides become the patches left, right, bottom, top
 // (boundary edges elsewhere, e.g. around a hole, form the patch `boundary`).
 struct ExportMesh {
-  TriMesh mesh;
+  CellMesh mesh;                  // triangles, or polygons (the dual)
   std::vector<int> grain;         // #T
   std::vector<int> phase;         // #T, index into phases
   std::vector<FoamPhase> phases;
@@ -102,6 +103,9 @@ struct FoamOptions {
   // stiffnesses differ by more than about 4 (measured); auto takes harmonic up to a
   // ratio of 3, linear above.
   enum class Interpolation { automatic, harmonic, linear } interpolation = Interpolation::automatic;
+  // The cells (export.cells): the mesh's triangles, or the polygons of its dual split at
+  // grain boundaries (polygon_cells).
+  enum class Cells { triangles, polygons } cells = Cells::triangles;
 };
 
 // The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
@@ -161,6 +165,11 @@ std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& optio
 
 // A grain mesh with its tessellation's cell and phases.
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
+// A mesh of triangles as polygons: the dual (dual_mesh.hpp) split at grain boundaries,
+// each cell with the grain and phase of its triangles, the periodic pairs carried.
+ExportMesh polygon_cells(const ExportMesh& triangles);
+// The export's mesh of a grain mesh: grain_export_mesh, as polygon_cells when asked.
+ExportMesh export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::Cells cells);
 
 // The ratio of the stiffest phase's 2 mu + lambda to the softest's, and whether the case
 // interpolates the stiffness harmonically (see FoamOptions::interpolation).

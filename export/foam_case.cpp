@@ -30,7 +30,7 @@ void check_case_input(const ExportMesh& m, const FoamOptions& o) {
   for (const FoamPhase& p : m.phases)
     if (thermal && !(p.alpha >= 0.0 && std::isfinite(p.alpha)))
       throw ConfigError("phase." + p.name + ".alpha: must be a finite number >= 0 (1/K), got " + to_text(p.alpha));
-  if (m.phase.size() != m.mesh.triangles.size() || m.grain.size() != m.mesh.triangles.size())
+  if (m.phase.size() != m.mesh.cells() || m.grain.size() != m.mesh.cells())
     throw GeometryError("export: the mesh needs a grain and a phase per triangle");
   for (int ph : m.phase)
     if (ph < 0 || static_cast<std::size_t>(ph) >= m.phases.size())
@@ -73,7 +73,7 @@ void write_displacement(const std::filesystem::path& dir, const ExportMesh& m, c
                                                 : std::array<double, 3>{};
   std::vector<double> initial(3 * static_cast<std::size_t>(pm.cells), 0.0);
   for (int t = 0; t < pm.cells; ++t) {
-    const Vec2 c = triangle_centroid(m.mesh, t) - m.cell.lo;
+    const Vec2 c = cell_centroid(m.mesh, static_cast<std::size_t>(t)) - m.cell.lo;
     initial[3 * t] = (mean_strain[0] * c.x + mean_strain[2] * c.y) * o.convert_to_meters;
     initial[3 * t + 1] = (mean_strain[2] * c.x + mean_strain[1] * c.y) * o.convert_to_meters;
   }

@@ -225,7 +225,8 @@ void draw_colour_bar(cairo_t* c, const Canvas& canvas, const PictureOptions& opt
 }
 
 // True when the given vertices all lie beyond one side of the window `box`.
-bool outside_window(const TriMesh& mesh, const Box& box, std::initializer_list<int> vertices) {
+template <typename Ids>
+bool outside_window(const CellMesh& mesh, const Box& box, const Ids& vertices) {
   bool left = true, right = true, below = true, above = true;
   for (int v : vertices) {
     const Vec2 p = mesh.points[v];
@@ -238,24 +239,23 @@ bool outside_window(const TriMesh& mesh, const Box& box, std::initializer_list<i
 }
 
 
-// Clips to the window and fills the triangles: by the field's colour, else by fill_by.
-void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
+// Clips to the window and fills the cells: by the field's colour, else by fill_by.
+void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box& box, const PictureOptions& options,
                bool field, double least, double most) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
   // A detail: clip to the window, and skip what lies wholly outside it.
   const Vec2 lo = px(box.lo), hi = px(box.hi);
   cairo_rectangle(c, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
   cairo_clip(c);
-  auto outside = [&](std::initializer_list<int> vertices) { return outside_window(mesh, box, vertices); };
 
-  // Adds triangle t to the current path, unless it lies outside the window.
+  // Adds cell t to the current path, unless it lies outside the window.
   auto trace = [&](std::size_t t) {
-    const auto& v = mesh.triangles[t];
-    if (outside({v[0], v[1], v[2]})) return false;
-    const Vec2 a = px(mesh.points[v[0]]), b = px(mesh.points[v[1]]), d = px(mesh.points[v[2]]);
-    cairo_move_to(c, a.x, a.y);
-    cairo_line_to(c, b.x, b.y);
-    cairo_line_to(c, d.x, d.y);
+    const std::span<const int> v = mesh.cell(t);
+    if (outside_window(mesh, box, v)) return false;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const Vec2 a = px(mesh.points[v[k]]);
+      k == 0 ? cairo_move_to(c, a.x, a.y) : cairo_line_to(c, a.x, a.y);
+    }
     cairo_close_path(c);
     return true;
   };
@@ -264,7 +264,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box&
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
   if (field) {
     cairo_save(c);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (std::size_t t = 0; t < mesh.cells(); ++t) {
       if (!trace(t)) continue;
       const Rgb col = viridis((options.field[t] - least) / (most - least));
       cairo_set_source_rgb(c, col.r, col.g, col.b);
@@ -281,7 +281,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box&
     for (int r : options.fill_by) max_label = std::max(max_label, r);
   for (int r = 0; r <= max_label; ++r) {
     bool any = false;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (std::size_t t = 0; t < mesh.cells(); ++t) {
       if (label(t) == r && trace(t)) any = true;
     }
     if (!any) continue;
@@ -294,7 +294,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box&
 
 // The mesh's edges (thin, when they are long enough to see and no field is drawn), the
 // outline between labels (outline_by, else fill_by) and the boundary.
-void stroke_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Box& box, const PictureOptions& options,
+void stroke_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box& box, const PictureOptions& options,
                  bool field) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
   const double scale = canvas.scale();
@@ -331,18 +331,22 @@ void stroke_mesh(cairo_t* c, const Canvas& canvas, const TriMesh& mesh, const Bo
 }  // namespace
 
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
+  write_mesh_png(file, cell_mesh(mesh), options);
+}
+
+void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, const PictureOptions& options) {
   Box box;
   for (const Vec2 p : mesh.points) box.extend(p);
-  if (box.empty() || mesh.triangles.empty()) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
+  if (box.empty() || mesh.cells() == 0) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
   if (options.view) {
     if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
     box = *options.view;
   }
   const bool field = !options.field.empty();
   auto check_size = [&](std::size_t n, const char* what) {
-    if (n != 0 && n != mesh.triangles.size())
+    if (n != 0 && n != mesh.cells())
       throw IoError(file.string() + ": the " + what + " has " + std::to_string(n) + " values for " +
-                    std::to_string(mesh.triangles.size()) + " triangles");
+                    std::to_string(mesh.cells()) + " cells");
   };
   check_size(options.field.size(), "field");
   check_size(options.fill_by.size(), "fill labelling");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "mesh/cell_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -47,6 +48,8 @@ std::vector<double> nice_ticks(double lo, double hi);
 // least a few pixels long, and thick lines along the mesh boundary and between labels
 // (outline_by). Throws IoError, also for label or field arrays not of one value per triangle.
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
+// The same for polygonal cells.
+void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, const PictureOptions& options = {});
 
 // The cell with its regions filled by phase (holes left open), grain boundaries in thin
 // dark lines and the cell's sides in a thick one. Throws IoError.

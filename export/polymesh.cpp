@@ -27,10 +27,14 @@ struct SideFace {
   int a, b, owner;
 };
 
-void add_polymesh_face(PolyMesh& pm, std::initializer_list<int> pts, int owner) {
+template <typename Points>
+void add_polymesh_face(PolyMesh& pm, const Points& pts, int owner) {
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
-  pm.face_points.insert(pm.face_points.end(), pts);
+  pm.face_points.insert(pm.face_points.end(), pts.begin(), pts.end());
   pm.owner.push_back(owner);
+}
+void add_polymesh_face(PolyMesh& pm, std::initializer_list<int> pts, int owner) {
+  add_polymesh_face<std::initializer_list<int>>(pm, pts, owner);
 }
 
 // Orders the faces of a cyclic pair's high side as the images of the low side's (in their
@@ -60,7 +64,7 @@ void pair_cyclic_faces(const std::vector<SideFace>& low, std::vector<SideFace>& 
 // symmetry planes, the loaded `right`, or cyclic pairs whose faces match one to one.
 void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std::vector<SideFace>, 5>& sides,
                       PolyMesh& pm) {
-  const TriMesh& mesh = m.mesh;
+  const CellMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());
   auto add_face = [&](std::initializer_list<int> pts, int owner) { add_polymesh_face(pm, pts, owner); };
   // Side patches. A cyclic pair's low side lists its faces along the side and the high
@@ -154,11 +158,11 @@ void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
 }  // namespace
 
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
-  const TriMesh& mesh = m.mesh;
+  const CellMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());
   PolyMesh pm;
   pm.points2d = mesh.points;
-  pm.cells = static_cast<int>(mesh.triangles.size());
+  pm.cells = static_cast<int>(mesh.cells());
   const std::vector<MeshEdge> edges = mesh_edges(mesh);
   if (o.thickness > 0.0) {
     pm.thickness = o.thickness;
@@ -187,7 +191,7 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   std::sort(internal.begin(), internal.end(), [](const Internal& x, const Internal& y) {
     return x.owner != y.owner ? x.owner < y.owner : x.neighbour < y.neighbour;
   });
-  pm.face_start.reserve(internal.size() + 2 * mesh.triangles.size() + 8);
+  pm.face_start.reserve(internal.size() + 2 * mesh.cells() + 8);
   for (const Internal& f : internal) {
     add_face({f.a, f.b, f.b + n, f.a + n}, f.owner);
     pm.neighbour.push_back(f.neighbour);
@@ -196,13 +200,17 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   add_side_patches(m, o, sides, pm);
   PolyMesh::Patch empty{.name = "frontAndBack", .type = "empty", .start = pm.faces(),
                         .size = 2 * pm.cells, .neighbour_patch = {}, .separation = {}};
-  for (int t = 0; t < pm.cells; ++t) {
-    const auto& v = mesh.triangles[t];
-    add_face({v[0], v[2], v[1]}, t);              // z = 0, facing down
+  std::vector<int> ring;
+  for (int c = 0; c < pm.cells; ++c) {  // z = 0, facing down: the ring reversed from its first corner
+    const std::span<const int> v = mesh.cell(static_cast<std::size_t>(c));
+    ring.assign(v.begin(), v.end());
+    std::reverse(ring.begin() + 1, ring.end());
+    add_polymesh_face(pm, ring, c);
   }
-  for (int t = 0; t < pm.cells; ++t) {
-    const auto& v = mesh.triangles[t];
-    add_face({v[0] + n, v[1] + n, v[2] + n}, t);  // z = thickness, facing up
+  for (int c = 0; c < pm.cells; ++c) {  // z = thickness, facing up
+    ring.clear();
+    for (int v : mesh.cell(static_cast<std::size_t>(c))) ring.push_back(v + n);
+    add_polymesh_face(pm, ring, c);
   }
   pm.patches.push_back(empty);
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));

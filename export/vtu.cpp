@@ -53,6 +53,11 @@ class ErrorCatcher final : public vtkCommand {
 
 void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels) {
+  write_vtu(file, cell_mesh(mesh), fields, labels);
+}
+
+void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
@@ -61,10 +66,13 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
 
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  grid->Allocate(static_cast<vtkIdType>(mesh.triangles.size()));
-  for (const auto& t : mesh.triangles) {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
+  const std::size_t cells = mesh.cells();
+  grid->Allocate(static_cast<vtkIdType>(cells));
+  std::vector<vtkIdType> ids;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::span<const int> ring = mesh.cell(c);
+    ids.assign(ring.begin(), ring.end());
+    grid->InsertNextCell(ring.size() == 3 ? VTK_TRIANGLE : VTK_POLYGON, static_cast<vtkIdType>(ids.size()), ids.data());
   }
 
   for (const CellField& f : fields) {
@@ -72,16 +80,16 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
         [&](const auto& values) {
           using T = typename std::decay_t<decltype(values)>::value_type;
           const std::size_t per_cell = static_cast<std::size_t>(std::max(f.components, 1));
-          if (values.size() != per_cell * mesh.triangles.size())
+          if (values.size() != per_cell * cells)
             throw IoError(file.string() + ": cell field '" + f.name + "' has " + std::to_string(values.size()) +
-                          " values for " + std::to_string(mesh.triangles.size()) + " cells" +
+                          " values for " + std::to_string(cells) + " cells" +
                           (per_cell > 1 ? " of " + std::to_string(per_cell) + " components" : ""));
           vtkSmartPointer<vtkDataArray> array;
           if constexpr (std::is_same_v<T, int>) array = vtkSmartPointer<vtkIntArray>::New();
           else array = vtkSmartPointer<vtkDoubleArray>::New();
           array->SetName(f.name.c_str());
           array->SetNumberOfComponents(static_cast<int>(per_cell));
-          array->SetNumberOfTuples(static_cast<vtkIdType>(mesh.triangles.size()));
+          array->SetNumberOfTuples(static_cast<vtkIdType>(cells));
           for (std::size_t i = 0; i < values.size(); ++i)
             array->SetComponent(static_cast<vtkIdType>(i / per_cell), static_cast<int>(i % per_cell),
                                 static_cast<double>(values[i]));

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "mesh/cell_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 
@@ -30,6 +31,9 @@ struct FieldLabels {
 // Writes the mesh (z = 0), its cell fields and labels as binary VTU. Deterministic: the
 // same mesh gives the same bytes. Throws IoError when the file cannot be written.
 void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels = {});
+// The same for polygonal cells (VTK polygons; triangles stay VTK triangles).
+void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels = {});
 
 // Reads a VTU written by write_vtu: points, triangles, every cell array (integer arrays

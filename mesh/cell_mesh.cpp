@@ -27,6 +27,18 @@ CellMesh cell_mesh(const TriMesh& mesh) {
   return out;
 }
 
+std::optional<TriMesh> as_triangles(const CellMesh& mesh) {
+  TriMesh out;
+  out.points = mesh.points;
+  out.triangles.reserve(mesh.cells());
+  for (std::size_t c = 0; c < mesh.cells(); ++c) {
+    const std::span<const int> v = mesh.cell(c);
+    if (v.size() != 3) return std::nullopt;
+    out.triangles.push_back({v[0], v[1], v[2]});
+  }
+  return out;
+}
+
 double cell_area(const CellMesh& mesh, std::size_t c) { return polygon_area(ring_of(mesh, c)); }
 
 Vec2 cell_centroid(const CellMesh& mesh, std::size_t c) {

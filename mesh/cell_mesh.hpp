@@ -2,6 +2,7 @@
 // (dual_mesh.hpp). Cells are counter-clockwise rings of point ids.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct CellMesh {
 
 // One cell per triangle, in order; the same points.
 CellMesh cell_mesh(const TriMesh& mesh);
+// The triangles back when every cell is one; nullopt otherwise.
+std::optional<TriMesh> as_triangles(const CellMesh& mesh);
 
 // Signed area of cell c (> 0 when counter-clockwise) and its centroid.
 double cell_area(const CellMesh& mesh, std::size_t c);

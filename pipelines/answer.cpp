@@ -67,11 +67,11 @@ Json distribution_json(const Distribution& d) {
 // `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,
 // max_principal, hydrostatic (each mean, std, p50, p90, p99, max), partition}}}, Pa, from
 // the recovered cell stresses.
-Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellation& t, const GrainMesh& m) {
+Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellation& t, const ExportMesh& e) {
   Json out;
   const int phases = static_cast<int>(t.phases.size());
   for (const StressedCase& c : cases) {
-    const std::vector<PhaseStresses> ps = phase_stresses(*c.cell_stress, m.mesh, m.phase, phases, c.loaded, c.balanced);
+    const std::vector<PhaseStresses> ps = phase_stresses(*c.cell_stress, e.mesh, e.phase, phases, c.loaded, c.balanced);
     for (int p = 0; p < phases; ++p) {
       const PhaseStresses& s = ps[p];
       out[c.name][t.phases[p].name] = {
@@ -94,7 +94,7 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
 // relation by more than 1 % is a warning.
 void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffness& C, const Tessellation& t,
-                        const GrainMesh& m, const ExportMesh& e, const FoamOptions& foam,
+                        const ExportMesh& e, const FoamOptions& foam,
                         std::vector<std::string>& warnings) {
   const auto expansion_json = [](const std::array<double, 3>& a) {
     return Json{{"a11", a[0]}, {"a22", a[1]}, {"a12", a[2]}};
@@ -118,7 +118,7 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
   effective["thermal"] = thermal;
   const Json stresses = phase_stresses_json(
       {{"thermal", &r.cell_stress, -1, &r.virial_stress}, {"thermal_xx", &r.loaded_stress, 0, &r.loaded_virial_stress}},
-      t, m);
+      t, e);
   for (const auto& [name, value] : stresses.items()) answer.stresses[name] = value;
 }
 
@@ -160,13 +160,13 @@ void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, Json& effect
 }  // namespace
 
 Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
   const StressedCase stressed{"mixed", &h.cell_stress, 0};
-  answer.stresses = phase_stresses_json({stressed}, t, m);
-  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed.name, h.cell_stress, t, m);
+  answer.stresses = phase_stresses_json({stressed}, t, e);
+  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed.name, h.cell_stress, t, e);
   Json& effective = answer.effective;
   effective = solve_json(h.run, dir);
   effective["boundary"] = "mixed";
@@ -177,8 +177,8 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
                                  {"sigma_xx", h.volume_average.xx},
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), {{"", &h.fields, &h.cell_stress}});
-  write_field_pictures(dir, h.fields, h.cell_stress, m, picture_width, all_pictures, unit);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}});
+  write_field_pictures(dir, h.fields, h.cell_stress, e, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
   effective["voigt"] = b.voigt;
@@ -200,7 +200,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
 }
 
 Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, m, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   std::vector<std::filesystem::path> dirs, shown;
   for (const LoadCase& lc : periodic_load_cases(e, foam)) {
@@ -216,8 +216,8 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   for (int k = 0; k < 3; ++k)
     stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k, &h.cases[k].virial_stress});
   Answer answer;
-  answer.stresses = phase_stresses_json(stressed, t, m);
-  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed[0].name, *stressed[0].cell_stress, t, m);
+  answer.stresses = phase_stresses_json(stressed, t, e);
+  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed[0].name, *stressed[0].cell_stress, t, e);
   Json& effective = answer.effective;
   effective = {{"boundary", "periodic"},
                  {"stiffness", stiffness_json(C)},
@@ -245,14 +245,14 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   std::optional<ThermalResidual> thermal;
   if (foam.delta_T != 0.0) {
     thermal = thermal_residual(h);
-    add_thermal_answer(answer, *thermal, C, t, m, e, foam, warnings);
+    add_thermal_answer(answer, *thermal, C, t, e, foam, warnings);
     solved.push_back({"_thermal", &thermal->fields, &thermal->cell_stress});
     solved.push_back({"_thermal_xx", &thermal->loaded_fields, &thermal->loaded_stress});
     if (picture_width > 0)
-      write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, m);
+      write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, e);
   }
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", m, phase_names(t), solved);
-  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, m, picture_width, all_pictures, unit);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved);
+  write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
 
   check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress), effective, warnings);
   return answer;

@@ -27,13 +27,12 @@ struct Answer {
 std::string periodic_case_dir(const LoadCase& c);
 
 // What the answers are computed from and written beside: the run's staging directory
-// `dir` (cases in it), its tessellation, mesh and exported mesh, the export's options,
+// `dir` (cases in it), its tessellation and exported mesh, the export's options,
 // the run's time limit and its pictures (none when picture_width is 0) with their unit.
 struct SolveInput {
   const std::filesystem::path& dir;
   const StagedOutput& staged;
   const Tessellation& t;
-  const GrainMesh& m;
   const ExportMesh& e;
   const PolyMesh& pm;
   const FoamOptions& foam;

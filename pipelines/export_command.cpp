@@ -18,7 +18,7 @@ namespace grainmesh {
 
 const std::vector<std::string>& export_config_keys() {
   static const std::vector<std::string> keys{
-      "export.thickness", "export.convert_to_meters", "export.cyclic", "export.format", "export.grain_zones",
+      "export.thickness", "export.convert_to_meters", "export.cyclic", "export.format", "export.grain_zones", "export.cells",
       "export.stiffness_interpolation",
       "load.displacement", "load.traction", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu"};
   return keys;
@@ -38,6 +38,9 @@ FoamOptions read_foam_options(const Config& c) {
   if (format != "ascii" && format != "binary") c.fail("export.format", "must be ascii or binary, got '" + format + "'");
   o.binary = format == "binary";
   o.grain_zones = c.flag("export.grain_zones", false);
+  const std::string cells = c.has("export.cells") ? c.text("export.cells") : "triangles";
+  if (cells != "triangles" && cells != "polygons") c.fail("export.cells", "must be triangles or polygons, got '" + cells + "'");
+  o.cells = cells == "polygons" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
   const std::string interp = c.has("export.stiffness_interpolation") ? c.text("export.stiffness_interpolation") : "auto";
   if (interp == "auto") o.interpolation = FoamOptions::Interpolation::automatic;
   else if (interp == "harmonic") o.interpolation = FoamOptions::Interpolation::harmonic;
@@ -58,7 +61,7 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
   json_file.replace_extension(".json");
   const MeshDescription d = read_mesh_description(json_file);
   ExportMesh m;
-  m.mesh = std::move(vtu.mesh);
+  m.mesh = cell_mesh(vtu.mesh);
   m.cell = d.cell;
   m.periodic = d.periodic;
   // A mesh read from a file: its periodic pairs from the nodes' exact coordinates.
@@ -105,14 +108,18 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
 void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out, "export");
   const FoamOptions o = read_foam_options(c);
-  const ExportMesh m = read_export_mesh(mesh_file, c);
+  const ExportMesh triangles = read_export_mesh(mesh_file, c);
+  const ExportMesh m = o.cells == FoamOptions::Cells::polygons ? polygon_cells(triangles) : triangles;
   Warnings warnings;
   for (const std::string& w : check_load(m.cell, m.periodic, m.phases, o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();
   StagedOutput staged(out, "export");
   write_foam_case(staged.dir(), m, o);
-  // The same cells for VTK readers: cell k of the case is triangle k.
-  write_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", m.grain}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
+  // The same cells for VTK readers: cell k of the case is cell k (the triangles' quality
+  // with them).
+  std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
+  if (const std::optional<TriMesh> tri = as_triangles(m.mesh)) fields.push_back({"quality", triangle_quality(*tri)});
+  write_vtu(staged.dir() / "mesh.vtu", m.mesh, fields);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<int> cells_per_phase(m.phases.size(), 0);
   for (int p : m.phase) ++cells_per_phase[p];
@@ -123,7 +130,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
                       {"nu", m.phases[p].poisson_ratio},
                       {"cells", cells_per_phase[p]}});
   Json report{{"mesh", mesh_file.string()},
-              {"cells", m.mesh.triangles.size()},
+              {"cells", m.mesh.cells()},
               {"points", 2 * m.mesh.points.size()},
               {"phases", phases},
               {"cyclic", o.cyclic && m.periodic},
@@ -140,7 +147,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
   staged.commit();
   std::printf("grainmesh export: %zu cells in %zu phases (%.3f s)\n  wrote the case %s (Allrun runs checkMesh and "
               "solidDisplacementFoam; open case.foam in ParaView)\n",
-              m.mesh.triangles.size(), m.phases.size(), seconds, out.string().c_str());
+              m.mesh.cells(), m.phases.size(), seconds, out.string().c_str());
 }
 
 }  // namespace grainmesh

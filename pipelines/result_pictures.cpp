@@ -6,7 +6,7 @@
 namespace grainmesh {
 
 void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
-                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all,
+                          const std::vector<StressState>& sigma, const ExportMesh& m, int picture_width, bool all,
                           const std::string& unit) {
   if (picture_width == 0) return;
   std::vector<double> sxx, syy, sxy, d = displacement_length(fields);
@@ -26,7 +26,7 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
 }
 
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
-                            const std::vector<StressState>& cell_stress, const Tessellation& t, const GrainMesh& m) {
+                            const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh& m) {
   const int phases = static_cast<int>(t.phases.size());
   Plot plot{.x_label = "von Mises stress (MPa), load case " + load_case, .y_label = "share of the phase's area",
             .series = {}};

@@ -8,7 +8,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "grains/grain_mesh.hpp"
+#include "export/foam.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
@@ -17,12 +17,12 @@ namespace grainmesh {
 // 3.14-3.15), stresses in MPa, the displacement in nm, a scale bar in `unit`; none when
 // picture_width is 0, sigma_xx alone when not `all`.
 void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
-                          const std::vector<StressState>& sigma, const GrainMesh& m, int picture_width, bool all,
+                          const std::vector<StressState>& sigma, const ExportMesh& m, int picture_width, bool all,
                           const std::string& unit);
 
 // stress_histogram.png: each phase's distribution of von Mises stress in a load case.
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
-                            const std::vector<StressState>& cell_stress, const Tessellation& t, const GrainMesh& m);
+                            const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh& m);
 
 std::vector<std::string> phase_names(const Tessellation& t);
 

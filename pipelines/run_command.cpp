@@ -119,7 +119,8 @@ std::vector<std::string> write_cases(const std::filesystem::path& dir, const Exp
 
 // report.json of a run before the solve: what was made and how long each stage took.
 Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, const GrainMesh& m, const MeshQuality& q,
-                const std::vector<std::string>& case_dirs, const Json& seconds, const Json& memory, bool solve) {
+                const ExportMesh& e, const std::vector<std::string>& case_dirs, const Json& seconds, const Json& memory,
+                bool solve) {
   Json report{{"config", c.source()},
               {"config_fingerprint", config_fingerprint(c)},
               {"seed", plan.tess_job.seed},
@@ -140,6 +141,8 @@ Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, con
               {"case", case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs)},
               {"case_format", plan.foam.binary ? "binary" : "ascii"},
               {"solved", solve}};
+  // Polygonal cells: how many the case has (mesh.cells counts the triangles they come from).
+  if (plan.foam.cells == FoamOptions::Cells::polygons) report["case_cells"] = {{"shape", "polygons"}, {"cells", e.mesh.cells()}};
   add_time_limit(report, plan.tess_job.options.deadline);
   return report;
 }
@@ -268,17 +271,17 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   clock = Clock::now();
   memory.begin();
   stage.show("exporting");
-  const ExportMesh e = grain_export_mesh(t, m);
-  if (!c.has("export.format") && m.mesh.triangles.size() > kBinaryCaseAboveCells) foam.binary = true;
+  const ExportMesh e = export_mesh(t, m, foam.cells);
+  if (!c.has("export.format") && e.mesh.cells() > kBinaryCaseAboveCells) foam.binary = true;
   PolyMesh pm;
   const std::vector<std::string> case_dirs = write_cases(dir, e, foam, plan.boundary, pm);
   seconds["export"] = since(clock);
   memory.end("export");
   write_text_file(dir / "config.ini", config_ini(c));
-  Json report = run_report(c, plan, t, m, q, case_dirs, seconds, memory.json(), solve);
+  Json report = run_report(c, plan, t, m, q, e, case_dirs, seconds, memory.json(), solve);
 
   const double solve_seconds =
-      solve ? solve_stage(SolveInput{dir, staged, t, m, e, pm, foam, tess_job.options.deadline, picture_width,
+      solve ? solve_stage(SolveInput{dir, staged, t, e, pm, foam, tess_job.options.deadline, picture_width,
                                      all_pictures, unit},
                           staged, plan.boundary, stage, memory, report, warnings)
             : 0.0;

@@ -44,7 +44,7 @@ TEST_CASE("von Mises, the largest principal and the hydrostatic stress of known 
 TEST_CASE("von Mises histograms give each phase's share of its area per bin", "[analysis][statistics]") {
   // Two unit squares of two triangles each: phase 0 at von Mises 1 and 3 (half its area
   // each), phase 1 all at 3.
-  const TriMesh mesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}};
+  const CellMesh mesh = cell_mesh(TriMesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}});
   const std::vector<StressState> stress{{.xx = 1}, {.xx = 3}, {.xx = 3}, {.xx = 3}};
   const auto h = von_mises_histograms(stress, mesh, {0, 0, 1, 1}, 2, 4);
   REQUIRE(h.size() == 2);
@@ -63,7 +63,7 @@ TEST_CASE("balanced stresses give the in-plane phase means and the partition, zz
           "cells' own",
           "[analysis][statistics]") {
   // The two squares again: phase 0 on the left, phase 1 on the right, each half the area.
-  const TriMesh mesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}};
+  const CellMesh mesh = cell_mesh(TriMesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}});
   const std::vector<StressState> cells{{.xx = 1, .yy = 0, .zz = 5, .xy = 0}, {.xx = 3, .yy = 0, .zz = 7, .xy = 0},
                                        {.xx = 4, .yy = 1, .zz = 2, .xy = 0}, {.xx = 4, .yy = 1, .zz = 2, .xy = 0}};
   const std::vector<StressState> balanced{{.xx = 2, .yy = -1, .zz = 0, .xy = 1}, {.xx = 4, .yy = -3, .zz = 0, .xy = 1},

@@ -83,7 +83,7 @@ TEST_CASE("mesh pictures are PNG files of the asked width", "[export]") {
   write_mesh_png(dir / "l.png", square(), {.width_px = 300, .fill_by = kLabels});
   CHECK(test::read_file(dir / "l.png") != png);  // the second triangle is orange
   CHECK_THROWS_WITH(write_mesh_png(dir / "s.png", square(), {.width_px = 300, .fill_by = {0}}),
-                    Catch::Matchers::Contains("the fill labelling has 1 values for 2 triangles"));
+                    Catch::Matchers::Contains("the fill labelling has 1 values for 2 cells"));
   CHECK_THROWS_WITH(write_mesh_png(dir / "s.png", square(), {.width_px = 300, .outline_by = {0, 1, 2}}),
-                    Catch::Matchers::Contains("the outline labelling has 3 values for 2 triangles"));
+                    Catch::Matchers::Contains("the outline labelling has 3 values for 2 cells"));
 }

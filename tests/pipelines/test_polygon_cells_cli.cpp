@@ -1,0 +1,66 @@
+// export.cells = polygons end to end: `run` solves the dual cells and reports them,
+// `export` turns a mesh.vtu into polygons, and an unknown value is refused.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include "helpers.hpp"
+
+using namespace grainmesh;
+using test::run_grainmesh;
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+TEST_CASE("export.cells = polygons: the run solves the dual cells, inside the bounds and near the triangles' answer",
+          "[cli][dual][openfoam]") {
+  test::ScratchDir dir("polygon_cells");
+  const std::string config = (test::source_dir() / "data/default.ini").string();
+  std::map<std::string, Json> report;
+  for (const char* cells : {"triangles", "polygons"}) {
+    const auto r = run_grainmesh({"run", config, "-o", (dir / cells).string(), "--quiet", "--solve", "--set",
+                                  std::string("export.cells=") + cells});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    report[cells] = Json::parse(test::read_file(dir / cells / "report.json"));
+  }
+  const Json& poly = report["polygons"];
+  const Json& tri = report["triangles"];
+  CHECK_FALSE(tri.contains("case_cells"));
+  REQUIRE(poly.contains("case_cells"));
+  CHECK(poly["case_cells"]["shape"] == "polygons");
+  const double cells = poly["case_cells"]["cells"].get<double>(), triangles = poly["mesh"]["cells"].get<double>();
+  // About 100 triangles per grain: a node has about two, a node on a grain boundary one
+  // cell per grain.
+  CHECK(cells <= 0.7 * triangles);
+  CHECK(cells >= 0.5 * triangles);
+  // The same mesh: the same triangles under both.
+  CHECK(poly["mesh"] == tri["mesh"]);
+  const Json& e = poly["effective"];
+  CHECK(e["inside_bounds"]["hashin_shtrikman"] == true);
+  CHECK(std::abs(e["modulus"].get<double>() / tri["effective"]["modulus"].get<double>() - 1.0) < 0.005);
+  // The case's cells are the dual's, and checkMesh finds it OK.
+  CHECK(test::read_file(dir / "polygons/case/0/E").find("nonuniform List<scalar> " + std::to_string(static_cast<long>(cells)) + "\n") !=
+        std::string::npos);
+  CHECK(test::run_openfoam(dir / "polygons/case", "checkMesh").out.find("Mesh OK.") != std::string::npos);
+}
+
+TEST_CASE("export.cells: grainmesh export makes polygons of a mesh.vtu, and a bad value is refused",
+          "[cli][dual]") {
+  test::ScratchDir dir("polygon_export");
+  const std::string config = (test::source_dir() / "data/default.ini").string();
+  REQUIRE(run_grainmesh({"run", config, "-o", (dir / "run").string(), "--quiet"}).exit_code == 0);
+  const auto e = run_grainmesh({"export", (dir / "run/mesh.vtu").string(), "--config", config, "-o",
+                                (dir / "e").string(), "--set", "export.cells=polygons"});
+  INFO(e.err);
+  REQUIRE(e.exit_code == 0);
+  const Json r = Json::parse(test::read_file(dir / "e/report.json"));
+  const Json run = Json::parse(test::read_file(dir / "run/report.json"));
+  CHECK(r["cells"].get<double>() < 0.7 * run["mesh"]["cells"].get<double>());
+  REQUIRE(test::run_openfoam(dir / "e", "checkMesh").out.find("Mesh OK.") != std::string::npos);
+
+  test::check_refused({{"run", config, "--set", "export.cells=hexagons"}, 2, "export.cells: must be triangles or polygons, got 'hexagons'"},
+                      dir / "bad");
+  test::check_refused({{"export", (dir / "run/mesh.vtu").string(), "--config", config, "--set", "export.cells=3"}, 2,
+                       "export.cells: must be triangles or polygons, got '3'"},
+                      dir / "bad");
+}
