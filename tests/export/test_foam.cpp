@@ -130,6 +130,44 @@ TEST_CASE("checkMesh accepts polygonal cells: a periodic two-phase microstructur
   }
 }
 
+TEST_CASE("checkMesh accepts polygonal cells of a binder cell and of the fibre and plate-with-hole domains",
+          "[export][openfoam][dual]") {
+  TessellationOptions o;
+  o.width = 3.0;
+  o.height = 1.7;
+  o.grains = 30;
+  o.periodic = true;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.12, false, 211e9, 0.31, {}}};
+  o.phase_mode = PhaseMode::binder;
+  o.matrix_phase = 1;
+  Rng rng(7);
+  const Tessellation t = tessellate(o, rng);
+  const ExportMesh binder = export_mesh(t, mesh_tessellation(t, {.size = 0.05, .phase_size = {}}), FoamOptions::Cells::polygons);
+  for (bool cyclic : {false, true}) {
+    INFO("binder, cyclic " << cyclic);
+    test::ScratchDir dir("foam_binder_polygons");
+    write_foam_case(dir.path(), binder, {.cyclic = cyclic});
+    check_mesh_ok(dir.path(), binder);
+  }
+  for (const char* name : {"fibres_6", "plate_with_hole"}) {
+    INFO(name);
+    const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(test::example(name))));
+    ExportMesh e;
+    e.mesh = cell_mesh(r.mesh);
+    e.phase = r.phase;
+    e.grain = r.phase;  // a domain mesh: each side of the interface one grain
+    e.phases = {{"matrix", 3e9, 0.35}};
+    if (std::count(e.phase.begin(), e.phase.end(), 1) > 0) e.phases.push_back({"fibre", 70e9, 0.22});
+    for (const Vec2 p : r.mesh.points) e.cell.extend(p);
+    const ExportMesh poly = polygon_cells(e);
+    CHECK(poly.mesh.cells() < 0.6 * static_cast<double>(r.mesh.triangles.size()));
+    test::ScratchDir dir("domain_polygons");
+    write_foam_case(dir.path(), poly, {.convert_to_meters = 1e-3, .uniaxial = true});
+    check_mesh_ok(dir.path(), poly);
+  }
+}
+
 TEST_CASE("checkMesh accepts the thesis' 6-fibre cell, its two regions as phase zones", "[export][openfoam]") {
   const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(test::example("fibres_6"))));
   ExportMesh e;
