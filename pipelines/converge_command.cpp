@@ -92,7 +92,9 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       values.resize(names.size());
     }
     for (std::size_t i = 0; i < q.size(); ++i) values[i].push_back(q[i].second);
-    cells.push_back(report.at("mesh").at("cells").get<double>());
+    // The solved cells: the case's polygons (export.cells) or the mesh's triangles.
+    const Json& solved = report.contains("case_cells") ? report.at("case_cells") : report.at("mesh");
+    cells.push_back(solved.at("cells").get<double>());
     tpg.push_back(n);
     seconds.push_back(report.at("seconds").at("total").get<double>());
     levels.push_back({{"triangles_per_grain", n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});

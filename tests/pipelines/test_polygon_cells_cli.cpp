@@ -64,3 +64,18 @@ TEST_CASE("export.cells: grainmesh export makes polygons of a mesh.vtu, and a ba
                        "export.cells: must be triangles or polygons, got '3'"},
                       dir / "bad");
 }
+
+TEST_CASE("grainmesh converge with polygonal cells counts the case's cells", "[cli][dual][openfoam]") {
+  test::ScratchDir dir("polygon_converge");
+  const auto r = run_grainmesh({"converge", "-o", (dir / "c").string(), "--levels", "3", "--start", "25", "--set",
+                                "export.cells=polygons"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const Json study = Json::parse(test::read_file(dir / "c/report.json"));
+  REQUIRE(study.contains("levels"));
+  for (const Json& level : study["levels"]) {
+    const Json run = Json::parse(test::read_file(dir / "c" / level["directory"].get<std::string>() / "report.json"));
+    CHECK(level["cells"].get<double>() == run["case_cells"]["cells"].get<double>());
+    CHECK(level["cells"].get<double>() < run["mesh"]["cells"].get<double>());
+  }
+}
