@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
        [](const fs::path& dir, const ProcessRun&) {
          return Json::parse(read_text_file(dir / "out" / "report.json"))["seconds"].get<double>();
        },
-       [](const fs::path& dir) { return read_vtu(dir / "out" / "mesh.vtu").mesh; }},
+       [](const fs::path& dir) { return *as_triangles(read_vtu(dir / "out" / "mesh.vtu").mesh); }},
       gmsh_peer("Gmsh Frontal-Delaunay", "front2d"),
       gmsh_peer("Gmsh Delaunay", "del2d"),
       // A refinement mesher's edges are at most its bound: 1.5 h gives about our count.

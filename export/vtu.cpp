@@ -185,12 +185,20 @@ VtuContents read_vtu(const std::filesystem::path& file) {
     grid->GetPoint(i, x);
     out.mesh.points.push_back({x[0], x[1]});
   }
+  std::vector<int> ring;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    if (grid->GetCellType(c) != VTK_TRIANGLE) throw IoError(file.string() + ": cell " + std::to_string(c) + " is not a triangle");
+    if (grid->GetCellType(c) != VTK_TRIANGLE && grid->GetCellType(c) != VTK_POLYGON)
+      throw IoError(file.string() + ": cell " + std::to_string(c) + " is neither a triangle nor a polygon");
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     grid->GetCellPoints(c, n, ids);
-    out.mesh.triangles.push_back({static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2])});
+    ring.clear();
+    for (vtkIdType k = 0; k < n; ++k) {
+      if (ids[k] < 0 || ids[k] >= grid->GetNumberOfPoints())
+        throw IoError(file.string() + ": cell " + std::to_string(c) + " names a point that is not in the file");
+      ring.push_back(static_cast<int>(ids[k]));
+    }
+    out.mesh.add_cell(ring);
   }
   vtkCellData* cd = grid->GetCellData();
   for (int a = 0; a < cd->GetNumberOfArrays(); ++a) {

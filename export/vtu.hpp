@@ -36,10 +36,10 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
 void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels = {});
 
-// Reads a VTU written by write_vtu: points, triangles, every cell array (integer arrays
+// Reads a VTU written by write_vtu: points, cells (triangles and polygons), every cell array (integer arrays
 // as int, the rest as double) and every string array of the field data. Throws IoError.
 struct VtuContents {
-  TriMesh mesh;
+  CellMesh mesh;  // triangles and polygons as written
   std::vector<CellField> fields;
   std::vector<FieldLabels> labels;
   // The integer scalar cell array `name` (e.g. "grain", "phase"), or nullptr.

@@ -11,22 +11,25 @@
 
 namespace grainmesh {
 
-void pair_periodic_nodes(const Tessellation& t, GrainMesh& m) {
-  m.pairs = {};
-  if (!t.periodic) return;
+PeriodicPairs pair_periodic_nodes(const Tessellation& t, const std::vector<Vec2>& points) {
+  if (!t.periodic) return {};
   try {
-    m.pairs = pair_by_position(m.mesh.points, Box{{0.0, 0.0}, {t.width, t.height}});
+    return pair_by_position(points, Box{{0.0, 0.0}, {t.width, t.height}});
   } catch (const GeometryError& e) {
     throw GeometryError(std::string("mesh: ") + e.what());
   }
 }
 
 Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
-  const TriMesh& mesh = m.mesh;
+  return check_conformity(t, LabelledCells{cell_mesh(m.mesh), m.grain, m.phase, m.pairs}, area_tolerance);
+}
+
+Conformity check_conformity(const Tessellation& t, const LabelledCells& m, double area_tolerance) {
+  const CellMesh& mesh = m.mesh;
   const double W = t.width, H = t.height;
   Conformity c;
-  if (m.phase.size() != mesh.triangles.size() || m.grain.size() != mesh.triangles.size())
-    throw GeometryError("conformity: the mesh needs a grain and a phase for each of its triangles");
+  if (m.phase.size() != mesh.cells() || m.grain.size() != mesh.cells())
+    throw GeometryError("conformity: the mesh needs a grain and a phase for each of its cells");
   // Nodes: no two at one place, and every tessellation vertex among them.
   PointMap<int> node;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
@@ -34,15 +37,15 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
       throw GeometryError("conformity: two nodes at " + to_text(mesh.points[v]));
   for (const Vec2 v : t.vertices)
     if (!node.count(point_key(v))) throw GeometryError("conformity: the tessellation vertex " + to_text(v) + " is no mesh node");
-  const auto edges = mesh_edges(mesh);  // throws for an edge of three triangles
+  const auto edges = mesh_edges(mesh);  // throws for an edge of three cells
   for (const MeshEdge& e : edges) {
     if (e.right >= 0) continue;
     ++c.boundary_edges;
     const Vec2 a = mesh.points[e.a], b = mesh.points[e.b];
     if (cell_side(t, a, b) == kNoSide)
-      throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one triangle but lies inside the cell");
+      throw GeometryError("conformity: edge " + to_text(a) + " - " + to_text(b) + " has one cell but lies inside the periodic cell");
   }
-  // Each triangle inside the region of its grain: its centroid strictly inside one of the
+  // Each cell inside the region of its grain: its centroid strictly inside one of the
   // grain's regions and its corners no farther than rounding from it.
   std::vector<std::vector<int>> regions_of(t.grains.size());
   std::vector<PolygonDistance> dist;
@@ -55,24 +58,23 @@ Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double ar
   }
   const double tol = 1e-12 * std::max(W, H);
   std::vector<double> area(t.grains.size(), 0.0);
-  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+  for (std::size_t k = 0; k < mesh.cells(); ++k) {
     const int g = m.grain[k];
-    if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size())
-      throw GeometryError("conformity: triangle " + std::to_string(k) + " names grain " + std::to_string(g));
-    const Vec2 centre = triangle_centroid(mesh, static_cast<int>(k));
+    const std::string cell = "conformity: cell " + std::to_string(k);
+    if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size()) throw GeometryError(cell + " names grain " + std::to_string(g));
+    const Vec2 centre = cell_centroid(mesh, k);
     bool inside = false;
     for (int r : regions_of[g]) {
       if (!dist[r].contains(centre)) continue;
       inside = true;
-      for (int v : mesh.triangles[k])
-        if (dist[r](mesh.points[v]) > tol)
-          throw GeometryError("conformity: triangle " + std::to_string(k) + " reaches out of its grain " + std::to_string(g));
+      for (int v : mesh.cell(k))
+        if (dist[r](mesh.points[v]) > tol) throw GeometryError(cell + " reaches out of its grain " + std::to_string(g));
     }
-    if (!inside) throw GeometryError("conformity: triangle " + std::to_string(k) + " lies outside its grain " + std::to_string(g));
+    if (!inside) throw GeometryError(cell + " lies outside its grain " + std::to_string(g));
     if (m.phase[k] != t.grains[g].phase)
-      throw GeometryError("conformity: triangle " + std::to_string(k) + " has phase " + std::to_string(m.phase[k]) +
-                          ", its grain " + std::to_string(g) + " phase " + std::to_string(t.grains[g].phase));
-    area[g] += triangle_area(mesh, static_cast<int>(k));
+      throw GeometryError(cell + " has phase " + std::to_string(m.phase[k]) + ", its grain " + std::to_string(g) +
+                          " phase " + std::to_string(t.grains[g].phase));
+    area[g] += cell_area(mesh, k);
   }
   for (const Grain& g : t.grains) {
     const double err = std::abs(area[g.id] - g.area) / g.area;

@@ -61,7 +61,7 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
   json_file.replace_extension(".json");
   const MeshDescription d = read_mesh_description(json_file);
   ExportMesh m;
-  m.mesh = cell_mesh(vtu.mesh);
+  m.mesh = std::move(vtu.mesh);
   m.cell = d.cell;
   m.periodic = d.periodic;
   // A mesh read from a file: its periodic pairs from the nodes' exact coordinates.
@@ -108,8 +108,12 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
 void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out, "export");
   const FoamOptions o = read_foam_options(c);
-  const ExportMesh triangles = read_export_mesh(mesh_file, c);
-  const ExportMesh m = o.cells == FoamOptions::Cells::polygons ? polygon_cells(triangles) : triangles;
+  const ExportMesh read = read_export_mesh(mesh_file, c);
+  // A file of polygonal cells (an earlier export's mesh.vtu) is written as it is.
+  const bool triangles = as_triangles(read.mesh).has_value();
+  if (!triangles && o.cells == FoamOptions::Cells::triangles)
+    c.fail("export.cells", "is triangles, but " + mesh_file.string() + " holds polygonal cells: set polygons to export them as they are");
+  const ExportMesh m = o.cells == FoamOptions::Cells::polygons && triangles ? polygon_cells(read) : read;
   Warnings warnings;
   for (const std::string& w : check_load(m.cell, m.periodic, m.phases, o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();

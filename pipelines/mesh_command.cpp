@@ -186,25 +186,24 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
 void run_check_command(const std::filesystem::path& tessellation, const std::filesystem::path& mesh_file) {
   const Tessellation t = read_tessellation_file(tessellation);
   VtuContents vtu = read_vtu(mesh_file);
-  GrainMesh m;
-  m.mesh = std::move(vtu.mesh);
   auto cell_ints = [&](const std::string& name) {
     if (const std::vector<int>* v = vtu.ints(name)) return *v;
     throw IoError(mesh_file.string() + ": no integer cell array '" + name + "' (is it a grainmesh mesh.vtu?)");
   };
-  m.grain = cell_ints("grain");
-  m.phase = cell_ints("phase");
+  LabelledCells m{std::move(vtu.mesh), cell_ints("grain"), cell_ints("phase"), {}};
   Conformity c;
   try {
     validate(m.mesh);
-    pair_periodic_nodes(t, m);
+    m.pairs = pair_periodic_nodes(t, m.mesh.points);
     c = check_conformity(t, m);
   } catch (const GeometryError& e) {
     throw GeometryError(mesh_file.string() + ": " + e.what());
   }
-  std::printf("grainmesh check: %s conforms to %s: %zu triangles, grain areas within %.1e, %zu + %zu periodic node "
+  const bool triangles = as_triangles(m.mesh).has_value();
+  std::printf("grainmesh check: %s conforms to %s: %zu %s, grain areas within %.1e, %zu + %zu periodic node "
               "pairs within %.1e, %zu edges on the cell's sides\n",
-              mesh_file.string().c_str(), tessellation.string().c_str(), m.mesh.triangles.size(), c.max_area_error,
+              mesh_file.string().c_str(), tessellation.string().c_str(), m.mesh.cells(),
+              triangles ? "triangles" : "polygonal cells", c.max_area_error,
               m.pairs.x.size(), m.pairs.y.size(), c.max_pair_mismatch, c.boundary_edges);
 }
 

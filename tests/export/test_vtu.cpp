@@ -18,7 +18,8 @@ TEST_CASE("VTU files read back exactly", "[export]") {
   write_vtu(dir / "m.vtu", m, {{"region", kLabels}, {"quality", std::vector<double>{0.25, 0.75}}});
   const VtuContents back = read_vtu(dir / "m.vtu");
   CHECK(back.mesh.points == m.points);
-  CHECK(back.mesh.triangles == m.triangles);
+  REQUIRE(as_triangles(back.mesh).has_value());
+  CHECK(as_triangles(back.mesh)->triangles == m.triangles);
   REQUIRE(back.ints("region") != nullptr);
   CHECK(*back.ints("region") == kLabels);
   CHECK(back.ints("quality") == nullptr);  // not an integer array
@@ -28,6 +29,21 @@ TEST_CASE("VTU files read back exactly", "[export]") {
   CHECK(std::get<std::vector<int>>(back.fields[0].values) == kLabels);
   CHECK(back.fields[1].name == "quality");
   CHECK(std::get<std::vector<double>>(back.fields[1].values) == std::vector<double>{0.25, 0.75});
+}
+
+TEST_CASE("VTU polygonal cells read back exactly, triangles among them", "[export]") {
+  test::ScratchDir dir("vtu");
+  CellMesh m;
+  m.points = {{0, 0}, {1, 0}, {2, 0.5}, {1, 1}, {0, 1}};
+  m.add_cell(std::vector<int>{0, 1, 3, 4});
+  m.add_cell(std::vector<int>{1, 2, 3});
+  write_vtu(dir / "m.vtu", m, {{"grain", std::vector<int>{4, 7}}});
+  const VtuContents back = read_vtu(dir / "m.vtu");
+  CHECK(back.mesh.points == m.points);
+  CHECK(back.mesh.start == m.start);
+  CHECK(back.mesh.corners == m.corners);
+  CHECK_FALSE(as_triangles(back.mesh).has_value());
+  CHECK(*back.ints("grain") == std::vector<int>{4, 7});
 }
 
 TEST_CASE("VTU vectors, tensors and labels read back exactly", "[export]") {

@@ -46,8 +46,23 @@ void check_dual(const Tessellation& t, const GrainMesh& m, double max_ratio) {
   CHECK(worst <= 1e-9);
   INFO(d.mesh.cells() << " cells from " << m.mesh.triangles.size() << " triangles");
   CHECK(static_cast<double>(d.mesh.cells()) <= max_ratio * static_cast<double>(m.mesh.triangles.size()));
-  CHECK(d.circumcentres + d.centroids == m.mesh.triangles.size());
-  CHECK(d.circumcentres > 0.9 * static_cast<double>(m.mesh.triangles.size()));
+  // Every triangle of the conforming mesh (splits add some) takes its circumcentre, so
+  // every face between the cells of two nodes lies on the bisector of the edge joining
+  // them: at right angles to it.
+  CHECK(d.circumcentres >= m.mesh.triangles.size());
+  CHECK(d.centroids == 0);
+  std::size_t faces = 0, skew = 0;
+  for (const MeshEdge& e : mesh_edges(d.mesh)) {
+    if (e.right < 0) continue;
+    const int v = d.node[e.left], w = d.node[e.right];
+    const int n = static_cast<int>(m.mesh.points.size());
+    if (v == w || v >= n || w >= n) continue;  // a cut along a grain boundary; a split edge's midpoint
+    const Vec2 face = d.mesh.points[e.b] - d.mesh.points[e.a], joining = m.mesh.points[w] - m.mesh.points[v];
+    ++faces;
+    skew += std::abs(dot(face, joining)) > 1e-9 * std::sqrt(norm2(face) * norm2(joining));
+  }
+  CHECK(faces > d.mesh.cells());
+  CHECK(skew == 0);
   if (t.periodic) {
     // The carried pairs are exactly the pairs by position of the dual's side points.
     const PeriodicPairs by_position = pair_by_position(d.mesh.points, Box{{0.0, 0.0}, {t.width, t.height}});
@@ -64,18 +79,43 @@ void check_dual(const Tessellation& t, const GrainMesh& m, double max_ratio) {
 
 }  // namespace
 
-TEST_CASE("the dual of two triangles: four corner cells covering the square", "[dual]") {
+TEST_CASE("the dual of two triangles: the corners' Voronoi cells, or each label's own", "[dual]") {
   const TriMesh square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}};
-  for (const std::vector<int>& label : {std::vector<int>{0, 0}, std::vector<int>{0, 1}}) {
-    const DualMesh d = dual_mesh(square, label);
-    // Right triangles: centroids; nodes 0 and 2 are split when the labels differ.
-    CHECK(d.centroids == 2);
-    CHECK(d.mesh.cells() == (label[0] == label[1] ? 4u : 6u));
-    double total = 0.0;
-    for (std::size_t c = 0; c < d.mesh.cells(); ++c) total += cell_area(d.mesh, c);
-    CHECK(total == Approx(1.0).epsilon(1e-15));
+  // One label: the two circumcentres are the square's centre (one point), the cells the
+  // four quarter squares.
+  const DualMesh one = dual_mesh(square, {0, 0});
+  CHECK(one.circumcentres == 2);
+  CHECK(one.splits == 0);
+  REQUIRE(one.mesh.cells() == 4);
+  for (std::size_t c = 0; c < 4; ++c) {
+    CHECK(one.mesh.cell(c).size() == 4);
+    CHECK(cell_area(one.mesh, c) == Approx(0.25).epsilon(1e-15));
   }
+  // Two labels: the diagonal bounds both, and each right angle faces it, so it is split
+  // (and so on, for a few rounds: right isosceles halves stay right isosceles); each
+  // label's cells still cover exactly its half.
+  const DualMesh two = dual_mesh(square, {0, 1});
+  CHECK(two.splits > 0);
+  double half[2] = {0.0, 0.0};
+  for (std::size_t c = 0; c < two.mesh.cells(); ++c) half[two.triangle[c]] += cell_area(two.mesh, c);
+  CHECK(half[0] == Approx(0.5).epsilon(1e-15));
+  CHECK(half[1] == Approx(0.5).epsilon(1e-15));
   CHECK_THROWS_WITH(dual_mesh(square, {0}), Catch::Contains("1 labels for 2 triangles"));
+}
+
+TEST_CASE("an edge bounding a label that an obtuse triangle faces is split at its midpoint", "[dual]") {
+  // A square with a node just above the middle of its bottom side: the triangle on that
+  // side is obtuse, its circumcentre far below the side. The side is split at its
+  // midpoint, and every triangle takes its circumcentre again.
+  const TriMesh square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0.3}}, {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}};
+  const DualMesh d = dual_mesh(square, {0, 0, 0, 0});
+  CHECK(d.splits == 1);
+  CHECK(d.centroids == 0);
+  double total = 0.0;
+  for (std::size_t c = 0; c < d.mesh.cells(); ++c) total += cell_area(d.mesh, c);
+  CHECK(total == Approx(4.0).epsilon(1e-15));
+  // Node 5, the bottom side's midpoint, got a cell of its own.
+  CHECK(std::count(d.node.begin(), d.node.end(), 5) == 1);
 }
 
 TEST_CASE("an interior node of acute triangles gets its Voronoi cell", "[dual]") {

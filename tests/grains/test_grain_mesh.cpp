@@ -296,9 +296,7 @@ TEST_CASE("the mesh's periodic pairs are the cut's partners carried to the copie
     const GrainMesh m = mesh_tessellation(t, {.size = size_for(t, 40), .phase_size = {}});
     // Made from the construction (vertex partners, seeds copied across), they are exactly
     // the pairs the nodes' coordinates give; the cut's own pairs are among them.
-    GrainMesh by_position = m;
-    pair_periodic_nodes(t, by_position);
-    PeriodicPairs sorted = by_position.pairs;
+    PeriodicPairs sorted = pair_periodic_nodes(t, m.mesh.points);
     for (auto* side : {&sorted.x, &sorted.y}) std::sort(side->begin(), side->end());
     CHECK(m.pairs == sorted);
     CHECK(m.pairs.x.size() > t.partners.x.size());

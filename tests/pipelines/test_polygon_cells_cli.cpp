@@ -1,5 +1,6 @@
 // export.cells = polygons end to end: `run` solves the dual cells and reports them,
-// `export` turns a mesh.vtu into polygons, and an unknown value is refused.
+// `export` turns a mesh.vtu into polygons (and writes them, which `check` and `export`
+// read back), and an unknown value is refused.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -57,6 +58,26 @@ TEST_CASE("export.cells: grainmesh export makes polygons of a mesh.vtu, and a ba
   const Json run = Json::parse(test::read_file(dir / "run/report.json"));
   CHECK(r["cells"].get<double>() < 0.7 * run["mesh"]["cells"].get<double>());
   REQUIRE(test::run_openfoam(dir / "e", "checkMesh").out.find("Mesh OK.") != std::string::npos);
+
+  // The export's mesh.vtu holds the polygons (VTK polygons): the conformity checker
+  // passes them, and the export takes them back as they are.
+  const std::string tess = (dir / "run/tessellation.json").string(), cells_vtu = (dir / "e/mesh.vtu").string();
+  const auto ok = run_grainmesh({"check", tess, cells_vtu});
+  INFO(ok.err);
+  CHECK(ok.exit_code == 0);
+  CHECK(ok.out.find("conforms") != std::string::npos);
+  CHECK(ok.out.find(std::to_string(r["cells"].get<long>()) + " polygonal cells") != std::string::npos);
+  fs::create_directories(dir / "cells");
+  fs::copy_file(cells_vtu, dir / "cells/mesh.vtu");
+  fs::copy_file(dir / "run/mesh.json", dir / "cells/mesh.json");
+  const auto again = run_grainmesh({"export", (dir / "cells/mesh.vtu").string(), "--config", config, "-o",
+                                    (dir / "again").string(), "--set", "export.cells=polygons"});
+  INFO(again.err);
+  REQUIRE(again.exit_code == 0);
+  CHECK(test::read_file(dir / "again/constant/polyMesh/faces") == test::read_file(dir / "e/constant/polyMesh/faces"));
+  test::check_refused({{"export", (dir / "cells/mesh.vtu").string(), "--config", config, "--set", "export.cells=triangles"}, 2,
+                       "export.cells: is triangles, but"},
+                      dir / "bad");
 
   test::check_refused({{"run", config, "--set", "export.cells=hexagons"}, 2, "export.cells: must be triangles or polygons, got 'hexagons'"},
                       dir / "bad");
