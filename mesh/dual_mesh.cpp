@@ -23,6 +23,10 @@ constexpr double kSameCentre = 1e-9;
 // would leave a face of no length along that edge: the centroid instead.
 constexpr double kBoundaryMargin = 0.02;
 
+// Two mesh edges from a node continue each other when the sine of their angle is below
+// this: nodes placed on a straight grain boundary or side are on it up to rounding.
+constexpr double kStraight = 1e-9;
+
 std::uint64_t edge_key(int a, int b) {
   return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 | static_cast<std::uint32_t>(b);
 }
@@ -186,6 +190,12 @@ class DualBuilder {
     return {order, closed};
   }
 
+  // The mesh edges v -> a and v -> b continue each other (a, v, b on one line, up to rounding).
+  bool straight_through(int v, int a, int b) const {
+    const Vec2 va = mesh_.points[a] - mesh_.points[v], vb = mesh_.points[b] - mesh_.points[v];
+    return dot(va, vb) < 0.0 && std::abs(cross(va, vb)) <= kStraight * std::sqrt(norm2(va) * norm2(vb));
+  }
+
   std::vector<Cell> all_cells() const {
     std::vector<Cell> cells;
     for (int v = 0; v < static_cast<int>(mesh_.points.size()); ++v)
@@ -196,6 +206,7 @@ class DualBuilder {
   // v's cells: one for each run of equal labels in its fan.
   std::vector<Cell> cells_around(int v) const {
     auto [order, closed] = fan(v);
+    const bool open_fan = !closed;
     const std::size_t k = order.size();
     // A closed fan of several labels starts where the label changes.
     if (closed) {
@@ -233,6 +244,13 @@ class DualBuilder {
         cells.push_back(std::move(cell));
         i = j + 1;
       }
+      // A node inside a straight side or grain boundary (one cell on a side, two halves
+      // inside the cell): the cut runs straight through it, so it is no corner, and each
+      // half's cut is one face, centred near the node, not two.
+      const std::size_t first_run = cells.front().triangles.size();
+      if (cells.size() == (open_fan ? 1u : 2u) &&
+          straight_through(v, other(order.front(), v, 1), other(order[first_run - 1], v, 2)))
+        for (Cell& cell : cells) cell.ring.erase(cell.ring.begin());
     }
     for (Cell& cell : cells) {  // coinciding circumcentres appear once
       auto& r = cell.ring;
