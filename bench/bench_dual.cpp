@@ -24,8 +24,8 @@
 #include "common/errors.hpp"
 #include "export/foam.hpp"
 #include "pipelines/config.hpp"
-#include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
+#include "export/kirsch.hpp"
 #include "pipelines/laminate.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"
@@ -132,30 +132,14 @@ double default_limit(const Family& f, Json& results) {
   return e.limit;
 }
 
-// Kirsch: sigma_xx of an infinite plate under T along x, at p from the centre of a hole of radius R.
-double kirsch(Vec2 p, double R, double T) {
-  const double rr = norm(p), th = std::atan2(p.y, p.x), a = R * R / (rr * rr);
-  return T * (1 - a * (1.5 * std::cos(2 * th) + std::cos(4 * th)) + 1.5 * a * a * std::cos(4 * th));
-}
-
-// The quarter plate of OpenFOAM's plateHole tutorial (test_foam.cpp): sigma_xx in the cells
-// along the symmetry line x = 0 from the hole up to 3 R, against Kirsch.
+// Kirsch's plate (tests/export/kirsch.hpp): sigma_xx in the cells along the symmetry line
+// x = 0 from the hole up to 3 R, against Kirsch's solution.
 Json kirsch_row(Cells cells) {
-  const double R = 0.5, T = 1e4;
-  const Config c = Config::from_text(
-      "[domain]\nshape = difference(polygon(0 0, 10 0, 10 10, 0 10), circle(0, 0, 0.5))\n"
-      "[size]\nh0 = 0.025\nfunction = min(1 + 0.15*(sqrt(x^2+y^2) - 0.5)/0.025, 16)\n",
-      "plate_hole.ini");
-  const DistMeshResult r = mesh_domain(read_domain_job(c));
-  ExportMesh triangles;
-  triangles.mesh = cell_mesh(r.mesh);
-  triangles.phase.assign(r.mesh.triangles.size(), 0);
-  triangles.grain = triangles.phase;
-  triangles.phases = {{"steel", 2e11, 0.3}};
-  for (const Vec2 p : r.mesh.points) triangles.cell.extend(p);
+  const double R = test::kHoleRadius;
+  const ExportMesh triangles = test::plate_with_hole();
   const ExportMesh e = cells == Cells::polygons ? polygon_cells(triangles) : triangles;
   Homogenised h;
-  Json row = check_and_solve(e, {.convert_to_meters = 1.0, .traction = T, .uniaxial = true}, h);
+  Json row = check_and_solve(e, {.convert_to_meters = 1.0, .traction = test::kPlateTraction, .uniaxial = true}, h);
   const FieldValues sigma = read_cell_field(h.run.result_dir / kStressField, "symmTensor", e.mesh.cells());
   double sum = 0.0, worst = 0.0, top = 0.0, nearest = 1e300;
   int n = 0;
@@ -166,7 +150,7 @@ Json kirsch_row(Cells cells) {
       on_line |= std::abs(e.mesh.points[ring[i]].x) < 1e-9 && std::abs(e.mesh.points[ring[(i + 1) % ring.size()]].x) < 1e-9;
     const Vec2 centre = cell_centroid(e.mesh, k);
     if (!on_line || centre.y > 3 * R) continue;
-    const double error = std::abs(sigma[k][0] / kirsch(centre, R, T) - 1.0);
+    const double error = std::abs(sigma[k][0] / test::kirsch_sigma_xx(centre) - 1.0);
     sum += error;
     worst = std::max(worst, error);
     ++n;

@@ -15,6 +15,7 @@
 #include "common/text_file.hpp"
 #include "export/foam.hpp"
 #include "helpers.hpp"
+#include "kirsch.hpp"
 #include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
@@ -272,25 +273,9 @@ TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across a
 }
 
 TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of the hole", "[export][openfoam][physics]") {
-  // OpenFOAM's plateHole tutorial: a quarter of a 20 x 20 plate with a hole of radius
-  // 0.5, 10 kPa pulling on the right, symmetry on the left and bottom, the top free.
-  const double R = 0.5, T = 1e4;
-  const Config c = Config::from_text(
-      "[domain]\nshape = difference(polygon(0 0, 10 0, 10 10, 0 10), circle(0, 0, 0.5))\n"
-      "[size]\nh0 = 0.025\nfunction = min(1 + 0.15*(sqrt(x^2+y^2) - 0.5)/0.025, 16)\n",
-      "plate_hole.ini");
-  const DistMeshResult r = mesh_domain(read_domain_job(c));
-  ExportMesh triangles;
-  triangles.mesh = cell_mesh(r.mesh);
-  triangles.phase.assign(r.mesh.triangles.size(), 0);
-  triangles.grain = triangles.phase;
-  triangles.phases = {{"steel", 2e11, 0.3}};
-  for (const Vec2 p : r.mesh.points) triangles.cell.extend(p);
-  // Kirsch: sigma_xx of an infinite plate at polar (r, theta) from the hole's centre.
-  auto kirsch = [&](Vec2 p) {
-    const double rr = norm(p), th = std::atan2(p.y, p.x), a = R * R / (rr * rr);
-    return T * (1 - a * (1.5 * std::cos(2 * th) + std::cos(4 * th)) + 1.5 * a * a * std::cos(4 * th));
-  };
+  // Symmetry on the left and bottom, the traction pulling on the right, the top free.
+  const ExportMesh triangles = test::plate_with_hole();
+  const double R = test::kHoleRadius, T = test::kPlateTraction;
   for (const bool polygons : {false, true}) {
     INFO((polygons ? "polygons" : "triangles"));
     const ExportMesh e = polygons ? polygon_cells(triangles) : triangles;
@@ -307,9 +292,9 @@ TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of t
     for (int i = 0; i < 3; ++i) {
       const int k = near[i].second;
       const Vec2 c0 = cell_centroid(e.mesh, k);
-      INFO("cell at " << c0.x << " " << c0.y << ": sigma_xx " << sxx[k] << " Kirsch " << kirsch(c0));
-      CHECK(kirsch(c0) > 2.5 * T);
-      CHECK(sxx[k] == Approx(kirsch(c0)).epsilon(0.05));
+      INFO("cell at " << c0.x << " " << c0.y << ": sigma_xx " << sxx[k] << " Kirsch " << test::kirsch_sigma_xx(c0));
+      CHECK(test::kirsch_sigma_xx(c0) > 2.5 * T);
+      CHECK(sxx[k] == Approx(test::kirsch_sigma_xx(c0)).epsilon(0.05));
     }
   }
 }
