@@ -13,6 +13,7 @@
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/output_dir.hpp"
+#include "pipelines/result_pictures.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"
 
@@ -128,18 +129,20 @@ void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, c
   for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
   write_mesh_description(dir / "mesh.json", description);
   if (picture_width == 0) return;
-  std::vector<std::string> names;
-  for (const Phase& p : t.phases) names.push_back(p.name);
+  const std::vector<std::string> names = phase_names(t);
   write_mesh_png(dir / "mesh.png", m.mesh,
                  {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .legend = names, .scale_bar = true,
                   .length_unit = length_unit});
   if (!detail) return;
-  // A detail at the centre, three grains wide, where single elements show.
+  write_mesh_png(dir / "mesh_detail.png", m.mesh,
+                 {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .view = detail_view(t),
+                  .legend = names, .scale_bar = true, .length_unit = length_unit});
+}
+
+Box detail_view(const Tessellation& t) {
   const double side = std::min({3.0 * std::sqrt(t.width * t.height / std::max(1, t.stats.grains)), t.width, t.height});
   const Vec2 centre{0.5 * t.width, 0.5 * t.height}, half{0.5 * side, 0.5 * side};
-  write_mesh_png(dir / "mesh_detail.png", m.mesh,
-                 {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .view = Box{centre - half, centre + half},
-                  .legend = names, .scale_bar = true, .length_unit = length_unit});
+  return Box{centre - half, centre + half};
 }
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {

@@ -45,6 +45,10 @@ std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q,
 void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width,
                       bool detail = true, const std::string& length_unit = {});
 
+// The window of mesh_detail.png: at the cell's centre, three mean grain diameters wide,
+// where single elements show.
+Box detail_view(const Tessellation& t);
+
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& config,
                       const std::filesystem::path& out);
 

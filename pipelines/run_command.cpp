@@ -17,6 +17,7 @@
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/result_pictures.hpp"
 #include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
 
@@ -272,6 +273,10 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   memory.begin();
   stage.show("exporting");
   const ExportMesh e = export_mesh(t, m, foam.cells);
+  if (foam.cells == FoamOptions::Cells::polygons && all_pictures)  // the solved cells, as mesh_detail.png shows the triangles
+    write_mesh_png(dir / "cells_detail.png", e.mesh,
+                   {.width_px = picture_width, .fill_by = e.phase, .outline_by = e.grain, .view = detail_view(t),
+                    .legend = phase_names(t), .scale_bar = true, .length_unit = unit});
   if (!c.has("export.format") && e.mesh.cells() > kBinaryCaseAboveCells) foam.binary = true;
   PolyMesh pm;
   const std::vector<std::string> case_dirs = write_cases(dir, e, foam, plan.boundary, pm);

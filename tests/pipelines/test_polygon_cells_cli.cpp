@@ -27,6 +27,9 @@ TEST_CASE("export.cells = polygons: the run solves the dual cells, inside the bo
   const Json& poly = report["polygons"];
   const Json& tri = report["triangles"];
   CHECK_FALSE(tri.contains("case_cells"));
+  // The solved cells drawn beside the triangles' detail.
+  CHECK(fs::file_size(dir / "polygons/cells_detail.png") > 1000);
+  CHECK_FALSE(fs::exists(dir / "triangles/cells_detail.png"));
   REQUIRE(poly.contains("case_cells"));
   CHECK(poly["case_cells"]["shape"] == "polygons");
   const double cells = poly["case_cells"]["cells"].get<double>(), triangles = poly["mesh"]["cells"].get<double>();
