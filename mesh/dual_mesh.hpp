@@ -29,8 +29,10 @@ struct DualMesh {
 
 // First makes the mesh conforming (conforming_delaunay.hpp): Delaunay in each label, no
 // edge bounding a label encroached. A cell's corners are then its triangles'
-// circumcentres, and where it meets an edge bounding its label, the edge's midpoint and the
-// node itself: its faces to neighbour cells lie on the bisectors of the mesh edges.
+// circumcentres, and where it meets edges bounding its label, the edges' midpoints and
+// the node itself (not where the two edges continue each other straight through the node:
+// then the cut is one face): its faces to neighbour cells lie on the bisectors of the mesh
+// edges.
 // A triangle still encroaching an edge bounding its label, or whose circumcentre lies
 // beyond an edge towards such a triangle, or one of a cell that would not be a simple
 // polygon, takes its centroid instead, and the midpoints of its edges become corners too.
