@@ -18,27 +18,11 @@ bool on_collinear_segment(Vec2 a, Vec2 b, Vec2 q) {
 }  // namespace
 
 double polygon_area(const std::vector<Vec2>& ring) {
-  const std::size_t n = ring.size();
-  if (n < 3) return 0.0;
-  double a2 = 0.0;
-  const Vec2 o = ring[0];
-  for (std::size_t k = 1; k + 1 < n; ++k) a2 += cross(ring[k] - o, ring[k + 1] - o);
-  return 0.5 * a2;
+  return ring_area(ring.size(), [&](std::size_t k) { return ring[k]; });
 }
 
 Vec2 polygon_centroid(const std::vector<Vec2>& ring) {
-  const std::size_t n = ring.size();
-  const Vec2 o = ring[0];
-  double a2 = 0.0;
-  Vec2 m{};
-  for (std::size_t k = 1; k + 1 < n; ++k) {
-    const Vec2 a = ring[k] - o, b = ring[k + 1] - o;
-    const double w = cross(a, b);
-    a2 += w;
-    m += w * (a + b);
-  }
-  if (a2 == 0.0) return o;
-  return o + m / (3.0 * a2);
+  return ring_centroid(ring.size(), [&](std::size_t k) { return ring[k]; });
 }
 
 std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, Vec2 normal, double offset) {

@@ -3,14 +3,40 @@
 // stage uses on grain and domain polygons.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "common/geometry.hpp"
 
 namespace grainmesh {
 
-// Signed area (> 0 counter-clockwise) and centroid of a ring. Summed relative to the first
-// vertex, so no cancellation far from the origin. O(n).
+// Signed area (> 0 counter-clockwise) and centroid of the ring of n points at(0) ..
+// at(n - 1), summed relative to the first, so no cancellation far from the origin. O(n).
+// For rings held as point ids into a mesh (cell_mesh.hpp) without copying them.
+template <typename At>
+double ring_area(std::size_t n, At at) {
+  if (n < 3) return 0.0;
+  double a2 = 0.0;
+  const Vec2 o = at(0);
+  for (std::size_t k = 1; k + 1 < n; ++k) a2 += cross(at(k) - o, at(k + 1) - o);
+  return 0.5 * a2;
+}
+template <typename At>
+Vec2 ring_centroid(std::size_t n, At at) {
+  const Vec2 o = at(0);
+  double a2 = 0.0;
+  Vec2 m{};
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const Vec2 a = at(k) - o, b = at(k + 1) - o;
+    const double w = cross(a, b);
+    a2 += w;
+    m += w * (a + b);
+  }
+  if (a2 == 0.0) return o;
+  return o + m / (3.0 * a2);
+}
+
+// The same of a ring of points.
 double polygon_area(const std::vector<Vec2>& ring);
 Vec2 polygon_centroid(const std::vector<Vec2>& ring);
 

@@ -2,9 +2,6 @@
 
 #include <algorithm>
 
-#include "common/errors.hpp"
-#include "mesh/dual_mesh.hpp"
-
 namespace grainmesh {
 
 Lame lame(const FoamPhase& p, bool plane_stress) {
@@ -42,31 +39,6 @@ double stiffness_contrast(const ExportMesh& m, const FoamOptions& o) {
 bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& o) {
   return o.interpolation == FoamOptions::Interpolation::harmonic ||
          (o.interpolation == FoamOptions::Interpolation::automatic && stiffness_contrast(m, o) <= 3.0);
-}
-
-ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
-  ExportMesh e{.mesh = cell_mesh(m.mesh), .grain = m.grain, .phase = m.phase, .phases = {}, .cell = Box{{0.0, 0.0}, {t.width, t.height}},
-               .periodic = t.periodic, .pairs = m.pairs};
-  e.phases = foam_phases(t.phases);
-  return e;
-}
-
-ExportMesh polygon_cells(const ExportMesh& triangles) {
-  const std::optional<TriMesh> mesh = as_triangles(triangles.mesh);
-  if (!mesh) throw GeometryError("export: the dual needs a mesh of triangles");
-  DualMesh d = dual_mesh(*mesh, triangles.grain, triangles.pairs);
-  ExportMesh e{.mesh = std::move(d.mesh), .grain = {}, .phase = {}, .phases = triangles.phases,
-               .cell = triangles.cell, .periodic = triangles.periodic, .pairs = std::move(d.pairs)};
-  for (int tri : d.triangle) {
-    e.grain.push_back(triangles.grain[tri]);
-    e.phase.push_back(triangles.phase[tri]);
-  }
-  return e;
-}
-
-ExportMesh export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::Cells cells) {
-  ExportMesh e = grain_export_mesh(t, m);
-  return cells == FoamOptions::Cells::polygons ? polygon_cells(e) : e;
 }
 
 }  // namespace grainmesh

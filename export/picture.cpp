@@ -225,8 +225,8 @@ void draw_colour_bar(cairo_t* c, const Canvas& canvas, const PictureOptions& opt
 }
 
 // True when the given vertices all lie beyond one side of the window `box`.
-template <typename Ids>
-bool outside_window(const CellMesh& mesh, const Box& box, const Ids& vertices) {
+template <typename Mesh, typename Ids>
+bool outside_window(const Mesh& mesh, const Box& box, const Ids& vertices) {
   bool left = true, right = true, below = true, above = true;
   for (int v : vertices) {
     const Vec2 p = mesh.points[v];
@@ -240,7 +240,8 @@ bool outside_window(const CellMesh& mesh, const Box& box, const Ids& vertices) {
 
 
 // Clips to the window and fills the cells: by the field's colour, else by fill_by.
-void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box& box, const PictureOptions& options,
+template <typename Mesh>
+void fill_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& box, const PictureOptions& options,
                bool field, double least, double most) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
   // A detail: clip to the window, and skip what lies wholly outside it.
@@ -250,7 +251,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box
 
   // Adds cell t to the current path, unless it lies outside the window.
   auto trace = [&](std::size_t t) {
-    const std::span<const int> v = mesh.cell(t);
+    const std::span<const int> v = cell_ring(mesh, t);
     if (outside_window(mesh, box, v)) return false;
     for (std::size_t k = 0; k < v.size(); ++k) {
       const Vec2 a = px(mesh.points[v[k]]);
@@ -264,7 +265,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box
   cairo_set_antialias(c, CAIRO_ANTIALIAS_NONE);
   if (field) {
     cairo_save(c);
-    for (std::size_t t = 0; t < mesh.cells(); ++t) {
+    for (std::size_t t = 0; t < cell_count(mesh); ++t) {
       if (!trace(t)) continue;
       const Rgb col = viridis((options.field[t] - least) / (most - least));
       cairo_set_source_rgb(c, col.r, col.g, col.b);
@@ -281,7 +282,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box
     for (int r : options.fill_by) max_label = std::max(max_label, r);
   for (int r = 0; r <= max_label; ++r) {
     bool any = false;
-    for (std::size_t t = 0; t < mesh.cells(); ++t) {
+    for (std::size_t t = 0; t < cell_count(mesh); ++t) {
       if (label(t) == r && trace(t)) any = true;
     }
     if (!any) continue;
@@ -294,7 +295,8 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box
 
 // The mesh's edges (thin, when they are long enough to see and no field is drawn), the
 // outline between labels (outline_by, else fill_by) and the boundary.
-void stroke_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const Box& box, const PictureOptions& options,
+template <typename Mesh>
+void stroke_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& box, const PictureOptions& options,
                  bool field) {
   auto px = [&](Vec2 p) { return canvas.px(p); };
   const double scale = canvas.scale();
@@ -328,25 +330,21 @@ void stroke_mesh(cairo_t* c, const Canvas& canvas, const CellMesh& mesh, const B
 
 }
 
-}  // namespace
-
-void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
-  write_mesh_png(file, cell_mesh(mesh), options);
-}
-
-void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, const PictureOptions& options) {
+// write_mesh_png, for triangles and for cells.
+template <typename Mesh>
+void draw_mesh(const std::filesystem::path& file, const Mesh& mesh, const PictureOptions& options) {
   Box box;
   for (const Vec2 p : mesh.points) box.extend(p);
-  if (box.empty() || mesh.cells() == 0) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
+  if (box.empty() || cell_count(mesh) == 0) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
   if (options.view) {
     if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
     box = *options.view;
   }
   const bool field = !options.field.empty();
   auto check_size = [&](std::size_t n, const char* what) {
-    if (n != 0 && n != mesh.cells())
+    if (n != 0 && n != cell_count(mesh))
       throw IoError(file.string() + ": the " + what + " has " + std::to_string(n) + " values for " +
-                    std::to_string(mesh.cells()) + " cells");
+                    std::to_string(cell_count(mesh)) + " cells");
   };
   check_size(options.field.size(), "field");
   check_size(options.fill_by.size(), "fill labelling");
@@ -364,6 +362,16 @@ void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, con
   if (key) draw_key(c, canvas, options, box.width(), field, px(box.lo).y + options.margin_px * 0.5);
   if (field) draw_colour_bar(c, canvas, options, least, most);
   canvas.save(file);
+}
+
+}  // namespace
+
+void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options) {
+  draw_mesh(file, mesh, options);
+}
+
+void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, const PictureOptions& options) {
+  draw_mesh(file, mesh, options);
 }
 
 void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t, const PictureOptions& options) {

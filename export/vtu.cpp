@@ -49,15 +49,10 @@ class ErrorCatcher final : public vtkCommand {
   std::string message;
 };
 
-}  // namespace
-
-void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
-               const std::vector<FieldLabels>& labels) {
-  write_vtu(file, cell_mesh(mesh), fields, labels);
-}
-
-void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
-               const std::vector<FieldLabels>& labels) {
+// write_vtu, for triangles and for cells.
+template <typename Mesh>
+void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::vector<CellField>& fields,
+                const std::vector<FieldLabels>& labels) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
@@ -66,11 +61,11 @@ void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const st
 
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  const std::size_t cells = mesh.cells();
+  const std::size_t cells = cell_count(mesh);
   grid->Allocate(static_cast<vtkIdType>(cells));
   std::vector<vtkIdType> ids;
   for (std::size_t c = 0; c < cells; ++c) {
-    const std::span<const int> ring = mesh.cell(c);
+    const std::span<const int> ring = cell_ring(mesh, c);
     ids.assign(ring.begin(), ring.end());
     grid->InsertNextCell(ring.size() == 3 ? VTK_TRIANGLE : VTK_POLYGON, static_cast<vtkIdType>(ids.size()), ids.data());
   }
@@ -115,6 +110,18 @@ void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const st
   writer->SetCompressorTypeToLZ4();
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
     throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+}
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels) {
+  write_grid(file, mesh, fields, labels);
+}
+
+void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels) {
+  write_grid(file, mesh, fields, labels);
 }
 
 void write_tessellation_vtp(const std::filesystem::path& file, const Tessellation& t) {

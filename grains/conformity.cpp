@@ -20,15 +20,15 @@ PeriodicPairs pair_periodic_nodes(const Tessellation& t, const std::vector<Vec2>
   }
 }
 
-Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
-  return check_conformity(t, LabelledCells{cell_mesh(m.mesh), m.grain, m.phase, m.pairs}, area_tolerance);
-}
+namespace {
 
-Conformity check_conformity(const Tessellation& t, const LabelledCells& m, double area_tolerance) {
-  const CellMesh& mesh = m.mesh;
+// The checks, written once for triangles and for cells of any shape.
+template <typename Mesh>
+Conformity check_cells(const Tessellation& t, const Mesh& mesh, const std::vector<int>& grain,
+                       const std::vector<int>& phase, const PeriodicPairs& pairs, double area_tolerance) {
   const double W = t.width, H = t.height;
   Conformity c;
-  if (m.phase.size() != mesh.cells() || m.grain.size() != mesh.cells())
+  if (phase.size() != cell_count(mesh) || grain.size() != cell_count(mesh))
     throw GeometryError("conformity: the mesh needs a grain and a phase for each of its cells");
   // Nodes: no two at one place, and every tessellation vertex among them.
   PointMap<int> node;
@@ -58,8 +58,8 @@ Conformity check_conformity(const Tessellation& t, const LabelledCells& m, doubl
   }
   const double tol = 1e-12 * std::max(W, H);
   std::vector<double> area(t.grains.size(), 0.0);
-  for (std::size_t k = 0; k < mesh.cells(); ++k) {
-    const int g = m.grain[k];
+  for (std::size_t k = 0; k < cell_count(mesh); ++k) {
+    const int g = grain[k];
     const std::string cell = "conformity: cell " + std::to_string(k);
     if (g < 0 || static_cast<std::size_t>(g) >= t.grains.size()) throw GeometryError(cell + " names grain " + std::to_string(g));
     const Vec2 centre = cell_centroid(mesh, k);
@@ -67,12 +67,12 @@ Conformity check_conformity(const Tessellation& t, const LabelledCells& m, doubl
     for (int r : regions_of[g]) {
       if (!dist[r].contains(centre)) continue;
       inside = true;
-      for (int v : mesh.cell(k))
+      for (int v : cell_ring(mesh, k))
         if (dist[r](mesh.points[v]) > tol) throw GeometryError(cell + " reaches out of its grain " + std::to_string(g));
     }
     if (!inside) throw GeometryError(cell + " lies outside its grain " + std::to_string(g));
-    if (m.phase[k] != t.grains[g].phase)
-      throw GeometryError(cell + " has phase " + std::to_string(m.phase[k]) + ", its grain " + std::to_string(g) +
+    if (phase[k] != t.grains[g].phase)
+      throw GeometryError(cell + " has phase " + std::to_string(phase[k]) + ", its grain " + std::to_string(g) +
                           " phase " + std::to_string(t.grains[g].phase));
     area[g] += cell_area(mesh, k);
   }
@@ -89,15 +89,25 @@ Conformity check_conformity(const Tessellation& t, const LabelledCells& m, doubl
       left += p.x == 0.0 ? 1 : 0;
       bottom += p.y == 0.0 ? 1 : 0;
     }
-    if (m.pairs.x.size() != left || m.pairs.y.size() != bottom)
+    if (pairs.x.size() != left || pairs.y.size() != bottom)
       throw GeometryError("conformity: not every node on the left or bottom side is paired");
-    for (const auto& [a, b] : m.pairs.x)
+    for (const auto& [a, b] : pairs.x)
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{W, 0.0}));
-    for (const auto& [a, b] : m.pairs.y)
+    for (const auto& [a, b] : pairs.y)
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{0.0, H}));
     if (c.max_pair_mismatch > tol) throw GeometryError("conformity: periodic node pairs do not match");
   }
   return c;
+}
+
+}  // namespace
+
+Conformity check_conformity(const Tessellation& t, const GrainMesh& m, double area_tolerance) {
+  return check_cells(t, m.mesh, m.grain, m.phase, m.pairs, area_tolerance);
+}
+
+Conformity check_conformity(const Tessellation& t, const LabelledCells& m, double area_tolerance) {
+  return check_cells(t, m.mesh, m.grain, m.phase, m.pairs, area_tolerance);
 }
 
 }  // namespace grainmesh

@@ -39,12 +39,15 @@ std::optional<TriMesh> as_triangles(const CellMesh& mesh) {
   return out;
 }
 
-double cell_area(const CellMesh& mesh, std::size_t c) { return polygon_area(ring_of(mesh, c)); }
+double cell_area(const CellMesh& mesh, std::size_t c) {
+  const std::span<const int> v = mesh.cell(c);
+  return ring_area(v.size(), [&](std::size_t k) { return mesh.points[v[k]]; });
+}
 
 Vec2 cell_centroid(const CellMesh& mesh, std::size_t c) {
   const std::span<const int> v = mesh.cell(c);
   if (v.size() == 3) return (mesh.points[v[0]] + mesh.points[v[1]] + mesh.points[v[2]]) / 3.0;  // as triangle_centroid
-  return polygon_centroid(ring_of(mesh, c));
+  return ring_centroid(v.size(), [&](std::size_t k) { return mesh.points[v[k]]; });
 }
 
 std::vector<MeshEdge> mesh_edges(const CellMesh& mesh) {

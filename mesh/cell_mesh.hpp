@@ -32,9 +32,19 @@ CellMesh cell_mesh(const TriMesh& mesh);
 // The triangles back when every cell is one; nullopt otherwise.
 std::optional<TriMesh> as_triangles(const CellMesh& mesh);
 
-// Signed area of cell c (> 0 when counter-clockwise) and its centroid.
+// Signed area of cell c (> 0 when counter-clockwise) and its centroid (a triangle's:
+// triangle_centroid's bits). No allocation: these run once per cell in every stage.
 double cell_area(const CellMesh& mesh, std::size_t c);
 Vec2 cell_centroid(const CellMesh& mesh, std::size_t c);
+
+// Triangles and cells read alike, for code written once for both (the conformity checker,
+// the VTU and PNG writers) without copying a triangle mesh into a CellMesh.
+inline std::size_t cell_count(const TriMesh& mesh) { return mesh.triangles.size(); }
+inline std::size_t cell_count(const CellMesh& mesh) { return mesh.cells(); }
+inline std::span<const int> cell_ring(const TriMesh& mesh, std::size_t c) { return mesh.triangles[c]; }
+inline std::span<const int> cell_ring(const CellMesh& mesh, std::size_t c) { return mesh.cell(c); }
+inline double cell_area(const TriMesh& mesh, std::size_t c) { return triangle_area(mesh, static_cast<int>(c)); }
+inline Vec2 cell_centroid(const TriMesh& mesh, std::size_t c) { return triangle_centroid(mesh, static_cast<int>(c)); }
 
 // Every edge once, as mesh_edges(TriMesh) gives them: `left` the cell in which the edge
 // runs a -> b counter-clockwise, `right` the cell on the other side or -1. Throws

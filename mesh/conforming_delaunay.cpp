@@ -13,6 +13,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/delaunay.hpp"
+#include "mesh/directed_edges.hpp"
 
 namespace grainmesh {
 
@@ -20,9 +21,7 @@ namespace {
 
 constexpr int kRounds = 4;
 
-std::uint64_t edge_key(int a, int b) {
-  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 | static_cast<std::uint32_t>(b);
-}
+using mesh_detail::edge_key;
 
 class Conformer {
  public:
@@ -63,13 +62,8 @@ class Conformer {
  private:
   const std::array<int, 3>& corners(int t) const { return out_.mesh.triangles[t]; }
   Vec2 point(int v) const { return out_.mesh.points[v]; }
-  int holding(int a, int b) const {
-    const auto it = triangle_of_.find(edge_key(a, b));
-    return it == triangle_of_.end() ? -1 : it->second;
-  }
-  void enter(int t) {
-    for (int k = 0; k < 3; ++k) triangle_of_[edge_key(corners(t)[k], corners(t)[(k + 1) % 3])] = t;
-  }
+  int holding(int a, int b) const { return triangle_of_.holding(a, b); }
+  void enter(int t) { triangle_of_.enter(corners(t), t); }
   // The edge from corner k to corner k + 1 of t bounds t's label.
   bool bounds_label(int t, int k) const {
     const int u = holding(corners(t)[(k + 1) % 3], corners(t)[k]);
@@ -126,8 +120,8 @@ class Conformer {
     const int m = static_cast<int>(out_.mesh.points.size());
     out_.mesh.points.push_back(0.5 * (point(a) + point(b)));
     midpoint_[edge_key(std::min(a, b), std::max(a, b))] = m;
-    triangle_of_.erase(edge_key(a, b));
-    triangle_of_.erase(edge_key(b, a));
+    triangle_of_.erase(a, b);
+    triangle_of_.erase(b, a);
     for (const auto& [tri, from, to] : {std::tuple{t, a, b}, std::tuple{u, b, a}}) {
       if (tri < 0) continue;
       const auto c = corners(tri);
@@ -177,7 +171,7 @@ class Conformer {
   }
 
   ConformingMesh out_;
-  std::unordered_map<std::uint64_t, int> triangle_of_;  // directed edge -> its triangle
+  mesh_detail::TriangleOfEdge triangle_of_;
   std::unordered_map<std::uint64_t, int> midpoint_;     // (low, high) of a split edge -> its midpoint
   std::array<std::unordered_map<int, int>, 2> image_;   // per axis: a side point's image, both ways
   std::array<std::unordered_set<int>, 2> low_;          // per axis: the points on the low side

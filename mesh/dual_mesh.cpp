@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/ring.hpp"
 #include "mesh/conforming_delaunay.hpp"
+#include "mesh/directed_edges.hpp"
 
 namespace grainmesh {
 
@@ -27,9 +28,7 @@ constexpr double kBoundaryMargin = 0.02;
 // this: nodes placed on a straight grain boundary or side are on it up to rounding.
 constexpr double kStraight = 1e-9;
 
-std::uint64_t edge_key(int a, int b) {
-  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 | static_cast<std::uint32_t>(b);
-}
+using mesh_detail::edge_key;
 
 Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 ab = b - a, ac = c - a;
@@ -41,8 +40,9 @@ Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c) {
 // of triangle t is N + E + t; only those some cell uses are kept, in this order.
 class DualBuilder {
  public:
+  // The conforming copy of a valid mesh is valid (midpoint splits, exact flips): not
+  // validated again; the dual is, at the end.
   explicit DualBuilder(ConformingMesh conforming) : in_(std::move(conforming)), mesh_(in_.mesh), label_(in_.label) {
-    validate(mesh_);
     const int nt = static_cast<int>(mesh_.triangles.size());
     edges_ = mesh_edges(mesh_);
     for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
@@ -53,8 +53,8 @@ class DualBuilder {
       const auto& v = mesh_.triangles[t];
       for (int k = 0; k < 3; ++k) {
         at_node_[v[k]].push_back(t);
-        triangle_of_[edge_key(v[k], v[(k + 1) % 3])] = t;
       }
+      triangle_of_.enter(v, t);
     }
     choose_centres();
   }
@@ -89,10 +89,7 @@ class DualBuilder {
     return c[(k + offset) % 3];
   }
   // The triangle holding the directed edge a -> b, or -1.
-  int holding(int a, int b) const {
-    const auto it = triangle_of_.find(edge_key(a, b));
-    return it == triangle_of_.end() ? -1 : it->second;
-  }
+  int holding(int a, int b) const { return triangle_of_.holding(a, b); }
   // The triangle across t's edge a -> b when it has t's label, else -1.
   int same_label_across(int t, int a, int b) const {
     const int u = holding(b, a);
@@ -311,7 +308,7 @@ class DualBuilder {
   const std::vector<int>& label_;
   std::vector<MeshEdge> edges_;
   std::unordered_map<std::uint64_t, int> edge_id_;      // (low, high) -> edge
-  std::unordered_map<std::uint64_t, int> triangle_of_;  // directed edge -> its triangle
+  mesh_detail::TriangleOfEdge triangle_of_;
   std::vector<std::vector<int>> at_node_;
   std::vector<Vec2> circumcentre_;     // #T
   std::vector<char> use_circumcentre_; // #T: the circumcentre is the triangle's centre, else the centroid
