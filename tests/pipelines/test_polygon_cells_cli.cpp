@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "helpers.hpp"
+#include "pipelines/laminate.hpp"
 
 using namespace grainmesh;
 using test::run_grainmesh;
@@ -112,4 +113,34 @@ TEST_CASE("grainmesh converge with polygonal cells counts the case's cells", "[c
     CHECK(level["cells"].get<double>() == run["case_cells"]["cells"].get<double>());
     CHECK(level["cells"].get<double>() < run["mesh"]["cells"].get<double>());
   }
+}
+
+TEST_CASE("polygonal cells on one material: the exact modulus and uniform phase statistics", "[cli][dual][openfoam][physics]") {
+  // The default cell with both phases 800 GPa, nu 0.1, as polygons: the mixed load's
+  // uniaxial strain e gives sigma_xx = M e in every cell, so the modulus is M and each
+  // phase's statistics are the uniform state's (as test_homogenise_cli holds triangles to).
+  test::ScratchDir dir("polygon_one");
+  const test::Material m{800e9, 0.1};
+  const auto r = run_grainmesh({"run", "-o", (dir / "one").string(), "--quiet", "--solve", "--set", "phase.matrix.E=800e9",
+                                "--set", "export.cells=polygons"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const Json report = Json::parse(test::read_file(dir / "one/report.json"));
+  REQUIRE(report.contains("case_cells"));
+  CHECK(report["effective"]["modulus"].get<double>() == Approx(m.M()).epsilon(1e-3));
+  const double strain = 0.001 / 3.0;
+  const Json& stresses = report["stresses"]["mixed"];
+  double fractions = 0.0;
+  for (const char* phase : {"particulate", "matrix"}) {
+    INFO(phase);
+    const Json& s = stresses[phase];
+    fractions += s["area_fraction"].get<double>();
+    CHECK(s["mean"]["xx"].get<double>() == Approx(m.M() * strain).epsilon(1e-4));
+    CHECK(s["mean"]["zz"].get<double>() == Approx(m.lambda() * strain).epsilon(1e-4));
+    CHECK(s["von_mises"]["mean"].get<double>() == Approx(2 * m.mu() * strain).epsilon(1e-4));
+    CHECK(s["von_mises"]["std"].get<double>() < 1e-4 * m.M() * strain);
+    CHECK(s["partition"].get<double>() == Approx(1.0).epsilon(1e-4));
+  }
+  CHECK(fractions == Approx(1.0).epsilon(1e-12));
+  CHECK(stresses["matrix"]["area_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
 }
