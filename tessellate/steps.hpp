@@ -154,6 +154,10 @@ std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H);
 // The area fraction phase p is to have: its own, or for the rest phase what the others leave.
 double target_fraction(const std::vector<Phase>& phases, int p);
 
+// Lognormal radii of median 1 with coefficient of variation `cv`, one per seed: the
+// Laguerre sizes of both the 2D and the 3D stage (Box-Muller, two draws per radius).
+std::vector<double> lognormal_radii(int n, double cv, Rng& rng);
+
 // --- binder.cpp ----------------------------------------------------------------------
 
 // Binder mode: the grains are the torus cells `cells` of `g` shrunk by the one offset

@@ -45,6 +45,18 @@ double target_fraction(const std::vector<Phase>& phases, int p) {
   return 1.0 - sum;
 }
 
+std::vector<double> lognormal_radii(int n, double cv, Rng& rng) {
+  const double sigma = std::sqrt(std::log1p(cv * cv));
+  std::vector<double> radii(n);
+  for (double& r : radii) {
+    const double u1 = 1.0 - uniform01(rng);  // (0, 1]
+    const double u2 = uniform01(rng);
+    const double normal = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    r = std::exp(sigma * normal);
+  }
+  return radii;
+}
+
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
@@ -60,12 +72,6 @@ constexpr int kWindowTrials = 4;
 std::vector<Vec2> counted_polygon(const TorusGraph& g, int c) {
   auto poly = g.polygon(c);
   return g.periodic ? poly : clip_to_cell(std::move(poly), g.width, g.height);
-}
-
-double normal(Rng& rng) {
-  const double u1 = 1.0 - uniform01(rng);  // (0, 1]
-  const double u2 = uniform01(rng);
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
 std::vector<int> live(const TorusGraph& g) {
@@ -247,14 +253,12 @@ TorusGraph relaxed_diagram(const TessellationOptions& o, Rng& rng) {
   }
   std::vector<double> weights(n, 0.0);
   if (o.size_cv > 0.0) {
-    // Lognormal radii with the asked coefficient of variation, scaled so their disks
-    // would cover half the cell; weights are the radii squared.
-    const double sigma = std::sqrt(std::log1p(o.size_cv * o.size_cv));
+    // Radii scaled so their disks would cover half the cell; weights are radii squared.
+    const std::vector<double> radii = lognormal_radii(n, o.size_cv, rng);
     double disks = 0.0;
-    for (double& w : weights) {
-      const double r = std::exp(sigma * normal(rng));
-      w = r * r;
-      disks += std::numbers::pi * w;
+    for (int c = 0; c < n; ++c) {
+      weights[c] = radii[c] * radii[c];
+      disks += std::numbers::pi * weights[c];
     }
     const double scale = 0.5 * W * H / disks;
     for (double& w : weights) w *= scale;

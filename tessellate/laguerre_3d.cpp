@@ -1,0 +1,321 @@
+// The 3D power diagram through CGAL's regular triangulation, in floating point for the
+// relaxation and in exact rationals for the cut (see laguerre_3d.hpp).
+#include "tessellate/laguerre_3d.hpp"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// Sites are the seeds' copies the triangulation holds: periodic, 27 images per seed
+// (site = seed * 27 + image, image 13 the seed itself); bounded, the seed and its six
+// mirror images (site = seed * 7 + k, k = 0 the seed, 1 + 2 axis + high its mirror
+// across that side).
+struct SiteCode {
+  bool periodic = true;
+  int per_seed() const { return periodic ? 27 : 7; }
+  int own() const { return periodic ? 13 : 0; }
+};
+
+// The lattice shift of periodic image k, each component in {-1, 0, 1}.
+std::array<int, 3> image_shift(int k) { return {k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1}; }
+
+template <class K>
+struct Diagram {
+  using FT = typename K::FT;
+  using Point = typename K::Point_3;
+  using Vb0 = CGAL::Regular_triangulation_vertex_base_3<K>;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K, Vb0>;  // site
+  using Cb0 = CGAL::Regular_triangulation_cell_base_3<K>;
+  using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, Cb0>;    // power vertex id, -1 unset
+  using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+  using Regular = CGAL::Regular_triangulation_3<K, Tds>;
+  using WPoint = typename Regular::Weighted_point;
+
+  struct LessXyz {
+    bool operator()(const Point& a, const Point& b) const { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
+  };
+
+  // One seed's cell: its corners (ids into `points`) and faces, each ring counter-
+  // clockwise seen from outside, with the site across it.
+  struct Cell {
+    std::vector<std::vector<int>> rings;
+    std::vector<int> across;
+  };
+
+  SiteCode code;
+  std::vector<Point> points;  // the diagram's vertices, each exact point once
+  std::vector<Cell> cells;    // per seed; no rings when hidden
+
+  Diagram(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box, bool periodic) {
+    code.periodic = periodic;
+    const int n = static_cast<int>(seeds.size());
+    std::vector<std::pair<WPoint, int>> sites;
+    sites.reserve(static_cast<std::size_t>(n) * code.per_seed());
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < code.per_seed(); ++k) sites.emplace_back(site_point(seeds[i], weights[i], box, k), i * code.per_seed() + k);
+    Regular rt;
+    rt.insert(sites.begin(), sites.end());
+
+    std::vector<typename Regular::Vertex_handle> own(n);
+    for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
+      if (v->info() % code.per_seed() == code.own()) own[v->info() / code.per_seed()] = v;
+    for (auto c = rt.all_cells_begin(); c != rt.all_cells_end(); ++c) c->info() = -1;
+    std::map<Point, int, LessXyz> ids;
+    cells.resize(n);
+    for (int i = 0; i < n; ++i)
+      if (own[i] != typename Regular::Vertex_handle()) cells[i] = cell_of(rt, own[i], ids);
+  }
+
+  WPoint site_point(Vec3 s, double w, Vec3 box, int k) const {
+    std::array<FT, 3> p{FT(s.x), FT(s.y), FT(s.z)};
+    if (code.periodic) {
+      const auto shift = image_shift(k);
+      for (int a = 0; a < 3; ++a)
+        if (shift[a] != 0) p[a] = p[a] + FT(box[a]) * FT(shift[a]);
+    } else if (k > 0) {
+      const int a = (k - 1) / 2;
+      p[a] = (k - 1) % 2 == 0 ? -p[a] : FT(box[a]) * FT(2) - p[a];
+    }
+    return WPoint(Point(p[0], p[1], p[2]), FT(w));
+  }
+
+  int vertex_of(const Regular& rt, typename Regular::Cell_handle c, std::map<Point, int, LessXyz>& ids) {
+    if (c->info() < 0) {
+      if (rt.is_infinite(c)) throw GeometryError("3D Laguerre diagram: a seed's cell is unbounded");
+      const Point p = rt.dual(c);
+      const auto [it, added] = ids.emplace(p, static_cast<int>(points.size()));
+      if (added) points.push_back(p);
+      c->info() = it->second;
+    }
+    return c->info();
+  }
+
+  Cell cell_of(const Regular& rt, typename Regular::Vertex_handle v, std::map<Point, int, LessXyz>& ids) {
+    Cell cell;
+    std::vector<typename Regular::Edge> edges;
+    rt.incident_edges(v, std::back_inserter(edges));
+    for (const auto& e : edges) {
+      const auto a = e.first->vertex(e.second), b = e.first->vertex(e.third);
+      const auto w = a == v ? b : a;
+      if (rt.is_infinite(w)) throw GeometryError("3D Laguerre diagram: a seed's cell is unbounded");
+      std::vector<int> ring;
+      auto cc = rt.incident_cells(e), end = cc;
+      do {
+        const int id = vertex_of(rt, cc, ids);
+        if (ring.empty() || ring.back() != id) ring.push_back(id);
+        ++cc;
+      } while (cc != end);
+      while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+      if (ring.size() < 3) continue;  // touches in an edge or a point only
+      // Counter-clockwise seen from outside: the ring's normal towards the other site.
+      typename K::Vector_3 normal(0, 0, 0);
+      for (std::size_t k = 1; k + 1 < ring.size(); ++k)
+        normal = normal + CGAL::cross_product(points[ring[k]] - points[ring[0]], points[ring[k + 1]] - points[ring[0]]);
+      const auto outward = w->point().point() - v->point().point();
+      if (CGAL::is_negative(normal * outward)) std::reverse(ring.begin(), ring.end());
+      cell.rings.push_back(std::move(ring));
+      cell.across.push_back(w->info());
+    }
+    return cell;
+  }
+};
+
+using Approx = Diagram<CGAL::Exact_predicates_inexact_constructions_kernel>;
+using Exact = Diagram<CGAL::Exact_predicates_exact_constructions_kernel>;
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+Vec3 to_vec(const CGAL::Exact_predicates_inexact_constructions_kernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
+
+// A convex polyhedron in exact coordinates, faces counter-clockwise seen from outside.
+struct ExactPolyhedron {
+  std::vector<EK::Point_3> points;
+  std::vector<std::vector<int>> faces;
+};
+
+EK::FT coord(const EK::Point_3& p, int axis) { return axis == 0 ? p.x() : axis == 1 ? p.y() : p.z(); }
+
+// The part of `poly` on the side coord(axis) >= c (keep_above) or <= c, closed by a new
+// face in the plane. Empty when nothing of positive volume is left.
+ExactPolyhedron clip(const ExactPolyhedron& poly, int axis, const EK::FT& c, bool keep_above) {
+  const std::size_t n = poly.points.size();
+  std::vector<int> side(n);
+  bool inside = false, outside = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    const CGAL::Comparison_result r = CGAL::compare(coord(poly.points[k], axis), c);
+    side[k] = r == CGAL::EQUAL ? 0 : ((r == CGAL::LARGER) == keep_above ? 1 : -1);
+    inside = inside || side[k] > 0;
+    outside = outside || side[k] < 0;
+  }
+  if (!inside) return {};
+  if (!outside) return poly;
+  ExactPolyhedron out;
+  out.points = poly.points;
+  std::map<std::pair<int, int>, int> crossing;
+  auto cut = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, added] = crossing.emplace(key, static_cast<int>(out.points.size()));
+    if (added) {
+      // From the lower id, so the point is computed the same way from either face.
+      const EK::Point_3& p = poly.points[key.first];
+      const EK::Point_3& q = poly.points[key.second];
+      const EK::FT t = (c - coord(p, axis)) / (coord(q, axis) - coord(p, axis));
+      out.points.push_back(p + (q - p) * t);
+    }
+    return it->second;
+  };
+  std::vector<int> on_plane;
+  for (const auto& face : poly.faces) {
+    std::vector<int> ring;
+    bool keeps = false;
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const int a = face[k], b = face[(k + 1) % face.size()];
+      if (side[a] >= 0) ring.push_back(a);
+      if (side[a] == 0) on_plane.push_back(a);
+      keeps = keeps || side[a] > 0;
+      if (side[a] * side[b] < 0) {
+        ring.push_back(cut(a, b));
+        on_plane.push_back(ring.back());
+      }
+    }
+    if (keeps && ring.size() >= 3) out.faces.push_back(std::move(ring));
+  }
+  std::sort(on_plane.begin(), on_plane.end());
+  on_plane.erase(std::unique(on_plane.begin(), on_plane.end()), on_plane.end());
+  // The new face: its points in the plane ordered by angle about their centroid, in the
+  // (u, v) axes that make `axis` the right-hand normal; reversed to face outward.
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  EK::FT cu(0), cv(0);
+  for (int id : on_plane) {
+    cu = cu + coord(out.points[id], u);
+    cv = cv + coord(out.points[id], v);
+  }
+  cu = cu / EK::FT(static_cast<int>(on_plane.size()));
+  cv = cv / EK::FT(static_cast<int>(on_plane.size()));
+  auto half = [&](int id) {
+    const auto du = CGAL::compare(coord(out.points[id], u), cu), dv = CGAL::compare(coord(out.points[id], v), cv);
+    return dv == CGAL::LARGER || (dv == CGAL::EQUAL && du == CGAL::LARGER) ? 0 : 1;
+  };
+  std::sort(on_plane.begin(), on_plane.end(), [&](int a, int b) {
+    const int ha = half(a), hb = half(b);
+    if (ha != hb) return ha < hb;
+    const EK::FT au = coord(out.points[a], u) - cu, av = coord(out.points[a], v) - cv;
+    const EK::FT bu = coord(out.points[b], u) - cu, bv = coord(out.points[b], v) - cv;
+    return CGAL::is_positive(au * bv - av * bu);
+  });
+  // Counter-clockwise about +axis; the outward normal is -axis when keeping above.
+  if (keep_above) std::reverse(on_plane.begin(), on_plane.end());
+  if (on_plane.size() >= 3) out.faces.push_back(std::move(on_plane));
+  return out;
+}
+
+}  // namespace
+
+CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
+                             bool periodic) {
+  const Approx d(seeds, weights, box, periodic);
+  CellMoments m;
+  m.volume.assign(seeds.size(), 0.0);
+  m.centroid = seeds;
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    double volume = 0.0;
+    Vec3 moment{};
+    const Vec3 o = seeds[i];
+    for (const auto& ring : d.cells[i].rings) {
+      const Vec3 a = to_vec(d.points[ring[0]]) - o;
+      for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
+        const Vec3 b = to_vec(d.points[ring[k]]) - o, c = to_vec(d.points[ring[k + 1]]) - o;
+        const double v = dot(a, cross(b, c)) / 6.0;
+        volume += v;
+        moment += (v / 4.0) * (a + b + c);
+      }
+      for (int id : ring) {
+        Vec3 p = to_vec(d.points[id]);
+        if (periodic)
+          for (int ax = 0; ax < 3; ++ax) p[ax] -= std::floor(p[ax] / box[ax]) * box[ax];
+        m.vertices.push_back(p);
+      }
+    }
+    m.volume[i] = volume;
+    if (volume > 0.0) m.centroid[i] = o + moment / volume;
+  }
+  return m;
+}
+
+LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
+                             bool periodic) {
+  const Exact d(seeds, weights, box, periodic);
+  LaguerreCut out;
+  const int n = static_cast<int>(seeds.size());
+  out.cell_faces.assign(n, 0);
+  out.neighbours.resize(n);
+  std::map<EK::Point_3, int, Exact::LessXyz> ids;
+  auto vertex_id = [&](const EK::Point_3& p) {
+    const auto [it, added] = ids.emplace(p, static_cast<int>(out.vertices.size()));
+    if (added)
+      out.vertices.push_back({CGAL::to_double(CGAL::exact(p.x())), CGAL::to_double(CGAL::exact(p.y())),
+                              CGAL::to_double(CGAL::exact(p.z()))});
+    return it->second;
+  };
+  for (int i = 0; i < n; ++i) {
+    const Exact::Cell& cell = d.cells[i];
+    out.cell_faces[i] = static_cast<int>(cell.rings.size());
+    for (int site : cell.across) {
+      const int j = site / d.code.per_seed();
+      if (j != i && (periodic || site % d.code.per_seed() == d.code.own())) out.neighbours[i].push_back(j);
+    }
+    std::sort(out.neighbours[i].begin(), out.neighbours[i].end());
+    out.neighbours[i].erase(std::unique(out.neighbours[i].begin(), out.neighbours[i].end()), out.neighbours[i].end());
+    if (cell.rings.empty()) continue;
+
+    ExactPolyhedron poly;
+    std::map<int, int> local;
+    for (const auto& ring : cell.rings) {
+      std::vector<int> face;
+      for (int id : ring) {
+        const auto [it, added] = local.emplace(id, static_cast<int>(poly.points.size()));
+        if (added) poly.points.push_back(d.points[id]);
+        face.push_back(it->second);
+      }
+      poly.faces.push_back(std::move(face));
+    }
+    for (int k = 0; k < (periodic ? 27 : 1); ++k) {
+      const auto m = periodic ? image_shift(k) : std::array<int, 3>{0, 0, 0};
+      ExactPolyhedron piece = poly;
+      for (int a = 0; a < 3 && !piece.faces.empty(); ++a) {
+        if (!periodic) continue;  // the mirrors already bound the cell by the box
+        const EK::FT lo = EK::FT(box[a]) * EK::FT(m[a]);
+        piece = clip(piece, a, lo, true);
+        if (!piece.faces.empty()) piece = clip(piece, a, lo + EK::FT(box[a]), false);
+      }
+      if (piece.faces.empty()) continue;
+      const EK::Vector_3 back(EK::FT(box.x) * EK::FT(-m[0]), EK::FT(box.y) * EK::FT(-m[1]), EK::FT(box.z) * EK::FT(-m[2]));
+      std::vector<int> global(piece.points.size(), -1);
+      BoxPiece bp{.seed = i, .faces = {}};
+      for (const auto& face : piece.faces) {
+        std::vector<int> ring;
+        for (int id : face) {
+          if (global[id] < 0) global[id] = vertex_id(m == std::array<int, 3>{0, 0, 0} ? piece.points[id] : piece.points[id] + back);
+          ring.push_back(global[id]);
+        }
+        bp.faces.push_back(std::move(ring));
+      }
+      out.pieces.push_back(std::move(bp));
+    }
+  }
+  return out;
+}
+
+}  // namespace grainmesh

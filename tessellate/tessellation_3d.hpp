@@ -1,0 +1,110 @@
+// The 3D tessellation stage: periodic Voronoi/Laguerre grains with phase labels in a
+// W x H x D box, cut into the box as convex polyhedral regions with shared faces and
+// exact periodic partners.
+#pragma once
+
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "common/deadline.hpp"
+#include "common/random.hpp"
+#include "common/vec3.hpp"
+#include "tessellate/tessellation.hpp"
+
+namespace grainmesh {
+
+struct Tessellation3Options {
+  double width = 1.0;            // W, the caller's length unit
+  double height = 1.0;           // H
+  double depth = 1.0;            // D
+  bool periodic = true;
+  int grains = 100;              // N seeds
+  std::vector<Vec3> seeds;       // given generator points in the box (N of them); empty = drawn
+  int lloyd_iterations = 0;      // centroidal relaxation steps
+  double size_cv = 0.0;          // coefficient of variation of the Laguerre radii; 0 = Voronoi
+  Arrangement arrangement = Arrangement::random;
+  std::vector<Phase> phases;     // at least one; fractions are volume fractions
+  Deadline deadline{};           // asked every Lloyd step
+};
+
+// A planar convex polygon between two regions. The ring's right-hand normal points from
+// `back` into `front`; front = -1 for a face on the box (the ring then turns
+// counter-clockwise seen from outside).
+struct Face3 {
+  std::vector<int> ring;  // vertex ids
+  int back = -1;
+  int front = -1;
+};
+
+// One convex piece of a grain inside the box (a periodic grain the box cuts has several).
+struct Region3 {
+  int grain = 0;
+  int phase = 0;
+  std::vector<int> faces;  // face ids
+  double volume = 0.0;
+};
+
+struct Grain3 {
+  int id = 0;
+  int phase = 0;
+  Vec3 seed{};                  // generator point, in the box
+  double volume = 0.0;          // summed over its pieces
+  int faces = 0;                // faces of the whole (uncut) polyhedron
+  std::vector<int> neighbours;  // grain ids sharing a face, ascending (on the torus when periodic)
+};
+
+// Vertices of the box's faces paired with their images: axis a holds (low, high) with
+// high = low + the box's edge along a, every other coordinate bit for bit the same.
+struct PeriodicPairs3 {
+  std::array<std::vector<std::pair<int, int>>, 3> axis;
+
+  friend bool operator==(const PeriodicPairs3&, const PeriodicPairs3&) = default;
+};
+
+struct Tessellation3Stats {
+  int grains = 0;                    // with a cell (hidden Laguerre cells do not count)
+  int removed_grains = 0;            // hidden Laguerre cells
+  double volume_mean = 0.0, volume_std = 0.0;
+  double diameter_mean = 0.0, diameter_std = 0.0;  // equivalent-sphere diameters
+  double faces_per_grain_mean = 0.0;
+  double neighbours_mean = 0.0;
+  double shortest_edge = 0.0;        // over the cut regions' edges
+  double smallest_face = 0.0;        // area, over the cut regions' faces
+  double sharpest_dihedral_deg = 0.0;  // interior angle between two faces of a region
+  Vec3 window_origin{};              // where the box was placed on the torus
+  std::vector<PhaseStats> phases;    // fractions by volume; contiguity from face areas
+};
+
+struct Tessellation3 {
+  double width = 1.0;
+  double height = 1.0;
+  double depth = 1.0;
+  bool periodic = true;
+  std::vector<Phase> phases;
+  std::vector<Grain3> grains;
+  std::vector<Vec3> vertices;
+  std::vector<Face3> faces;
+  std::vector<Region3> regions;
+  PeriodicPairs3 partners;  // empty when not periodic
+  Tessellation3Stats stats;
+
+  Vec3 size() const { return {width, height, depth}; }
+};
+
+// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) Laguerre
+// diagram, relaxes it, assigns phases by volume, places the box on the torus clear of
+// the diagram's vertices and cuts it exactly. Throws ConfigError for options that
+// cannot be met, TimeLimitError when the deadline passes, GeometryError otherwise.
+Tessellation3 tessellate_3d(const Tessellation3Options& options, Rng& rng);
+
+// Invariants a bug could break: region volumes sum to W H D, every face between two
+// regions or on the box, each region closed and outward oriented, partners exact.
+// Throws GeometryError naming the first violation.
+void validate(const Tessellation3& t);
+
+// Volume of a region (its faces as stored) and area of a face.
+double region_volume(const Tessellation3& t, const Region3& r);
+double face_area(const Tessellation3& t, const Face3& f);
+
+}  // namespace grainmesh
