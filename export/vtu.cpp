@@ -173,6 +173,54 @@ void write_tessellation_vtp(const std::filesystem::path& file, const Tessellatio
     throw IoError(file.string() + ": cannot write VTP file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
 
+void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(t.vertices.size()));
+  for (std::size_t i = 0; i < t.vertices.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), t.vertices[i].x, t.vertices[i].y, t.vertices[i].z);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->Allocate(static_cast<vtkIdType>(t.regions.size()));
+  vtkNew<vtkIntArray> grain, phase, region;
+  grain->SetName("grain");
+  phase->SetName("phase");
+  region->SetName("region");
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    std::vector<vtkIdType> ids, stream;  // the polyhedron's points; its faces as [n, ids...]
+    for (int f : t.regions[r].faces) {
+      const Face3& face = t.faces[f];
+      stream.push_back(static_cast<vtkIdType>(face.ring.size()));
+      const std::size_t at = stream.size();
+      stream.insert(stream.end(), face.ring.begin(), face.ring.end());
+      if (face.back != static_cast<int>(r)) std::reverse(stream.begin() + static_cast<std::ptrdiff_t>(at), stream.end());
+      ids.insert(ids.end(), face.ring.begin(), face.ring.end());
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(ids.size()), ids.data(),
+                         static_cast<vtkIdType>(t.regions[r].faces.size()), stream.data());
+    grain->InsertNextValue(t.regions[r].grain);
+    phase->InsertNextValue(t.regions[r].phase);
+    region->InsertNextValue(static_cast<int>(r));
+  }
+  for (vtkIntArray* a : {grain.Get(), phase.Get(), region.Get()}) grid->GetCellData()->AddArray(a);
+  vtkNew<vtkStringArray> names;
+  names->SetName("phase_names");
+  for (const Phase& p : t.phases) names->InsertNextValue(p.name);
+  grid->GetFieldData()->AddArray(names);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  vtkNew<ErrorCatcher> errors;
+  errors->watch(writer);
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(grid);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
+    throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+}
+
 VtuContents read_vtu(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw IoError(file.string() + ": no such file");
   // VTK's XML parser logs its own complaints to stderr; ours is the one-line error below.

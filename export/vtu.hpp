@@ -10,6 +10,7 @@
 #include "mesh/cell_mesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -56,5 +57,9 @@ namespace grainmesh {
 // region (-1 on edges), and on edges the regions left and right (-1 on regions).
 // Matrix regions with holes appear through their edges only. Throws IoError.
 void write_tessellation_vtp(const std::filesystem::path& file, const Tessellation& t);
+
+// Writes a 3D tessellation as an unstructured grid of VTK polyhedra, one per region, with
+// cell arrays grain, phase and region, and the phases' names. Throws IoError.
+void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t);
 
 }  // namespace grainmesh

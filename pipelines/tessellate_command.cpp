@@ -12,23 +12,22 @@
 #include "domain/shape_parser.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/tessellate_3d_command.hpp"
 #include "tessellate/tessellation_json.hpp"
 
 namespace grainmesh {
 
 const std::vector<std::string>& tessellate_config_keys() {
   static const std::vector<std::string> keys{
-      "domain.width",           "domain.height",           "domain.periodic",
+      "domain.width",           "domain.height",           "domain.depth",            "domain.periodic",
       "tessellation.grains",    "tessellation.grain_size", "tessellation.seeds", "tessellation.seed",
       "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
       "tessellation.contiguity", "tessellation.contiguity_phase",
       "phase.*.fraction",       "phase.*.E",               "phase.*.nu",              "phase.*.alpha",
-      "output.picture_width",   kTimeLimitKey};
+      "output.picture_width",   "output.section",          kTimeLimitKey};
   return keys;
 }
-
-namespace {
 
 double positive(const Config& c, const std::string& key) {
   if (!c.has(key)) c.fail(key, "missing (required)");
@@ -84,6 +83,8 @@ std::vector<Phase> read_phases(const Config& c) {
     c.fail(last, "the phase fractions sum to " + to_text(sum) + ", leaving nothing for the rest phase");
   return phases;
 }
+
+namespace {
 
 // o.grains (and o.seeds) from tessellation.grains, .grain_size or .seeds.
 void read_grain_count(const Config& c, TessellationOptions& o) {
@@ -162,6 +163,10 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 
 TessellateJob read_tessellate_job(const Config& c) {
   c.check_keys(tessellate_config_keys());
+  if (c.has("domain.depth"))
+    c.fail("domain.depth", "3D cells are tessellated by grainmesh tessellate only so far; mesh, export and run take 2D "
+                           "configs (leave domain.depth out)");
+  if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
   TessellateJob job;
   TessellationOptions& o = job.options;
   o.width = positive(c, "domain.width");
@@ -265,6 +270,7 @@ std::vector<std::string> tessellation_warnings(const Tessellation& t) {
 }
 
 void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
+  if (c.has("domain.depth")) return run_tessellate_3d_command(c, out);
   check_output_replaceable(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();

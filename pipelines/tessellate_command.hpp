@@ -23,6 +23,11 @@ struct TessellateJob {
 // The keys a tessellation config may use ("*" is a phase name).
 const std::vector<std::string>& tessellate_config_keys();
 
+// A key's value that must be a positive number (ConfigError naming the key otherwise).
+double positive(const Config& c, const std::string& key);
+// The [phase.NAME] sections: fractions (one may be rest), E, nu, alpha.
+std::vector<Phase> read_phases(const Config& c);
+
 // Reads and checks a tessellation config. Throws ConfigError naming the key.
 TessellateJob read_tessellate_job(const Config& config);
 

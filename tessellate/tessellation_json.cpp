@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/json_error.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -48,6 +49,32 @@ Json statistics(const TessellationStats& s, const std::vector<Phase>& phases) {
 
 Vec2 read_point(const Json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
 
+Json point(Vec3 p) { return Json::array({p.x, p.y, p.z}); }
+Vec3 read_point3(const Json& j) {
+  if (!j.is_array() || j.size() != 3) throw GeometryError("expected a point [x, y, z], found " + j.dump());
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
+}
+
+Json phases_list(const std::vector<Phase>& phases) {
+  Json out = Json::array();
+  for (const Phase& p : phases) {
+    out.push_back({{"name", p.name}, {"target_fraction", p.fraction}, {"rest", p.rest},
+                   {"E", p.youngs_modulus}, {"nu", p.poisson_ratio}});
+    if (p.alpha) out.back()["alpha"] = *p.alpha;
+  }
+  return out;
+}
+
+std::vector<Phase> read_phases(const Json& j) {
+  std::vector<Phase> phases;
+  for (const Json& p : j) {
+    phases.push_back(Phase{p.at("name").get<std::string>(), p.at("target_fraction").get<double>(),
+                           p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>(), {}});
+    if (p.contains("alpha")) phases.back().alpha = p.at("alpha").get<double>();
+  }
+  return phases;
+}
+
 // nlohmann turns any number into an int with a plain cast, undefined for 1e80 and silently
 // wrapping 2^32 to 0 (found by fuzzing), so every index and count is read through here.
 int read_int(const Json& j) {
@@ -84,13 +111,7 @@ std::string tessellation_to_json(const Tessellation& t) {
   j["format"] = "grainmesh-tessellation";
   j["version"] = 1;
   j["domain"] = {{"width", t.width}, {"height", t.height}, {"periodic", t.periodic}};
-  Json phases = Json::array();
-  for (const Phase& p : t.phases) {
-    phases.push_back({{"name", p.name}, {"target_fraction", p.fraction}, {"rest", p.rest},
-                      {"E", p.youngs_modulus}, {"nu", p.poisson_ratio}});
-    if (p.alpha) phases.back()["alpha"] = *p.alpha;
-  }
-  j["phases"] = phases;
+  j["phases"] = phases_list(t.phases);
   Json grains = Json::array();
   for (const Grain& g : t.grains)
     grains.push_back({{"id", g.id}, {"phase", g.phase}, {"seed", point(g.seed)}, {"area", g.area},
@@ -130,17 +151,14 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
     const Json j = Json::parse(text);
     if (j.value("format", "") != "grainmesh-tessellation")
       throw GeometryError("not a grainmesh tessellation (format key)");
-    if (read_int(j.at("version")) != 1)
-      throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
+    const int version = read_int(j.at("version"));
+    if (version == 2) throw GeometryError("a 3D tessellation (version 2), where a 2D one is needed");
+    if (version != 1) throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
     const Json& d = j.at("domain");
     t.width = d.at("width").get<double>();
     t.height = d.at("height").get<double>();
     t.periodic = d.at("periodic").get<bool>();
-    for (const Json& p : j.at("phases")) {
-      t.phases.push_back(Phase{p.at("name").get<std::string>(), p.at("target_fraction").get<double>(),
-                               p.at("rest").get<bool>(), p.at("E").get<double>(), p.at("nu").get<double>(), {}});
-      if (p.contains("alpha")) t.phases.back().alpha = p.at("alpha").get<double>();
-    }
+    t.phases = read_phases(j.at("phases"));
     for (const Json& g : j.at("grains"))
       t.grains.push_back(Grain{read_int(g.at("id")), read_int(g.at("phase")), read_point(g.at("seed")),
                                g.at("area").get<double>(), read_ints(g.at("neighbours")),
@@ -172,14 +190,147 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
   return t;
 }
 
-nlohmann::ordered_json phases_json(const Tessellation& t) {
+nlohmann::ordered_json phases_json(const Tessellation& t) { return phases_json(t.phases, t.stats.phases); }
+
+nlohmann::ordered_json phases_json(const std::vector<Phase>& phases, const std::vector<PhaseStats>& stats) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    out.push_back({{"name", t.phases[p].name},
-                   {"target_fraction", t.stats.phases[p].target_fraction},
-                   {"achieved_fraction", t.stats.phases[p].achieved_fraction},
-                   {"grains", t.stats.phases[p].grains}});
+  for (std::size_t p = 0; p < phases.size(); ++p)
+    out.push_back({{"name", phases[p].name},
+                   {"target_fraction", stats[p].target_fraction},
+                   {"achieved_fraction", stats[p].achieved_fraction},
+                   {"grains", stats[p].grains}});
   return out;
+}
+
+// --- version 2: 3D -------------------------------------------------------------------
+
+std::string tessellation_to_json(const Tessellation3& t) {
+  Json j;
+  j["format"] = "grainmesh-tessellation";
+  j["version"] = 2;
+  j["domain"] = {{"width", t.width}, {"height", t.height}, {"depth", t.depth}, {"periodic", t.periodic}};
+  j["phases"] = phases_list(t.phases);
+  Json grains = Json::array();
+  for (const Grain3& g : t.grains)
+    grains.push_back({{"id", g.id}, {"phase", g.phase}, {"seed", point(g.seed)}, {"volume", g.volume},
+                      {"faces", g.faces}, {"neighbours", g.neighbours}});
+  j["grains"] = grains;
+  Json vertices = Json::array();
+  for (Vec3 v : t.vertices) vertices.push_back(point(v));
+  j["vertices"] = vertices;
+  Json faces = Json::array();
+  for (const Face3& f : t.faces) faces.push_back({{"back", f.back}, {"front", f.front}, {"ring", f.ring}});
+  j["faces"] = faces;
+  Json regions = Json::array();
+  for (const Region3& r : t.regions) regions.push_back({{"grain", r.grain}, {"phase", r.phase}, {"faces", r.faces}});
+  j["regions"] = regions;
+  j["partners"] = {{"x", t.partners.axis[0]}, {"y", t.partners.axis[1]}, {"z", t.partners.axis[2]}};
+  j["statistics"] = statistics_json(t.stats, t.phases);
+  return j.dump(1) + "\n";
+}
+
+nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases) {
+  auto value = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  Json j;
+  j["grains"] = s.grains;
+  j["removed_grains"] = s.removed_grains;
+  j["volume_mean"] = s.volume_mean;
+  j["volume_std"] = s.volume_std;
+  j["diameter_mean"] = s.diameter_mean;
+  j["diameter_std"] = s.diameter_std;
+  j["faces_per_grain_mean"] = s.faces_per_grain_mean;
+  j["neighbours_mean"] = s.neighbours_mean;
+  j["shortest_edge"] = s.shortest_edge;
+  j["smallest_face"] = s.smallest_face;
+  j["sharpest_dihedral_deg"] = s.sharpest_dihedral_deg;
+  j["window_origin"] = point(s.window_origin);
+  j["phases"] = phases_json(phases, s.phases);
+  j["contiguity"] = Json::object();
+  for (std::size_t p = 0; p < phases.size(); ++p) j["contiguity"][phases[p].name] = value(s.phases[p].contiguity);
+  return j;
+}
+
+namespace {
+
+double read_double_or_nan(const Json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
+
+// statistics_json() read back, so a file read and written again has the same bytes.
+Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phases) {
+  Tessellation3Stats s;
+  s.grains = read_int(j.at("grains"));
+  s.removed_grains = read_int(j.at("removed_grains"));
+  s.volume_mean = j.at("volume_mean").get<double>();
+  s.volume_std = j.at("volume_std").get<double>();
+  s.diameter_mean = j.at("diameter_mean").get<double>();
+  s.diameter_std = j.at("diameter_std").get<double>();
+  s.faces_per_grain_mean = j.at("faces_per_grain_mean").get<double>();
+  s.neighbours_mean = j.at("neighbours_mean").get<double>();
+  s.shortest_edge = j.at("shortest_edge").get<double>();
+  s.smallest_face = j.at("smallest_face").get<double>();
+  s.sharpest_dihedral_deg = j.at("sharpest_dihedral_deg").get<double>();
+  s.window_origin = read_point3(j.at("window_origin"));
+  const Json& ph = j.at("phases");
+  if (!ph.is_array() || ph.size() != phases.size()) throw GeometryError("statistics: not one entry per phase");
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    PhaseStats ps;
+    ps.target_fraction = ph[p].at("target_fraction").get<double>();
+    ps.achieved_fraction = ph[p].at("achieved_fraction").get<double>();
+    ps.grains = read_int(ph[p].at("grains"));
+    ps.contiguity = read_double_or_nan(j.at("contiguity").at(phases[p].name));
+    ps.intercept_length = ps.mean_free_path = std::nan("");
+    s.phases.push_back(ps);
+  }
+  return s;
+}
+
+}  // namespace
+
+Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source) {
+  Tessellation3 t;
+  try {
+    const Json j = Json::parse(text);
+    if (j.value("format", "") != "grainmesh-tessellation")
+      throw GeometryError("not a grainmesh tessellation (format key)");
+    const int version = read_int(j.at("version"));
+    if (version == 1) throw GeometryError("a 2D tessellation (version 1), where a 3D one is needed");
+    if (version != 2) throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
+    const Json& d = j.at("domain");
+    t.width = d.at("width").get<double>();
+    t.height = d.at("height").get<double>();
+    t.depth = d.at("depth").get<double>();
+    t.periodic = d.at("periodic").get<bool>();
+    t.phases = read_phases(j.at("phases"));
+    for (const Json& g : j.at("grains")) {
+      t.grains.push_back(Grain3{read_int(g.at("id")), read_int(g.at("phase")), read_point3(g.at("seed")),
+                                g.at("volume").get<double>(), read_int(g.at("faces")), read_ints(g.at("neighbours"))});
+      if (t.grains.back().id != static_cast<int>(t.grains.size()) - 1) throw GeometryError("grain ids are not 0, 1, 2, ...");
+      if (t.grains.back().phase < 0 || t.grains.back().phase >= static_cast<int>(t.phases.size()))
+        throw GeometryError("a grain's phase is out of range");
+    }
+    for (const Json& v : j.at("vertices")) t.vertices.push_back(read_point3(v));
+    for (const Json& f : j.at("faces"))
+      t.faces.push_back(Face3{read_ints(f.at("ring")), read_int(f.at("back")), read_int(f.at("front"))});
+    for (const Json& r : j.at("regions")) {
+      t.regions.push_back(Region3{read_int(r.at("grain")), read_int(r.at("phase")), read_ints(r.at("faces")), 0.0});
+      for (int f : t.regions.back().faces)
+        if (f < 0 || f >= static_cast<int>(t.faces.size())) throw GeometryError("a region's face id is out of range");
+      if (t.regions.back().faces.empty()) throw GeometryError("a region has no faces");
+    }
+    for (Region3& r : t.regions) r.volume = region_volume(t, r);
+    const Json& p = j.at("partners");
+    for (int a = 0; a < 3; ++a) t.partners.axis[a] = read_pairs(p.at(std::string(1, "xyz"[a])));
+    for (const auto& pairs : t.partners.axis)
+      for (const auto& [lo, hi] : pairs)
+        if (lo < 0 || hi < 0 || lo >= static_cast<int>(t.vertices.size()) || hi >= static_cast<int>(t.vertices.size()))
+          throw GeometryError("a partner id is out of range");
+    t.stats = read_statistics(j.at("statistics"), t.phases);
+    validate(t);
+  } catch (const nlohmann::json::exception& e) {
+    throw GeometryError(source + ": not a tessellation.json of grainmesh tessellate: " + json_error_text(e));
+  } catch (const GeometryError& e) {
+    throw GeometryError(source + ": " + e.what());
+  }
+  return t;
 }
 
 }  // namespace grainmesh

@@ -10,6 +10,15 @@
 //               every ring counter-clockwise
 //   partners    {x: [[left, right]], y: [[bottom, top]]}  periodic vertex pairs
 //   statistics  the TessellationStats fields, and the descriptors (descriptors_json)
+// Version 2 (3D), the same keys where they mean the same, and:
+//   domain      {width, height, depth, periodic}
+//   grains      [{id, phase, seed: [x, y, z], volume, faces, neighbours}]
+//   vertices    [[x, y, z]]
+//   faces       [{back, front, ring: [vertex ids]}]  ring's right-hand normal from back
+//               into front; front -1 on the box
+//   regions     [{grain, phase, faces: [face ids]}]
+//   partners    {x, y, z: [[low, high]]}
+//   statistics  the Tessellation3Stats fields, contiguity {PHASE: value}
 // Doubles are written in shortest round-trip form, so reading gives the same bits.
 #pragma once
 
@@ -18,6 +27,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -30,8 +40,16 @@ nlohmann::ordered_json descriptors_json(const Tessellation& t);
 
 // The phases as the reports give them: [{name, target_fraction, achieved_fraction, grains}].
 nlohmann::ordered_json phases_json(const Tessellation& t);
+// The same from the phases and their statistics (of a 2D or a 3D tessellation).
+nlohmann::ordered_json phases_json(const std::vector<Phase>& phases, const std::vector<PhaseStats>& stats);
 
 // Parses and validates; errors (GeometryError) start with `source`.
 Tessellation tessellation_from_json(const std::string& text, const std::string& source);
+
+// Version 2: a 3D tessellation, written and read back bit for bit.
+std::string tessellation_to_json(const Tessellation3& t);
+Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source);
+// Its statistics, as tessellation.json and the reports carry them.
+nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases);
 
 }  // namespace grainmesh

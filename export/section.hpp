@@ -1,0 +1,23 @@
+// A plane section of a 3D tessellation, as 2D polygons: what tessellation.png shows of a
+// 3D cell and what a user compares with a micrograph.
+#pragma once
+
+#include <vector>
+
+#include "mesh/cell_mesh.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+// The section z = `z` of every region: one convex polygon per region the plane cuts
+// (passes through, not only touches),
+// counter-clockwise in (x, y), with the grain and phase of each. Points where the plane
+// crosses an edge of the tessellation are shared by the polygons around that edge.
+struct Section {
+  CellMesh cells;
+  std::vector<int> grain;  // #cells
+  std::vector<int> phase;  // #cells
+};
+Section tessellation_section(const Tessellation3& t, double z);
+
+}  // namespace grainmesh

@@ -1,0 +1,27 @@
+// `grainmesh tessellate CONFIG -o OUT` for a 3D cell (domain.depth set): OUT/
+// tessellation.json (version 2), tessellation.vtu (VTK polyhedra), tessellation.png (a
+// section) and report.json (last).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+#include "pipelines/config.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+struct Tessellate3Job {
+  Tessellation3Options options;
+  std::uint64_t seed = 1;
+  int picture_width = 1200;  // pixels
+  double section = 0.5;      // the section's height, as a fraction of the depth
+};
+
+// Reads and checks a 3D tessellation config (the keys of tessellate_config_keys(); the
+// 2D-only ones refused by name). Throws ConfigError naming the key.
+Tessellate3Job read_tessellate_3d_job(const Config& config);
+
+void run_tessellate_3d_command(const Config& config, const std::filesystem::path& out);
+
+}  // namespace grainmesh
