@@ -20,7 +20,6 @@ Section tessellation_section(const Tessellation3& t, double z) {
     return it->second;
   };
   for (const Region3& r : t.regions) {
-    std::vector<int> ring;
     bool below = false, above = false;  // a region only touching the plane has no section
     for (int f : r.faces)
       for (int id : t.faces[f].ring) {
@@ -28,25 +27,39 @@ Section tessellation_section(const Tessellation3& t, double z) {
         above = above || t.vertices[id].z > z;
       }
     if (!below || !above) continue;
+    // Each face the plane crosses gives a segment; the segments chain into the ring.
+    std::map<int, std::vector<int>> next;
     for (int f : r.faces) {
       const std::vector<int>& v = t.faces[f].ring;
+      std::vector<int> cut;
       for (std::size_t k = 0; k < v.size(); ++k) {
         const int a = v[k], b = v[(k + 1) % v.size()];
         const double da = t.vertices[a].z - z, db = t.vertices[b].z - z;
-        if (da == 0.0) ring.push_back(point_id(a, a));
-        else if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) ring.push_back(point_id(a, b));
+        if (da == 0.0) cut.push_back(point_id(a, a));
+        else if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) cut.push_back(point_id(a, b));
       }
+      std::sort(cut.begin(), cut.end());
+      cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+      if (cut.size() != 2) continue;  // touches the plane in a point, or lies in it
+      next[cut[0]].push_back(cut[1]);
+      next[cut[1]].push_back(cut[0]);
     }
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    if (ring.size() < 3) continue;
-    Vec2 c{};
-    for (int id : ring) c += s.cells.points[id];
-    c = c / static_cast<double>(ring.size());
-    std::sort(ring.begin(), ring.end(), [&](int a, int b) {
-      const Vec2 pa = s.cells.points[a] - c, pb = s.cells.points[b] - c;
-      return std::atan2(pa.y, pa.x) < std::atan2(pb.y, pb.x);
-    });
+    if (next.size() < 3) continue;
+    std::vector<int> ring{next.begin()->first};
+    int previous = -1;
+    while (true) {
+      const std::vector<int>& to = next[ring.back()];
+      if (to.size() != 2) break;
+      const int step = to[0] != previous ? to[0] : to[1];
+      if (step == ring.front()) break;
+      previous = ring.back();
+      ring.push_back(step);
+    }
+    if (ring.size() != next.size()) continue;  // a degenerate touch: left out of the picture
+    double area2 = 0.0;
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      area2 += cross(s.cells.points[ring[k]], s.cells.points[ring[(k + 1) % ring.size()]]);
+    if (area2 < 0.0) std::reverse(ring.begin(), ring.end());
     s.cells.add_cell(ring);
     s.grain.push_back(r.grain);
     s.phase.push_back(r.phase);

@@ -9,7 +9,7 @@
 
 namespace grainmesh {
 
-// The section z = `z` of every region: one convex polygon per region the plane cuts
+// The section z = `z` of every region: one polygon per region the plane cuts
 // (passes through, not only touches),
 // counter-clockwise in (x, y), with the grain and phase of each. Points where the plane
 // crosses an edge of the tessellation are shared by the polygons around that edge.

@@ -23,7 +23,7 @@ namespace {
 
 // Keys of the 2D stage with no 3D meaning yet, and why.
 void refuse_2d_only(const Config& c) {
-  for (const char* key : {"tessellation.min_edge", "tessellation.matrix_phase", "tessellation.contiguity",
+  for (const char* key : {"tessellation.matrix_phase", "tessellation.contiguity",
                           "tessellation.contiguity_phase"})
     if (c.has(key)) c.fail(key, "not available for 3D cells yet (domain.depth is set)");
   if (c.optional_text("tessellation.phase_mode").value_or("grain") != "grain")
@@ -92,6 +92,8 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
   o.lloyd_iterations = static_cast<int>(lloyd);
   o.size_cv = c.number("tessellation.size_cv", 0.0);
   if (!(o.size_cv >= 0.0 && o.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
+  o.min_edge = c.number("tessellation.min_edge", o.min_edge);
+  if (!(o.min_edge >= 0.0 && o.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
   const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
   if (arr == "random") o.arrangement = Arrangement::random;
   else if (arr == "dispersed") o.arrangement = Arrangement::dispersed;

@@ -3,7 +3,7 @@
 # at BASE (a commit, default HEAD) beside the working tree's build/grainmesh, runs both on
 # the default cell (solved: the mixed load, and the periodic one with the thermal load),
 # every data/examples/*.ini (grain configs through run and through tessellate, mesh and
-# export; domain configs through domain) and a solved sweep with its summary, and compares
+# export; domain configs through domain; 3D configs left out) and a solved sweep with its summary, and compares
 # the output trees. Only what differs between two runs of one binary is left out:
 # report.json's seconds, memory and config path, OpenFOAM's and the sweep's logs. Exit 0
 # when all match.
@@ -37,7 +37,9 @@ outputs() {
   for f in data/examples/*.ini; do
     local name
     name=$(basename "$f" .ini)
-    if grep -q '^shape *=' "$f"; then
+    if grep -q '^depth *=' "$f"; then
+      continue  # 3D cells: only tessellated so far, by test_tessellate_3d_cli.cpp
+    elif grep -q '^shape *=' "$f"; then
       "$gm" domain "$f" -o "$out/$name" > /dev/null
     else
       "$gm" run "$f" -o "$out/$name" -q 2> /dev/null

@@ -241,11 +241,9 @@ CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<d
         volume += v;
         moment += (v / 4.0) * (a + b + c);
       }
-      for (int id : ring) {
-        Vec3 p = to_vec(d.points[id]);
-        if (periodic)
-          for (int ax = 0; ax < 3; ++ax) p[ax] -= std::floor(p[ax] / box[ax]) * box[ax];
-        m.vertices.push_back(p);
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        m.vertices.push_back(to_vec(d.points[ring[k]]));
+        m.edges.emplace_back(m.vertices.back(), to_vec(d.points[ring[(k + 1) % ring.size()]]));
       }
     }
     m.volume[i] = volume;

@@ -5,6 +5,7 @@
 // box from each seed's mirror images across the six sides, whose bisectors are the sides.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -13,11 +14,13 @@ namespace grainmesh {
 
 // Volume and centroid of each seed's cell, in floating point: what Lloyd's relaxation
 // and the window choice need. A hidden seed (no cell) has volume 0. `vertices` gets the
-// diagram's vertices (every cell's corners, once per cell), reduced into the box.
+// diagram's vertices (every cell's corners, once per cell) and `edges` its edges (once
+// per face they bound), not reduced into the box.
 struct CellMoments {
   std::vector<double> volume;
   std::vector<Vec3> centroid;  // not reduced into the box
   std::vector<Vec3> vertices;
+  std::vector<std::pair<Vec3, Vec3>> edges;
 };
 CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
                              bool periodic);

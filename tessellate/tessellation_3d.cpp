@@ -3,6 +3,7 @@
 #include "tessellate/tessellation_3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -12,6 +13,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "tessellate/laguerre_3d.hpp"
+#include "tessellate/regularise_3d.hpp"
 #include "tessellate/steps.hpp"
 
 namespace grainmesh {
@@ -64,24 +66,68 @@ void draw_seeds(const Tessellation3Options& o, Rng& rng, std::vector<Vec3>& seed
   }
 }
 
-// Where the box's sides go on the torus, axis by axis: the middle of the widest gap
-// between the diagram's vertices, so no side passes near a vertex.
-Vec3 window_origin(const std::vector<Vec3>& vertices, Vec3 box) {
-  Vec3 origin{};
+// The `count` widest gaps between the values `c` on a circle of length `period`: their
+// middles and half-widths, widest first.
+std::vector<std::pair<double, double>> widest_gaps(std::vector<double> c, double period, int count) {
+  std::vector<std::pair<double, double>> gaps;  // half-width, middle
+  if (c.empty()) return {{0.5 * period, 0.0}};
+  for (double& v : c) v = reduce(v, period);
+  std::sort(c.begin(), c.end());
+  gaps.emplace_back(0.5 * (c.front() + period - c.back()), reduce(c.back() + 0.5 * (c.front() + period - c.back()), period));
+  for (std::size_t k = 1; k < c.size(); ++k) gaps.emplace_back(0.5 * (c[k] - c[k - 1]), 0.5 * (c[k] + c[k - 1]));
+  std::sort(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  gaps.resize(std::min<std::size_t>(gaps.size(), count));
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [half, middle] : gaps) out.emplace_back(middle, half);
+  return out;
+}
+
+// How near the diagram's edges come to the box's edge lines (where two sides meet) with
+// the box at `origin`: the smallest distance from an edge to a line along axis c through
+// (origin[a], origin[b]) and its periodic images. An edge passing a line that closely is
+// cut by both sides into a piece about that short.
+double line_clearance(const std::vector<std::pair<Vec3, Vec3>>& edges, Vec3 origin, Vec3 box) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3; ++c) {
+    const int a = (c + 1) % 3, b = (c + 2) % 3;
+    for (const auto& [p, q] : edges) {
+      // The edge projected along c, shifted by whole periods so its start lies in
+      // [0, box[a]) x [0, box[b]) about the line through the origin.
+      const Vec2 u0{p[a] - origin[a], p[b] - origin[b]};
+      const Vec2 shift{-std::floor(u0.x / box[a]) * box[a], -std::floor(u0.y / box[b]) * box[b]};
+      const Vec2 u = u0 + shift, w = Vec2{q[a] - origin[a], q[b] - origin[b]} + shift;
+      for (int i = -1; i <= 2; ++i)
+        for (int j = -1; j <= 2; ++j)
+          best = std::min(best, std::sqrt(segment_distance2({i * box[a], j * box[b]}, u, w)));
+    }
+  }
+  return best;
+}
+
+// Where the box's sides go on the torus: of the widest gaps between the diagram's
+// vertices along each axis (so no side passes near a vertex), the combination whose edge
+// lines the diagram's edges pass furthest from.
+Vec3 window_origin(const CellMoments& m, Vec3 box) {
+  constexpr int kCandidates = 4;  // per axis
+  std::array<std::vector<std::pair<double, double>>, 3> gaps;
   for (int a = 0; a < 3; ++a) {
     std::vector<double> c;
-    for (const Vec3& v : vertices) c.push_back(reduce(v[a], box[a]));
-    if (c.empty()) continue;
-    std::sort(c.begin(), c.end());
-    double best = c.front() + box[a] - c.back(), at = reduce(c.back() + 0.5 * best, box[a]);
-    for (std::size_t k = 1; k < c.size(); ++k)
-      if (c[k] - c[k - 1] > best) {
-        best = c[k] - c[k - 1];
-        at = 0.5 * (c[k] + c[k - 1]);
-      }
-    origin[a] = at;
+    for (const Vec3& v : m.vertices) c.push_back(v[a]);
+    gaps[a] = widest_gaps(std::move(c), box[a], kCandidates);
   }
-  return origin;
+  Vec3 best{};
+  double best_score = -1.0;
+  for (const auto& [x, hx] : gaps[0])
+    for (const auto& [y, hy] : gaps[1])
+      for (const auto& [z, hz] : gaps[2]) {
+        const Vec3 origin{x, y, z};
+        const double score = std::min({hx, hy, hz, line_clearance(m.edges, origin, box)});
+        if (score > best_score) {
+          best_score = score;
+          best = origin;
+        }
+      }
+  return best;
 }
 
 void mean_std(const std::vector<double>& v, double* mean, double* sd) {
@@ -188,6 +234,39 @@ std::vector<double> phase_boundary_areas(const Tessellation3& t) {
   return area;
 }
 
+// The shortest edge, smallest face and sharpest interior dihedral angle (radians) of the
+// regions.
+struct Extremes {
+  double shortest_edge = std::numeric_limits<double>::infinity();
+  double smallest_face = std::numeric_limits<double>::infinity();
+  double sharpest_dihedral = std::numbers::pi;
+};
+Extremes extremes(const Tessellation3& t) {
+  Extremes x;
+  for (const Face3& f : t.faces) {
+    x.smallest_face = std::min(x.smallest_face, face_area(t, f));
+    for (std::size_t k = 0; k < f.ring.size(); ++k)
+      x.shortest_edge = std::min(x.shortest_edge, norm(t.vertices[f.ring[k]] - t.vertices[f.ring[(k + 1) % f.ring.size()]]));
+  }
+  // Pi minus the angle between the outward normals of the two faces of a region that meet
+  // at an edge.
+  for (int r = 0; r < static_cast<int>(t.regions.size()); ++r) {
+    std::map<std::pair<int, int>, Vec3> first;
+    for (int f : t.regions[r].faces) {
+      const Face3& face = t.faces[f];
+      Vec3 n = ring_normal(t.vertices, face.ring);
+      n = (face.back == r ? 1.0 : -1.0) * (n / norm(n));
+      for (std::size_t k = 0; k < face.ring.size(); ++k) {
+        const auto key = std::minmax(face.ring[k], face.ring[(k + 1) % face.ring.size()]);
+        const auto [it, added] = first.emplace(key, n);
+        if (!added)
+          x.sharpest_dihedral = std::min(x.sharpest_dihedral, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
+      }
+    }
+  }
+  return x;
+}
+
 void measure(Tessellation3& t) {
   Tessellation3Stats& st = t.stats;
   st.grains = static_cast<int>(t.grains.size());
@@ -204,30 +283,10 @@ void measure(Tessellation3& t) {
   st.faces_per_grain_mean = faces / st.grains;
   st.neighbours_mean = neighbours / st.grains;
 
-  st.shortest_edge = std::numeric_limits<double>::infinity();
-  st.smallest_face = std::numeric_limits<double>::infinity();
-  for (const Face3& f : t.faces) {
-    st.smallest_face = std::min(st.smallest_face, face_area(t, f));
-    for (std::size_t k = 0; k < f.ring.size(); ++k)
-      st.shortest_edge = std::min(st.shortest_edge, norm(t.vertices[f.ring[k]] - t.vertices[f.ring[(k + 1) % f.ring.size()]]));
-  }
-  // Interior dihedral angles: pi minus the angle between the outward normals of the two
-  // faces of a region that meet at an edge.
-  double sharpest = std::numbers::pi;
-  for (int r = 0; r < static_cast<int>(t.regions.size()); ++r) {
-    std::map<std::pair<int, int>, Vec3> first;
-    for (int f : t.regions[r].faces) {
-      const Face3& face = t.faces[f];
-      Vec3 n = ring_normal(t.vertices, face.ring);
-      n = (face.back == r ? 1.0 : -1.0) * (n / norm(n));
-      for (std::size_t k = 0; k < face.ring.size(); ++k) {
-        const auto key = std::minmax(face.ring[k], face.ring[(k + 1) % face.ring.size()]);
-        const auto [it, added] = first.emplace(key, n);
-        if (!added) sharpest = std::min(sharpest, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
-      }
-    }
-  }
-  st.sharpest_dihedral_deg = sharpest * 180.0 / std::numbers::pi;
+  const Extremes x = extremes(t);
+  st.shortest_edge = x.shortest_edge;
+  st.smallest_face = x.smallest_face;
+  st.sharpest_dihedral_deg = x.sharpest_dihedral * 180.0 / std::numbers::pi;
 
   const int np = static_cast<int>(t.phases.size());
   const double total = t.width * t.height * t.depth;
@@ -293,7 +352,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
   t.periodic = o.periodic;
   t.phases = o.phases;
   if (o.periodic) {
-    const Vec3 origin = window_origin(m.vertices, box);
+    const Vec3 origin = window_origin(m, box);
     for (Vec3& s : seeds)
       for (int a = 0; a < 3; ++a) s[a] = reduce(s[a] - origin[a], box[a]);
     t.stats.window_origin = origin;
@@ -314,8 +373,19 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     for (int j : cut.neighbours[i]) grain.neighbours.push_back(grain_of_seed[j]);
     t.grains.push_back(std::move(grain));
   }
-  // Phases by volume, from the pieces' volumes (known before the labels are).
   assemble(cut, grain_of_seed, t);
+  {
+    const Extremes before = extremes(t);
+    Tessellation3Stats& st = t.stats;
+    st.shortest_edge_before = before.shortest_edge;
+    st.sharpest_dihedral_before_deg = before.sharpest_dihedral * 180.0 / std::numbers::pi;
+    const double diameter = std::cbrt(6.0 * o.width * o.height * o.depth / (std::numbers::pi * static_cast<double>(t.grains.size())));
+    st.edge_threshold = o.min_edge * diameter;
+    const Regularisation done = collapse_short_edges(t, st.edge_threshold);
+    st.collapsed_edges = done.collapsed_edges;
+    st.removed_regions = done.removed_regions;
+  }
+  // Phases by volume, from the pieces' volumes (known before the labels are).
   for (Region3& r : t.regions) {
     r.volume = region_volume(t, r);
     t.grains[r.grain].volume += r.volume;

@@ -23,6 +23,7 @@ struct Tessellation3Options {
   std::vector<Vec3> seeds;       // given generator points in the box (N of them); empty = drawn
   int lloyd_iterations = 0;      // centroidal relaxation steps
   double size_cv = 0.0;          // coefficient of variation of the Laguerre radii; 0 = Voronoi
+  double min_edge = 0.1;         // edges shorter than this x mean grain diameter are collapsed; 0 = off
   Arrangement arrangement = Arrangement::random;
   std::vector<Phase> phases;     // at least one; fractions are volume fractions
   Deadline deadline{};           // asked every Lloyd step
@@ -72,6 +73,12 @@ struct Tessellation3Stats {
   double shortest_edge = 0.0;        // over the cut regions' edges
   double smallest_face = 0.0;        // area, over the cut regions' faces
   double sharpest_dihedral_deg = 0.0;  // interior angle between two faces of a region
+  // Regularisation: edges below edge_threshold collapsed; the extremes before it.
+  double edge_threshold = 0.0;
+  int collapsed_edges = 0;
+  int removed_regions = 0;           // slivers the box cut off a grain, flattened and removed
+  double shortest_edge_before = 0.0;
+  double sharpest_dihedral_before_deg = 0.0;
   Vec3 window_origin{};              // where the box was placed on the torus
   std::vector<PhaseStats> phases;    // fractions by volume; contiguity from face areas
 };
@@ -93,8 +100,8 @@ struct Tessellation3 {
 };
 
 // Draws N seeds from `rng` (or takes the given ones), builds the (periodic) Laguerre
-// diagram, relaxes it, assigns phases by volume, places the box on the torus clear of
-// the diagram's vertices and cuts it exactly. Throws ConfigError for options that
+// diagram, relaxes it, places the box on the torus clear of the diagram's vertices, cuts
+// it exactly, collapses short edges (regularise_3d.hpp) and assigns phases by volume. Throws ConfigError for options that
 // cannot be met, TimeLimitError when the deadline passes, GeometryError otherwise.
 Tessellation3 tessellate_3d(const Tessellation3Options& options, Rng& rng);
 

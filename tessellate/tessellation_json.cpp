@@ -243,6 +243,11 @@ nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::v
   j["shortest_edge"] = s.shortest_edge;
   j["smallest_face"] = s.smallest_face;
   j["sharpest_dihedral_deg"] = s.sharpest_dihedral_deg;
+  j["edge_threshold"] = s.edge_threshold;
+  j["collapsed_edges"] = s.collapsed_edges;
+  j["removed_regions"] = s.removed_regions;
+  j["shortest_edge_before"] = s.shortest_edge_before;
+  j["sharpest_dihedral_before_deg"] = s.sharpest_dihedral_before_deg;
   j["window_origin"] = point(s.window_origin);
   j["phases"] = phases_json(phases, s.phases);
   j["contiguity"] = Json::object();
@@ -268,6 +273,11 @@ Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phas
   s.shortest_edge = j.at("shortest_edge").get<double>();
   s.smallest_face = j.at("smallest_face").get<double>();
   s.sharpest_dihedral_deg = j.at("sharpest_dihedral_deg").get<double>();
+  s.edge_threshold = j.at("edge_threshold").get<double>();
+  s.collapsed_edges = read_int(j.at("collapsed_edges"));
+  s.removed_regions = read_int(j.at("removed_regions"));
+  s.shortest_edge_before = j.at("shortest_edge_before").get<double>();
+  s.sharpest_dihedral_before_deg = j.at("sharpest_dihedral_before_deg").get<double>();
   s.window_origin = read_point3(j.at("window_origin"));
   const Json& ph = j.at("phases");
   if (!ph.is_array() || ph.size() != phases.size()) throw GeometryError("statistics: not one entry per phase");

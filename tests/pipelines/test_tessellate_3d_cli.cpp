@@ -82,7 +82,7 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
   const std::vector<Case> cases{
       {"tessellate", three, {"domain.depth=0"}, "domain.depth: must be positive"},
       {"tessellate", three, {"domain.depth=-2"}, "domain.depth: must be positive"},
-      {"tessellate", three, {"tessellation.min_edge=0.1"}, "tessellation.min_edge: not available for 3D cells yet"},
+      {"tessellate", three, {"tessellation.min_edge=1"}, "tessellation.min_edge: must lie in [0, 1)"},
       {"tessellate", three, {"tessellation.phase_mode=binder"}, "tessellation.phase_mode: 3D cells have grain mode only"},
       {"tessellate", three, {"tessellation.contiguity=0.5"}, "tessellation.contiguity: not available for 3D cells yet"},
       {"tessellate", three, {"tessellation.seeds=1 1"}, "tessellation.seeds (x y z, x y z, ...): expected 3 numbers, got 2"},

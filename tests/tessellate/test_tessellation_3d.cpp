@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "common/errors.hpp"
@@ -183,6 +184,53 @@ TEST_CASE("3D invariants on drawn cells: volumes, two regions per face, exact pa
       }
 }
 
+namespace {
+
+// Edges of the regions shorter than `length`, each once.
+int edges_below(const Tessellation3& t, double length) {
+  std::set<std::pair<int, int>> edges;
+  for (const Face3& f : t.faces)
+    for (std::size_t k = 0; k < f.ring.size(); ++k) {
+      const auto e = std::minmax(f.ring[k], f.ring[(k + 1) % f.ring.size()]);
+      if (norm(t.vertices[e.first] - t.vertices[e.second]) < length) edges.insert(e);
+    }
+  return static_cast<int>(edges.size());
+}
+
+}  // namespace
+
+TEST_CASE("3D regularisation: short edges collapsed, no dihedral made sharper, volumes and partners exact",
+          "[tessellate3d]") {
+  for (bool periodic : {true, false})
+    for (std::uint64_t seed : {1u, 2u}) {
+      CAPTURE(periodic, seed);
+      Tessellation3Options o = options(100, periodic);
+      o.lloyd_iterations = 3;
+      o.min_edge = 0.0;
+      const Tessellation3 raw = make(o, seed);
+      o.min_edge = 0.1;
+      const Tessellation3 t = make(o, seed);  // validate() ran inside
+      const double threshold = t.stats.edge_threshold;
+      REQUIRE(threshold == Approx(0.1 * std::cbrt(6.0 / (std::numbers::pi * 100))));
+      REQUIRE(raw.stats.collapsed_edges == 0);
+      REQUIRE(t.stats.collapsed_edges > 0);
+      // At least 90 % of the short edges gone; the rest kept by the rules (sides, angles).
+      const int before = edges_below(raw, threshold), after = edges_below(t, threshold);
+      CAPTURE(before, after);
+      REQUIRE(before > 20);
+      REQUIRE(after <= before / 10);
+      REQUIRE(t.stats.shortest_edge > t.stats.shortest_edge_before);
+      REQUIRE(t.stats.shortest_edge_before == raw.stats.shortest_edge);
+      REQUIRE(t.stats.sharpest_dihedral_deg >= std::min(raw.stats.sharpest_dihedral_deg, 20.0) - 1e-9);
+      REQUIRE(total_volume(t) == Approx(1.0).epsilon(1e-9));
+      if (periodic) require_face_partners(t);
+      // The grains are the diagram's, each volume moved by a little only.
+      REQUIRE(t.grains.size() == raw.grains.size());
+      for (std::size_t g = 0; g < t.grains.size(); ++g)
+        REQUIRE(t.grains[g].volume == Approx(raw.grains[g].volume).epsilon(0.15));
+    }
+}
+
 TEST_CASE("3D: 1,000 periodic grains with Laguerre sizes and Lloyd steps stay valid", "[tessellate3d][slow]") {
   Tessellation3Options o = options(1000, true, {1.0, 1.0, 1.0});
   o.size_cv = 0.4;
@@ -190,6 +238,7 @@ TEST_CASE("3D: 1,000 periodic grains with Laguerre sizes and Lloyd steps stay va
   const Tessellation3 t = make(o, 7);
   REQUIRE(total_volume(t) == Approx(1.0).epsilon(1e-9));
   REQUIRE(t.stats.grains + t.stats.removed_grains == 1000);
+  REQUIRE(t.stats.collapsed_edges > 500);
   require_face_partners(t);
   require_symmetric_neighbours(t);
   for (const PhaseStats& p : t.stats.phases) REQUIRE(std::abs(p.achieved_fraction - p.target_fraction) <= 0.01);

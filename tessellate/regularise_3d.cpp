@@ -1,0 +1,503 @@
+// Regularisation of a cut 3D tessellation: short edges collapsed (their ends merged), the
+// faces it bends split into planar triangles.
+#include "tessellate/regularise_3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <unordered_map>
+
+namespace grainmesh {
+
+namespace {
+
+// A collapse may not make a dihedral angle of a region sharper than this.
+constexpr double kMinDihedral = 20.0 * std::numbers::pi / 180.0;
+
+// The box sides a vertex lies on: bit 2a for coordinate a = 0, bit 2a + 1 for = the box's
+// edge along a. Exact: vertices on a side carry its coordinate.
+int side_mask(Vec3 p, Vec3 box) {
+  int m = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (p[a] == 0.0) m |= 1 << (2 * a);
+    if (p[a] == box[a]) m |= 1 << (2 * a + 1);
+  }
+  return m;
+}
+
+struct PointHash {
+  std::size_t operator()(const Vec3& p) const {
+    const std::hash<double> h;
+    return h(p.x) ^ (h(p.y) * 31u) ^ (h(p.z) * 1000003u);
+  }
+};
+
+// How a face is taken after collapses bent it: planar (within `flat`, its own plane), or
+// as the triangulation of its ring without new vertices that makes the smallest angle
+// largest, every triangle turning with the ring; `valid` false when none does.
+struct FaceShape {
+  bool planar = true;
+  bool valid = true;
+  std::vector<std::array<int, 3>> triangles;  // vertex ids; empty when planar
+};
+
+double smallest_angle(Vec3 a, Vec3 b, Vec3 c) {
+  auto angle = [](Vec3 u, Vec3 v) { return std::acos(std::clamp(dot(u, v) / (norm(u) * norm(v)), -1.0, 1.0)); };
+  return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
+}
+
+FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, double flat) {
+  FaceShape shape;
+  const int n = static_cast<int>(ring.size());
+  Vec3 c{}, normal{};
+  for (int v : ring) c += p[v];
+  c = c / static_cast<double>(n);
+  for (int k = 0; k < n; ++k) normal += cross(p[ring[k]] - c, p[ring[(k + 1) % n]] - c);
+  const double len = norm(normal);
+  if (!(len > 0.0)) return {.planar = false, .valid = false, .triangles = {}};
+  normal = normal / len;
+  double off = 0.0;
+  for (int v : ring) off = std::max(off, std::abs(dot(p[v] - c, normal)));
+  if (n == 3 || off <= flat) return shape;
+  shape.planar = false;
+  // best[i][j]: the best smallest angle of the polygon ring[i..j] closed by the chord j-i.
+  constexpr double kNone = -1.0;
+  std::vector<std::vector<double>> best(n, std::vector<double>(n, kNone));
+  std::vector<std::vector<int>> apex(n, std::vector<int>(n, -1));
+  for (int i = 0; i + 1 < n; ++i) best[i][i + 1] = std::numbers::pi;
+  for (int span = 2; span < n; ++span)
+    for (int i = 0; i + span < n; ++i) {
+      const int j = i + span;
+      for (int k = i + 1; k < j; ++k) {
+        const Vec3 a = p[ring[i]], b = p[ring[k]], d = p[ring[j]];
+        const Vec3 m = cross(b - a, d - a);
+        if (dot(m, normal) <= 1e-3 * norm(m)) continue;
+        const double q = std::min({best[i][k], best[k][j], smallest_angle(a, b, d)});
+        if (best[i][k] >= 0.0 && best[k][j] >= 0.0 && q > best[i][j]) {
+          best[i][j] = q;
+          apex[i][j] = k;
+        }
+      }
+    }
+  if (best[0][n - 1] <= 0.0) return {.planar = false, .valid = false, .triangles = {}};
+  std::vector<std::pair<int, int>> todo{{0, n - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j - i < 2) continue;
+    const int k = apex[i][j];
+    shape.triangles.push_back({ring[i], ring[k], ring[j]});
+    todo.emplace_back(i, k);
+    todo.emplace_back(k, j);
+  }
+  return shape;
+}
+
+class Collapser {
+ public:
+  Collapser(Tessellation3& t, double threshold) : t_(t), box_(t.size()), threshold_(threshold) {
+    vertex_faces_.resize(t.vertices.size());
+    for (int f = 0; f < static_cast<int>(t.faces.size()); ++f)
+      for (int v : t.faces[f].ring) vertex_faces_[v].push_back(f);
+    dead_.assign(t.faces.size(), false);
+    dead_region_.assign(t.regions.size(), false);
+    for (const Region3& r : t.regions) {
+      if (r.grain >= static_cast<int>(grain_regions_.size())) grain_regions_.resize(r.grain + 1, 0);
+      ++grain_regions_[r.grain];
+    }
+    for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) at_.emplace(t.vertices[v], v);
+  }
+
+  // Passes over the edges shorter than the threshold, shortest first, until none
+  // collapses. Returns the number collapsed (periodic images counted once).
+  int run() {
+    int collapsed = 0;
+    for (int pass = 0; pass < 20; ++pass) {
+      int now = 0;
+      for (const auto& [length, e] : short_edges())
+        if (present(e.first, e.second) && distance(e.first, e.second) < threshold_ && collapse(e.first, e.second)) ++now;
+      collapsed += now;
+      if (now == 0) break;
+    }
+    finish();
+    return collapsed;
+  }
+
+ private:
+  double distance(int a, int b) const { return norm(t_.vertices[a] - t_.vertices[b]); }
+
+  std::vector<std::pair<double, std::pair<int, int>>> short_edges() const {
+    std::set<std::pair<int, int>> seen;
+    std::vector<std::pair<double, std::pair<int, int>>> out;
+    for (int f = 0; f < static_cast<int>(t_.faces.size()); ++f) {
+      if (dead_[f]) continue;
+      const auto& r = t_.faces[f].ring;
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        const auto e = std::minmax(r[k], r[(k + 1) % r.size()]);
+        if (distance(e.first, e.second) < threshold_ && seen.insert(e).second) out.push_back({distance(e.first, e.second), e});
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  bool present(int a, int b) const {
+    for (int f : vertex_faces_[a]) {
+      if (dead_[f]) continue;
+      const auto& r = t_.faces[f].ring;
+      for (std::size_t k = 0; k < r.size(); ++k)
+        if ((r[k] == a && r[(k + 1) % r.size()] == b) || (r[k] == b && r[(k + 1) % r.size()] == a)) return true;
+    }
+    return false;
+  }
+
+  // The vertex at p shifted by toggling the box sides in `toggle` (bits as side_mask), or -1.
+  int image(int v, int toggle) const {
+    Vec3 p = t_.vertices[v];
+    for (int a = 0; a < 3; ++a)
+      if (toggle & (3 << (2 * a))) p[a] = p[a] == 0.0 ? box_[a] : 0.0;
+    const auto it = at_.find(p);
+    return it == at_.end() ? -1 : it->second;
+  }
+
+  struct Saved {
+    std::vector<std::pair<int, std::vector<int>>> rings;  // face, ring before
+    std::vector<std::pair<int, Vec3>> moved;              // vertex, position before
+    std::vector<int> killed;
+  };
+
+  // Merges b into a at p, recording what it changes.
+  void merge(int a, int b, Vec3 p, Saved& s) {
+    s.moved.emplace_back(a, t_.vertices[a]);
+    t_.vertices[a] = p;
+    for (int f : vertex_faces_[b]) {
+      if (dead_[f]) continue;
+      s.rings.emplace_back(f, t_.faces[f].ring);
+      std::vector<int> ring;
+      for (int v : t_.faces[f].ring) {
+        const int w = v == b ? a : v;
+        if (ring.empty() || ring.back() != w) ring.push_back(w);
+      }
+      while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+      t_.faces[f].ring = std::move(ring);
+      if (t_.faces[f].ring.size() < 3) {
+        dead_[f] = true;
+        s.killed.push_back(f);
+      }
+    }
+    for (int f : vertex_faces_[a]) {
+      if (dead_[f]) continue;
+      bool saved = false;
+      for (const auto& r : s.rings) saved = saved || r.first == f;
+      if (!saved) s.rings.emplace_back(f, t_.faces[f].ring);
+    }
+  }
+
+  void revert(const Saved& s) {
+    for (auto it = s.rings.rbegin(); it != s.rings.rend(); ++it) t_.faces[it->first].ring = it->second;
+    for (auto it = s.moved.rbegin(); it != s.moved.rend(); ++it) t_.vertices[it->first] = it->second;
+    for (int f : s.killed) dead_[f] = false;
+  }
+
+  double flat() const { return 1e-12 * (box_.x + box_.y + box_.z); }
+
+  // A face that is planar or has a triangulation turning with it (face_shape).
+  bool face_ok(int f) const { return face_shape(t_.vertices, t_.faces[f].ring, flat()).valid; }
+
+  // A region still closed and outward, with at least four faces and positive volume.
+  bool region_ok(int r) const {
+    std::map<std::pair<int, int>, int> edges;
+    std::set<std::vector<int>> faces;
+    int alive = 0;
+    for (int f : t_.regions[r].faces) {
+      if (dead_[f]) continue;
+      ++alive;
+      const Face3& face = t_.faces[f];
+      std::vector<int> key = face.ring;
+      std::sort(key.begin(), key.end());
+      if (!faces.insert(key).second) return false;
+      for (std::size_t k = 0; k < face.ring.size(); ++k) {
+        int a = face.ring[k], b = face.ring[(k + 1) % face.ring.size()];
+        if (face.back != r) std::swap(a, b);
+        if (++edges[{a, b}] > 1) return false;
+      }
+    }
+    if (alive < 4) return false;
+    for (const auto& [e, count] : edges)
+      if (!edges.contains({e.second, e.first})) return false;
+    double v = 0.0;
+    const Vec3 o = t_.vertices[t_.faces[t_.regions[r].faces[0]].ring[0]];
+    for (int f : t_.regions[r].faces) {
+      if (dead_[f]) continue;
+      const Face3& face = t_.faces[f];
+      const double sign = face.back == r ? 1.0 : -1.0;
+      for (const auto& [a, b, c] : triangles(face.ring))
+        v += sign * dot(t_.vertices[a] - o, cross(t_.vertices[b] - o, t_.vertices[c] - o));
+    }
+    return v > 0.0;
+  }
+
+  // A face's triangles as finish() will make them: a fan from its first vertex when
+  // planar, else face_shape's.
+  std::vector<std::array<int, 3>> triangles(const std::vector<int>& ring) const {
+    FaceShape shape = face_shape(t_.vertices, ring, flat());
+    if (!shape.planar) return shape.triangles;
+    std::vector<std::array<int, 3>> fan;
+    for (std::size_t k = 1; k + 1 < ring.size(); ++k) fan.push_back({ring[0], ring[k], ring[k + 1]});
+    return fan;
+  }
+
+  // The sharpest interior dihedral angle of region r (radians) over the edges of its
+  // faces' triangles (triangles()): what the finished faces will have, a bent face's
+  // diagonals included.
+  double region_sharpest(int r) const {
+    double sharpest = std::numbers::pi;
+    std::map<std::pair<int, int>, Vec3> first;
+    for (int f : t_.regions[r].faces) {
+      if (dead_[f]) continue;
+      const double sign = t_.faces[f].back == r ? 1.0 : -1.0;
+      const std::vector<int>& ring = t_.faces[f].ring;
+      // A planar face: its own normal at its edges (a fan of it may hold zero-area
+      // triangles where vertices line up along a side of the box).
+      const FaceShape shape = face_shape(t_.vertices, ring, flat());
+      if (shape.planar) {
+        Vec3 n{};
+        for (std::size_t k = 0; k < ring.size(); ++k) n += cross(t_.vertices[ring[k]], t_.vertices[ring[(k + 1) % ring.size()]]);
+        n = sign * (n / norm(n));
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+          const auto [it, added] = first.emplace(std::minmax(ring[k], ring[(k + 1) % ring.size()]), n);
+          if (!added) sharpest = std::min(sharpest, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
+        }
+        continue;
+      }
+      for (const auto& [a, b, c] : shape.triangles) {
+        Vec3 n = cross(t_.vertices[b] - t_.vertices[a], t_.vertices[c] - t_.vertices[a]);
+        n = sign * (n / norm(n));
+        for (const auto& e : {std::minmax(a, b), std::minmax(b, c), std::minmax(c, a)}) {
+          const auto [it, added] = first.emplace(e, n);
+          if (!added) sharpest = std::min(sharpest, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
+        }
+      }
+    }
+    return sharpest;
+  }
+
+  // Collapses edge ab and its periodic images, all or none.
+  bool collapse(int a, int b) {
+    const int ma = side_mask(t_.vertices[a], box_), mb = side_mask(t_.vertices[b], box_);
+    if (!t_.periodic) return collapse_bounded(a, b, ma | mb);
+    if ((ma & mb) != ma && (ma & mb) != mb) return false;  // sides neither holds whole: keep
+    if ((ma & mb) == ma && ma != mb) std::swap(a, b);      // a the vertex on more sides, which stays on them
+    const int common = side_mask(t_.vertices[b], box_);    // the sides both lie on
+    std::vector<std::pair<int, int>> edges{{a, b}};
+    for (int toggle = 1; toggle < 64; ++toggle) {
+      if ((toggle & ~common) != 0) continue;
+      bool one_per_axis = true;
+      for (int ax = 0; ax < 3; ++ax) one_per_axis = one_per_axis && ((toggle >> (2 * ax)) & 3) != 3;
+      if (!one_per_axis) continue;
+      const int ia = image(a, toggle), ib = image(b, toggle);
+      if (ia < 0 || ib < 0) return false;
+      edges.emplace_back(ia, ib);
+    }
+    std::vector<Vec3> targets;
+    for (const auto& [u, w] : edges)
+      targets.push_back(side_mask(t_.vertices[u], box_) == side_mask(t_.vertices[w], box_) ? 0.5 * (t_.vertices[u] + t_.vertices[w])
+                                                                                          : t_.vertices[u]);
+    return collapse_all(edges, targets);
+  }
+
+  // In a bounded box no partner follows a vertex: the merged point is the midpoint put on
+  // every side either end lies on (a short edge from one side to another ends on the
+  // box's edge line between them).
+  bool collapse_bounded(int a, int b, int sides) {
+    Vec3 p = 0.5 * (t_.vertices[a] + t_.vertices[b]);
+    for (int ax = 0; ax < 3; ++ax) {
+      const int on = (sides >> (2 * ax)) & 3;
+      if (on == 3) return false;  // an edge across the box
+      if (on == 1) p[ax] = 0.0;
+      if (on == 2) p[ax] = box_[ax];
+    }
+    return collapse_all({{a, b}}, {p});
+  }
+
+  // Merges the second end of each edge into the first at its target: all or none.
+  bool collapse_all(const std::vector<std::pair<int, int>>& edges, const std::vector<Vec3>& targets) {
+    std::set<int> regions;
+    for (const auto& [u, w] : edges)
+      for (int v : {u, w})
+        for (int f : vertex_faces_[v]) {
+          if (dead_[f]) continue;
+          regions.insert(t_.faces[f].back);
+          if (t_.faces[f].front >= 0) regions.insert(t_.faces[f].front);
+        }
+    std::map<int, double> before;
+    for (int r : regions) before[r] = region_sharpest(r);
+    Saved s;
+    for (std::size_t k = 0; k < edges.size(); ++k) merge(edges[k].first, edges[k].second, targets[k], s);
+    bool ok = true;
+    for (const auto& [f, ring] : s.rings)
+      if (!dead_[f]) ok = ok && face_ok(f);
+    // No region may lose its shape: no dihedral angle sharper than kMinDihedral made (or
+    // sharper than it was, where it was already).
+    // A region flattened (a sliver the box cut off a grain) goes, its opposite faces
+    // joined, if its grain keeps another region.
+    std::vector<int> flattened;
+    for (int r : regions) {
+      if (!ok) break;
+      if (flat(r) && removable(r, flattened)) flattened.push_back(r);
+      else ok = region_ok(r) && region_sharpest(r) >= std::min(before[r], kMinDihedral);
+    }
+    if (!ok) {
+      revert(s);
+      return false;
+    }
+    for (const auto& [u, w] : edges) {
+      at_.erase(t_.vertices[w]);
+      for (int f : vertex_faces_[w]) vertex_faces_[u].push_back(f);
+      vertex_faces_[w].clear();
+    }
+    for (const auto& [u, old] : s.moved) {
+      at_.erase(old);
+      at_[t_.vertices[u]] = u;
+    }
+    for (const auto& [u, w] : edges) {
+      auto& list = vertex_faces_[u];
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    for (int r : flattened) remove(r);
+    return true;
+  }
+
+  // The alive faces of region r paired up by vertex set: nothing left of its volume.
+  std::map<std::vector<int>, std::vector<int>> faces_by_key(int r) const {
+    std::map<std::vector<int>, std::vector<int>> by_key;
+    for (int f : t_.regions[r].faces) {
+      if (dead_[f]) continue;
+      std::vector<int> key = t_.faces[f].ring;
+      std::sort(key.begin(), key.end());
+      by_key[key].push_back(f);
+    }
+    return by_key;
+  }
+  bool flat(int r) const {
+    for (const auto& [key, faces] : faces_by_key(r))
+      if (faces.size() != 2) return false;
+    return true;
+  }
+  static int other_side(const Face3& f, int r) { return f.back == r ? f.front : f.back; }
+
+  // Region r can go when each pair of its faces joins two different regions (or a region
+  // and the box) and its grain has another region (`also_going` are going too).
+  bool removable(int r, const std::vector<int>& also_going) const {
+    int going = 1;
+    for (int q : also_going) going += t_.regions[q].grain == t_.regions[r].grain;
+    if (grain_regions_[t_.regions[r].grain] <= going) return false;
+    for (const auto& [key, faces] : faces_by_key(r)) {
+      const int x = other_side(t_.faces[faces[0]], r), y = other_side(t_.faces[faces[1]], r);
+      if (x == y) return false;  // also both on the box
+      for (int q : also_going)
+        if (x == q || y == q) return false;
+    }
+    return true;
+  }
+
+  // Removes flat region r: each pair of its faces becomes one face between the regions
+  // (or region and box) on their far sides.
+  void remove(int r) {
+    for (const auto& [key, faces] : faces_by_key(r)) {
+      Face3& keep = t_.faces[faces[0]];
+      const Face3& drop = t_.faces[faces[1]];
+      const int x = other_side(keep, r), y = other_side(drop, r);
+      if (x >= 0) {
+        if (keep.back != x) std::reverse(keep.ring.begin(), keep.ring.end());
+        keep.back = x;
+        keep.front = y;
+      } else {
+        keep.ring = drop.ring;
+        if (drop.back != y) std::reverse(keep.ring.begin(), keep.ring.end());
+        keep.back = y;
+        keep.front = -1;
+      }
+      dead_[faces[1]] = true;
+      if (y >= 0) std::replace(t_.regions[y].faces.begin(), t_.regions[y].faces.end(), faces[1], faces[0]);
+    }
+    dead_region_[r] = true;
+    --grain_regions_[t_.regions[r].grain];
+    ++removed_regions_;
+  }
+
+  // Dead faces dropped, bent faces split into triangles (face_shape), unused
+  // vertices dropped.
+  void finish() {
+    std::vector<std::vector<int>> replaced(t_.faces.size());
+    std::vector<Face3> faces;
+    for (int f = 0; f < static_cast<int>(t_.faces.size()); ++f) {
+      if (dead_[f]) continue;
+      const Face3& face = t_.faces[f];
+      const FaceShape shape = face_shape(t_.vertices, face.ring, flat());
+      if (shape.planar) {
+        replaced[f].push_back(static_cast<int>(faces.size()));
+        faces.push_back(face);
+        continue;
+      }
+      for (const auto& [a, b, c] : shape.triangles) {
+        replaced[f].push_back(static_cast<int>(faces.size()));
+        faces.push_back({.ring = {a, b, c}, .back = face.back, .front = face.front});
+      }
+    }
+    std::vector<int> region_id(t_.regions.size(), -1);
+    std::vector<Region3> regions;
+    for (std::size_t r = 0; r < t_.regions.size(); ++r) {
+      if (dead_region_[r]) continue;
+      region_id[r] = static_cast<int>(regions.size());
+      Region3 region = t_.regions[r];
+      region.faces.clear();
+      for (int f : t_.regions[r].faces) region.faces.insert(region.faces.end(), replaced[f].begin(), replaced[f].end());
+      regions.push_back(std::move(region));
+    }
+    for (Face3& f : faces) {
+      f.back = region_id[f.back];
+      if (f.front >= 0) f.front = region_id[f.front];
+    }
+    t_.regions = std::move(regions);
+    t_.faces = std::move(faces);
+    std::vector<int> id(t_.vertices.size(), -1);
+    std::vector<Vec3> kept;
+    for (Face3& f : t_.faces)
+      for (int& v : f.ring) {
+        if (id[v] < 0) {
+          id[v] = static_cast<int>(kept.size());
+          kept.push_back(t_.vertices[v]);
+        }
+        v = id[v];
+      }
+    t_.vertices = std::move(kept);
+  }
+
+  Tessellation3& t_;
+  Vec3 box_;
+  double threshold_;
+  std::vector<std::vector<int>> vertex_faces_;
+  std::vector<bool> dead_;
+  std::vector<bool> dead_region_;
+  std::vector<int> grain_regions_;  // live regions of each grain
+  std::unordered_map<Vec3, int, PointHash> at_;
+
+ public:
+  int removed_regions_ = 0;
+};
+
+}  // namespace
+
+Regularisation collapse_short_edges(Tessellation3& t, double threshold) {
+  if (!(threshold > 0.0)) return {};
+  Collapser c(t, threshold);
+  const int collapsed = c.run();
+  return {.collapsed_edges = collapsed, .removed_regions = c.removed_regions_};
+}
+
+}  // namespace grainmesh
