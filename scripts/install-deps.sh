@@ -15,6 +15,7 @@ packages=(
   libcairo2-dev                         # pictures
   nlohmann-json3-dev                    # reports
   openfoam                              # checkMesh and solidDisplacementFoam in the tests (Open MPI with it)
+  tetgen                                # fills 3D grains with tetrahedra (a program: Debian has no library)
   slurm-wlm                             # a one-node SLURM cluster for the sweep's job-array test
   clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
 )

@@ -1,0 +1,50 @@
+// The 3D mesh stage on a tessellation: the surfaces meshed once (surface_mesh.hpp), each
+// region filled with tetrahedra that keep its surface triangles exactly (TetGen, run as a
+// program: Debian ships it without a library), the pieces assembled into one conforming
+// mesh with a grain and a phase per tetrahedron and, when periodic, paired surface points.
+#pragma once
+
+#include <vector>
+
+#include "common/deadline.hpp"
+#include "mesh/tetmesh.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+struct GrainMesh3Options {
+  double size = 0.0;               // element edge length h, the tessellation's unit; > 0
+  int threads = 0;                 // regions filled in parallel; 0 = all cores
+  // TetGen's quality bounds (-q): radius-edge ratio and smallest dihedral angle; its
+  // volume bound is the regular tetrahedron of edge `size`.
+  double radius_edge = 1.3;
+  double min_dihedral_deg = 15.0;
+  Deadline deadline{};
+};
+
+struct GrainMesh3 {
+  TetMesh mesh;
+  std::vector<int> grain;  // #T
+  std::vector<int> phase;  // #T
+  std::vector<int> region; // #T
+  // Each tessellation face's triangles (point ids), turning as its ring does.
+  std::vector<std::vector<std::array<int, 3>>> faces;
+  PeriodicPairs3 pairs;    // surface points on the box's sides and their images
+  int surface_points = 0;
+  int surface_triangles = 0;
+  double seconds = 0.0, surface_seconds = 0.0, fill_seconds = 0.0;
+};
+
+// Meshes every face, fills every region and assembles; the result does not depend on the
+// thread count. Throws GeometryError (a face or a region that cannot be meshed, TetGen
+// missing or failing), TimeLimitError when the deadline passes.
+GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options& options);
+
+// The 3D conformity checker: every tetrahedron positive; every triangle of the mesh
+// shared by two tetrahedra, or by one on the box; the tessellation's faces made of
+// triangles with a tetrahedron of each region on their sides; each grain's tetrahedra
+// summing to its volume (1e-9 relative); paired points images across the box (1e-12 of
+// it). Throws GeometryError naming the first violation.
+void check_conformity(const Tessellation3& t, const GrainMesh3& m);
+
+}  // namespace grainmesh

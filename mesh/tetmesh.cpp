@@ -1,0 +1,63 @@
+#include "mesh/tetmesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace grainmesh {
+
+double tet_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return dot(d - a, cross(b - a, c - a)) / 6.0; }
+
+double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  const double six_v = std::abs(dot(w, cross(u, v)));
+  const double area = norm(cross(u, v)) + norm(cross(u, w)) + norm(cross(v, w)) + norm(cross(c - b, d - b));  // x 2
+  if (!(six_v > 0.0)) return 0.0;
+  const double r_in = six_v / area;  // 3 V / (sum of face areas), with both factors of 2 cancelling
+  // Circumcentre relative to a: (|u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v)) / (2 u . (v x w)).
+  const Vec3 num = dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u) + dot(w, w) * cross(u, v);
+  const double r_circ = norm(num) / (2.0 * six_v);
+  return 3.0 * r_in / r_circ;
+}
+
+std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const std::array<Vec3, 4> p{a, b, c, d};
+  constexpr int edge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::array<double, 6> out{};
+  for (int k = 0; k < 6; ++k) {
+    // The angle between the two faces at edge ij: between k and l projected across it.
+    const Vec3 o = p[edge[k][0]], e = p[edge[k][1]] - o;
+    const double e2 = dot(e, e);
+    Vec3 s = p[edge[k][2]] - o, t = p[edge[k][3]] - o;
+    s = s - (dot(s, e) / e2) * e;
+    t = t - (dot(t, e) / e2) * e;
+    out[k] = std::acos(std::clamp(dot(s, t) / (norm(s) * norm(t)), -1.0, 1.0));
+  }
+  return out;
+}
+
+TetQuality measure_quality(const TetMesh& mesh) {
+  TetQuality q;
+  if (mesh.tets.empty()) return q;
+  q.q_min = 1.0;
+  q.min_dihedral_deg = 180.0;
+  double sum = 0.0;
+  std::size_t below = 0;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  for (const auto& t : mesh.tets) {
+    const Vec3 a = mesh.points[t[0]], b = mesh.points[t[1]], c = mesh.points[t[2]], d = mesh.points[t[3]];
+    const double r = radius_ratio(a, b, c, d);
+    q.q_min = std::min(q.q_min, r);
+    sum += r;
+    const auto angles = dihedral_angles(a, b, c, d);
+    const double lo = *std::min_element(angles.begin(), angles.end()) * kDeg;
+    q.min_dihedral_deg = std::min(q.min_dihedral_deg, lo);
+    q.max_dihedral_deg = std::max(q.max_dihedral_deg, *std::max_element(angles.begin(), angles.end()) * kDeg);
+    below += lo < 10.0;
+  }
+  q.q_mean = sum / static_cast<double>(mesh.tets.size());
+  q.share_dihedral_below_10 = static_cast<double>(below) / static_cast<double>(mesh.tets.size());
+  return q;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,34 @@
+// Tetrahedral meshes: the 3D mesh stage's output, and their quality measures.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "common/vec3.hpp"
+
+namespace grainmesh {
+
+struct TetMesh {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 4>> tets;  // positively oriented: tet_volume > 0
+};
+
+// Signed volume of tetrahedron abcd: > 0 when d lies on the side abc's right-hand normal
+// points to (abc turning clockwise seen from outside the tetrahedron).
+double tet_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// Radius ratio 3 r_in / r_circ: 1 for the regular tetrahedron, 0 for a flat one.
+double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// The six dihedral angles (radians), at edges ab, ac, ad, bc, bd, cd.
+std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+
+// What report.json's `mesh` holds for a tetrahedral mesh.
+struct TetQuality {
+  double q_min = 0.0;               // radius ratio
+  double q_mean = 0.0;
+  double min_dihedral_deg = 0.0;
+  double max_dihedral_deg = 0.0;
+  double share_dihedral_below_10 = 0.0;  // of all tetrahedra, those with an angle below 10 degrees
+};
+TetQuality measure_quality(const TetMesh& mesh);
+
+}  // namespace grainmesh
