@@ -49,7 +49,7 @@ double smallest_angle(Vec3 a, Vec3 b, Vec3 c) {
   return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
 }
 
-FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, double flat) {
+FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, double flat, Vec3 box) {
   FaceShape shape;
   const int n = static_cast<int>(ring.size());
   Vec3 c{}, normal{};
@@ -71,7 +71,11 @@ FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, d
   for (int span = 2; span < n; ++span)
     for (int i = 0; i + span < n; ++i) {
       const int j = i + span;
+      // A diagonal between two points on one side of the box lies in that side, where the
+      // box face is: not a chord of a face inside.
+      auto chord_ok = [&](int x, int y) { return y - x == 1 || (x == 0 && y == n - 1) || (side_mask(p[ring[x]], box) & side_mask(p[ring[y]], box)) == 0; };
       for (int k = i + 1; k < j; ++k) {
+        if (!chord_ok(i, k) || !chord_ok(k, j) || !chord_ok(i, j)) continue;
         const Vec3 a = p[ring[i]], b = p[ring[k]], d = p[ring[j]];
         const Vec3 m = cross(b - a, d - a);
         if (dot(m, normal) <= 1e-3 * norm(m)) continue;
@@ -205,7 +209,28 @@ class Collapser {
   double flat() const { return 1e-12 * (box_.x + box_.y + box_.z); }
 
   // A face that is planar or has a triangulation turning with it (face_shape).
-  bool face_ok(int f) const { return face_shape(t_.vertices, t_.faces[f].ring, flat()).valid; }
+  bool face_ok(int f) const { return face_shape(t_.vertices, t_.faces[f].ring, flat(), box_).valid; }
+
+  // A face inside the box meets a side only along edges of the box's own faces: an edge
+  // of it lying in a side but not bounding a face on that side would cut through one.
+  bool touches_box_by_its_faces(int f) const {
+    const auto& ring = t_.faces[f].ring;
+    if (t_.faces[f].front < 0) return true;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const int x = ring[k], y = ring[(k + 1) % ring.size()];
+      const int common = side_mask(t_.vertices[x], box_) & side_mask(t_.vertices[y], box_);
+      if (common == 0) continue;
+      bool bounded = false;
+      for (int g : vertex_faces_[x]) {
+        if (dead_[g] || t_.faces[g].front >= 0) continue;
+        const auto& r = t_.faces[g].ring;
+        for (std::size_t m = 0; m < r.size() && !bounded; ++m)
+          bounded = (r[m] == x && r[(m + 1) % r.size()] == y) || (r[m] == y && r[(m + 1) % r.size()] == x);
+      }
+      if (!bounded) return false;
+    }
+    return true;
+  }
 
   // A region still closed and outward, with at least four faces and positive volume.
   bool region_ok(int r) const {
@@ -243,43 +268,50 @@ class Collapser {
   // A face's triangles as finish() will make them: a fan from its first vertex when
   // planar, else face_shape's.
   std::vector<std::array<int, 3>> triangles(const std::vector<int>& ring) const {
-    FaceShape shape = face_shape(t_.vertices, ring, flat());
+    FaceShape shape = face_shape(t_.vertices, ring, flat(), box_);
     if (!shape.planar) return shape.triangles;
     std::vector<std::array<int, 3>> fan;
     for (std::size_t k = 1; k + 1 < ring.size(); ++k) fan.push_back({ring[0], ring[k], ring[k + 1]});
     return fan;
   }
 
-  // The sharpest interior dihedral angle of region r (radians) over the edges of its
-  // faces' triangles (triangles()): what the finished faces will have, a bent face's
-  // diagonals included.
+  // The sharpest interior dihedral angle of region r (radians; a reflex angle counts by
+  // how far it falls short of a full turn) over the edges of its faces' triangles: what
+  // the finished faces will have, a bent face's diagonals included.
   double region_sharpest(int r) const {
+    // Per edge: the first face's outward normal and a point of it off the edge.
+    std::map<std::pair<int, int>, std::pair<Vec3, Vec3>> first;
     double sharpest = std::numbers::pi;
-    std::map<std::pair<int, int>, Vec3> first;
+    auto meet = [&](int x, int y, Vec3 n, Vec3 off) {
+      const auto [it, added] = first.emplace(std::minmax(x, y), std::pair{n, off});
+      if (added) return;
+      const double angle = interior_dihedral(it->second.first, n, off, t_.vertices[x]);
+      sharpest = std::min({sharpest, angle, 2.0 * std::numbers::pi - angle});
+    };
     for (int f : t_.regions[r].faces) {
       if (dead_[f]) continue;
       const double sign = t_.faces[f].back == r ? 1.0 : -1.0;
       const std::vector<int>& ring = t_.faces[f].ring;
-      // A planar face: its own normal at its edges (a fan of it may hold zero-area
-      // triangles where vertices line up along a side of the box).
-      const FaceShape shape = face_shape(t_.vertices, ring, flat());
+      // A planar face: its own normal at its edges, its centroid off them (a fan of it may
+      // hold zero-area triangles where vertices line up along a side of the box).
+      const FaceShape shape = face_shape(t_.vertices, ring, flat(), box_);
       if (shape.planar) {
-        Vec3 n{};
-        for (std::size_t k = 0; k < ring.size(); ++k) n += cross(t_.vertices[ring[k]], t_.vertices[ring[(k + 1) % ring.size()]]);
-        n = sign * (n / norm(n));
+        Vec3 n{}, c{};
         for (std::size_t k = 0; k < ring.size(); ++k) {
-          const auto [it, added] = first.emplace(std::minmax(ring[k], ring[(k + 1) % ring.size()]), n);
-          if (!added) sharpest = std::min(sharpest, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
+          n += cross(t_.vertices[ring[k]], t_.vertices[ring[(k + 1) % ring.size()]]);
+          c += t_.vertices[ring[k]];
         }
+        n = sign * (n / norm(n));
+        c = c / static_cast<double>(ring.size());
+        for (std::size_t k = 0; k < ring.size(); ++k) meet(ring[k], ring[(k + 1) % ring.size()], n, c);
         continue;
       }
       for (const auto& [a, b, c] : shape.triangles) {
         Vec3 n = cross(t_.vertices[b] - t_.vertices[a], t_.vertices[c] - t_.vertices[a]);
         n = sign * (n / norm(n));
-        for (const auto& e : {std::minmax(a, b), std::minmax(b, c), std::minmax(c, a)}) {
-          const auto [it, added] = first.emplace(e, n);
-          if (!added) sharpest = std::min(sharpest, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
-        }
+        meet(a, b, n, t_.vertices[c]);
+        meet(b, c, n, t_.vertices[a]);
+        meet(c, a, n, t_.vertices[b]);
       }
     }
     return sharpest;
@@ -339,7 +371,7 @@ class Collapser {
     for (std::size_t k = 0; k < edges.size(); ++k) merge(edges[k].first, edges[k].second, targets[k], s);
     bool ok = true;
     for (const auto& [f, ring] : s.rings)
-      if (!dead_[f]) ok = ok && face_ok(f);
+      if (!dead_[f]) ok = ok && face_ok(f) && touches_box_by_its_faces(f);
     // No region may lose its shape: no dihedral angle sharper than kMinDihedral made (or
     // sharper than it was, where it was already).
     // A region flattened (a sliver the box cut off a grain) goes, its opposite faces
@@ -438,7 +470,7 @@ class Collapser {
     for (int f = 0; f < static_cast<int>(t_.faces.size()); ++f) {
       if (dead_[f]) continue;
       const Face3& face = t_.faces[f];
-      const FaceShape shape = face_shape(t_.vertices, face.ring, flat());
+      const FaceShape shape = face_shape(t_.vertices, face.ring, flat(), box_);
       if (shape.planar) {
         replaced[f].push_back(static_cast<int>(faces.size()));
         faces.push_back(face);

@@ -248,19 +248,22 @@ Extremes extremes(const Tessellation3& t) {
     for (std::size_t k = 0; k < f.ring.size(); ++k)
       x.shortest_edge = std::min(x.shortest_edge, norm(t.vertices[f.ring[k]] - t.vertices[f.ring[(k + 1) % f.ring.size()]]));
   }
-  // Pi minus the angle between the outward normals of the two faces of a region that meet
-  // at an edge.
+  // The interior dihedral angle of each region at each edge of its faces (a reflex one
+  // by how far it falls short of a full turn).
   for (int r = 0; r < static_cast<int>(t.regions.size()); ++r) {
-    std::map<std::pair<int, int>, Vec3> first;
+    std::map<std::pair<int, int>, std::pair<Vec3, Vec3>> first;  // normal, a point off the edge
     for (int f : t.regions[r].faces) {
       const Face3& face = t.faces[f];
-      Vec3 n = ring_normal(t.vertices, face.ring);
+      Vec3 n = ring_normal(t.vertices, face.ring), c{};
       n = (face.back == r ? 1.0 : -1.0) * (n / norm(n));
+      for (int v : face.ring) c += t.vertices[v];
+      c = c / static_cast<double>(face.ring.size());
       for (std::size_t k = 0; k < face.ring.size(); ++k) {
-        const auto key = std::minmax(face.ring[k], face.ring[(k + 1) % face.ring.size()]);
-        const auto [it, added] = first.emplace(key, n);
-        if (!added)
-          x.sharpest_dihedral = std::min(x.sharpest_dihedral, std::numbers::pi - std::acos(std::clamp(dot(n, it->second), -1.0, 1.0)));
+        const int a = face.ring[k], b = face.ring[(k + 1) % face.ring.size()];
+        const auto [it, added] = first.emplace(std::minmax(a, b), std::pair{n, c});
+        if (added) continue;
+        const double angle = interior_dihedral(it->second.first, n, c, t.vertices[a]);
+        x.sharpest_dihedral = std::min({x.sharpest_dihedral, angle, 2.0 * std::numbers::pi - angle});
       }
     }
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -109,6 +110,17 @@ Tessellation3 tessellate_3d(const Tessellation3Options& options, Rng& rng);
 // regions or on the box, each region closed and outward oriented, partners exact.
 // Throws GeometryError naming the first violation.
 void validate(const Tessellation3& t);
+
+// The interior dihedral angle (radians, in (0, 2 pi)) of a solid at an edge through
+// `on_edge` between faces A and B with outward unit normals n_a and n_b, `off_b` a point of
+// B off the edge: pi minus the normals' angle where B bends in behind A's plane, pi plus
+// it where the solid is reflex there (a fold reads near 2 pi, not as flat).
+inline double interior_dihedral(Vec3 n_a, Vec3 n_b, Vec3 off_b, Vec3 on_edge) {
+  const double c = dot(n_a, n_b);
+  const double between = std::acos(c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c));
+  constexpr double pi = 3.14159265358979323846;
+  return dot(n_a, off_b - on_edge) <= 0.0 ? pi - between : pi + between;
+}
 
 // Volume of a region (its faces as stored) and area of a face.
 double region_volume(const Tessellation3& t, const Region3& r);
