@@ -67,4 +67,49 @@ Section tessellation_section(const Tessellation3& t, double z) {
   return s;
 }
 
+Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z) {
+  Section s;
+  std::map<std::pair<int, int>, int> point_of;  // as in tessellation_section
+  auto point_id = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, added] = point_of.emplace(key, static_cast<int>(s.cells.points.size()));
+    if (added) {
+      const Vec3 p = mesh.points[key.first], q = mesh.points[key.second];
+      const double u = key.first == key.second ? 0.0 : (z - p.z) / (q.z - p.z);
+      s.cells.points.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y)});
+    }
+    return it->second;
+  };
+  for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
+    const auto& t = mesh.tets[k];
+    bool below = false, above = false;
+    for (int v : t) {
+      below = below || mesh.points[v].z < z;
+      above = above || mesh.points[v].z > z;
+    }
+    if (!below || !above) continue;
+    std::vector<int> ring;
+    for (int i = 0; i < 4; ++i) {
+      const double di = mesh.points[t[i]].z - z;
+      if (di == 0.0) ring.push_back(point_id(t[i], t[i]));
+      for (int j = i + 1; j < 4; ++j) {
+        const double dj = mesh.points[t[j]].z - z;
+        if ((di < 0.0 && dj > 0.0) || (di > 0.0 && dj < 0.0)) ring.push_back(point_id(t[i], t[j]));
+      }
+    }
+    if (ring.size() < 3) continue;
+    Vec2 c{};
+    for (int id : ring) c += s.cells.points[id];
+    c = c / static_cast<double>(ring.size());
+    std::sort(ring.begin(), ring.end(), [&](int a, int b) {
+      const Vec2 pa = s.cells.points[a] - c, pb = s.cells.points[b] - c;
+      return std::atan2(pa.y, pa.x) < std::atan2(pb.y, pb.x);
+    });
+    s.cells.add_cell(ring);
+    s.grain.push_back(grain[k]);
+    s.phase.push_back(phase[k]);
+  }
+  return s;
+}
+
 }  // namespace grainmesh

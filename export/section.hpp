@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/cell_mesh.hpp"
+#include "mesh/tetmesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
@@ -19,5 +20,9 @@ struct Section {
   std::vector<int> phase;  // #cells
 };
 Section tessellation_section(const Tessellation3& t, double z);
+
+// The section z = `z` of a tetrahedral mesh: a triangle or quadrilateral per tetrahedron
+// the plane passes through, with that tetrahedron's grain and phase.
+Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z);
 
 }  // namespace grainmesh

@@ -49,6 +49,24 @@ class ErrorCatcher final : public vtkCommand {
   std::string message;
 };
 
+// Writes `data` with VTK's XML writer W as raw appended binary (smaller and faster than
+// base64), compressed. Throws IoError naming the file and `kind` (VTU, VTP).
+enum class Compression { lz4, zlib };
+template <typename W, typename D>
+void write_xml(const std::filesystem::path& file, D* data, const char* kind, Compression compression) {
+  vtkNew<W> writer;
+  vtkNew<ErrorCatcher> errors;
+  errors->watch(writer);
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  if (compression == Compression::lz4) writer->SetCompressorTypeToLZ4();
+  else writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
+    throw IoError(file.string() + ": cannot write " + kind + " file" + (errors->message.empty() ? "" : ": " + errors->message));
+}
+
 // write_vtu, for triangles and for cells.
 template <typename Mesh>
 void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::vector<CellField>& fields,
@@ -100,16 +118,7 @@ void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::
     grid->GetFieldData()->AddArray(array);
   }
 
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  vtkNew<ErrorCatcher> errors;
-  errors->watch(writer);
-  writer->SetFileName(file.c_str());
-  writer->SetInputData(grid);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
-  writer->SetCompressorTypeToLZ4();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
-    throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::lz4);
 }
 
 }  // namespace
@@ -161,16 +170,48 @@ void write_tessellation_vtp(const std::filesystem::path& file, const Tessellatio
     for (std::size_t c = 0; c < ordered.size(); ++c) array->SetValue(static_cast<vtkIdType>(c), ordered[c][k]);
     poly->GetCellData()->AddArray(array);
   }
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  vtkNew<ErrorCatcher> errors;
-  errors->watch(writer);
-  writer->SetFileName(file.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
-    throw IoError(file.string() + ": cannot write VTP file" + (errors->message.empty() ? "" : ": " + errors->message));
+  write_xml<vtkXMLPolyDataWriter>(file, poly.Get(), "VTP", Compression::zlib);
+}
+
+void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
+                   const std::vector<std::pair<std::string, const std::vector<int>*>>& ints,
+                   const std::vector<std::pair<std::string, const std::vector<double>*>>& reals,
+                   const std::vector<FieldLabels>& labels) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->Allocate(static_cast<vtkIdType>(mesh.tets.size()));
+  for (const auto& t : mesh.tets) {
+    const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
+    grid->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  for (const auto& [name, values] : ints) {
+    if (values->size() != mesh.tets.size()) throw IoError(file.string() + ": cell array " + name + " is not one per tetrahedron");
+    vtkNew<vtkIntArray> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(static_cast<vtkIdType>(values->size()));
+    for (std::size_t k = 0; k < values->size(); ++k) a->SetValue(static_cast<vtkIdType>(k), (*values)[k]);
+    grid->GetCellData()->AddArray(a);
+  }
+  for (const auto& [name, values] : reals) {
+    if (values->size() != mesh.tets.size()) throw IoError(file.string() + ": cell array " + name + " is not one per tetrahedron");
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(static_cast<vtkIdType>(values->size()));
+    for (std::size_t k = 0; k < values->size(); ++k) a->SetValue(static_cast<vtkIdType>(k), (*values)[k]);
+    grid->GetCellData()->AddArray(a);
+  }
+  for (const FieldLabels& l : labels) {
+    vtkNew<vtkStringArray> names;
+    names->SetName(l.name.c_str());
+    for (const std::string& n : l.labels) names->InsertNextValue(n);
+    grid->GetFieldData()->AddArray(names);
+  }
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
 }
 
 void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
@@ -209,16 +250,7 @@ void write_tessellation_vtu(const std::filesystem::path& file, const Tessellatio
   names->SetName("phase_names");
   for (const Phase& p : t.phases) names->InsertNextValue(p.name);
   grid->GetFieldData()->AddArray(names);
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  vtkNew<ErrorCatcher> errors;
-  errors->watch(writer);
-  writer->SetFileName(file.c_str());
-  writer->SetInputData(grid);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
-    throw IoError(file.string() + ": cannot write VTU file" + (errors->message.empty() ? "" : ": " + errors->message));
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
 }
 
 VtuContents read_vtu(const std::filesystem::path& file) {

@@ -4,10 +4,12 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
 #include "mesh/cell_mesh.hpp"
+#include "mesh/tetmesh.hpp"
 #include "mesh/trimesh.hpp"
 #include "tessellate/tessellation.hpp"
 #include "tessellate/tessellation_3d.hpp"
@@ -57,6 +59,13 @@ namespace grainmesh {
 // region (-1 on edges), and on edges the regions left and right (-1 on regions).
 // Matrix regions with holes appear through their edges only. Throws IoError.
 void write_tessellation_vtp(const std::filesystem::path& file, const Tessellation& t);
+
+// Writes a tetrahedral mesh as binary VTU (VTK tetrahedra), with integer cell arrays
+// (grain, phase, region: one value per tetrahedron) and real ones (quality). Throws IoError.
+void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
+                   const std::vector<std::pair<std::string, const std::vector<int>*>>& ints,
+                   const std::vector<std::pair<std::string, const std::vector<double>*>>& reals,
+                   const std::vector<FieldLabels>& labels = {});
 
 // Writes a 3D tessellation as an unstructured grid of VTK polyhedra, one per region, with
 // cell arrays grain, phase and region, and the phases' names. Throws IoError.

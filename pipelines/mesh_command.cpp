@@ -12,6 +12,7 @@
 #include "export/vtu.hpp"
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/mesh_3d_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/result_pictures.hpp"
 #include "pipelines/report.hpp"
@@ -23,7 +24,7 @@ const std::vector<std::string>& mesh_config_keys() {
   static const std::vector<std::string> keys{
       "mesh.size",    "mesh.h",    "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size",
       "mesh.gradient", "mesh.grading", "mesh.threads", "mesh.seed", "mesh.max_iterations", "phase.*.size",
-      "output.picture_width", kTimeLimitKey};
+      "mesh.tets_per_grain", "output.picture_width", "output.section", kTimeLimitKey};
   return keys;
 }
 
@@ -33,6 +34,8 @@ Tessellation read_tessellation_file(const std::filesystem::path& file) {
 
 MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   c.check_keys(mesh_config_keys());
+  for (const char* key : {"mesh.tets_per_grain", "output.section"})
+    if (c.has(key)) c.fail(key, "only for 3D tessellations (tessellation.json version 2)");
   MeshJob job;
   GrainMeshOptions& o = job.options;
   // mesh.h and mesh.grading are the run config's names of mesh.size and mesh.gradient.
@@ -147,7 +150,10 @@ Box detail_view(const Tessellation& t) {
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
   check_output_replaceable(out, "mesh");
-  const Tessellation t = read_tessellation_file(tessellation);
+  const std::string text = read_text_file(tessellation, "tessellation file");
+  if (tessellation_version(text) == 2)
+    return run_mesh_3d_command(tessellation_3d_from_json(text, tessellation.string()), tessellation, c, out);
+  const Tessellation t = tessellation_from_json(text, tessellation.string());
   const MeshJob job = read_mesh_job(c, t);
   const GrainMesh m = mesh_tessellation(t, job.options);
   const Conformity conformity = check_conformity(t, m);

@@ -204,6 +204,12 @@ nlohmann::ordered_json phases_json(const std::vector<Phase>& phases, const std::
 
 // --- version 2: 3D -------------------------------------------------------------------
 
+int tessellation_version(const std::string& text) {
+  const Json j = Json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("version") || !j["version"].is_number_integer()) return 0;
+  return j["version"].get<int>();
+}
+
 std::string tessellation_to_json(const Tessellation3& t) {
   Json j;
   j["format"] = "grainmesh-tessellation";

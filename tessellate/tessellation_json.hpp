@@ -46,6 +46,9 @@ nlohmann::ordered_json phases_json(const std::vector<Phase>& phases, const std::
 // Parses and validates; errors (GeometryError) start with `source`.
 Tessellation tessellation_from_json(const std::string& text, const std::string& source);
 
+// The version a tessellation.json says it is (1: 2D, 2: 3D), 0 when it says none.
+int tessellation_version(const std::string& text);
+
 // Version 2: a 3D tessellation, written and read back bit for bit.
 std::string tessellation_to_json(const Tessellation3& t);
 Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source);

@@ -106,3 +106,39 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
     CHECK_FALSE(fs::exists(dir / "out"));
   }
 }
+
+TEST_CASE("grainmesh mesh meshes a 3D tessellation into conforming tetrahedra and reports their quality",
+          "[cli][mesh3d]") {
+  test::ScratchDir dir("mesh3d");
+  const std::string cfg = test::example("grains_3d_wc_co").string();
+  REQUIRE(run_grainmesh({"tessellate", cfg, "-o", (dir / "t").string(), "--set", "tessellation.grains=30"}).exit_code == 0);
+  const std::string tess = (dir / "t" / "tessellation.json").string();
+  const auto r = run_grainmesh({"mesh", tess, "-o", (dir / "m").string(), "--set", "mesh.tets_per_grain=300"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* f : {"mesh.vtu", "mesh.png", "report.json"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "m" / "report.json"));
+  const auto& m = report["mesh"];
+  for (const char* key : {"points", "cells", "q_min", "q_mean", "min_dihedral_deg", "share_dihedral_below_10", "cells_per_grain_mean"})
+    CHECK(m.contains(key));
+  CHECK(m["cells_per_grain_mean"].get<double>() > 150);
+  CHECK(m["cells_per_grain_mean"].get<double>() < 900);
+  CHECK(m["q_mean"].get<double>() > 0.6);
+  CHECK(report["conforming"].get<bool>());
+  for (const char* axis : {"x", "y", "z"}) CHECK(report["pairs"][axis].get<int>() > 0);
+  const std::string vtu = test::read_file(dir / "m" / "mesh.vtu");
+  CHECK(vtu.find("NumberOfCells=\"" + std::to_string(m["cells"].get<std::size_t>()) + "\"") != std::string::npos);
+
+  // Keys of the 2D mesher refused by name for a 3D tessellation, and the 3D one in 2D.
+  REQUIRE(run_grainmesh({"tessellate", test::example("grains_wc_co").string(), "-o", (dir / "t2").string()}).exit_code == 0);
+  const std::vector<test::Refusal> refusals{
+      {{"mesh", tess, "--set", "mesh.triangles_per_grain=50"}, 2, "mesh.triangles_per_grain: not available for 3D meshes"},
+      {{"mesh", tess, "--set", "mesh.tets_per_grain=5"}, 2, "mesh.tets_per_grain: must lie between 10 and 1e6"},
+      {{"mesh", tess, "--set", "mesh.size=1e-4"}, 2, "mesh.size: asks for about"},
+      {{"mesh", tess, "--set", "mesh.tets_per_grain=300", "--set", "mesh.size=0.1"}, 2,
+       "mesh.tets_per_grain: give either mesh.size or mesh.tets_per_grain"},
+      {{"mesh", (dir / "t2" / "tessellation.json").string(), "--set", "mesh.tets_per_grain=300"}, 2,
+       "mesh.tets_per_grain: only for 3D tessellations"},
+  };
+  for (const auto& c : refusals) test::check_refused(c, dir / "refused");
+}

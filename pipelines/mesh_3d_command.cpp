@@ -1,0 +1,119 @@
+#include "pipelines/mesh_3d_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "common/format.hpp"
+#include "export/picture.hpp"
+#include "export/section.hpp"
+#include "export/vtu.hpp"
+#include "pipelines/output_dir.hpp"
+#include "pipelines/report.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// Far too many tetrahedra is a slip (a unit, a digit): refused before any work is done.
+constexpr double kMaxTets = 2e7;
+
+}  // namespace
+
+Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
+  for (const char* key : {"mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
+                          "mesh.grading", "mesh.seed", "mesh.max_iterations"})
+    if (c.has(key)) c.fail(key, "not available for 3D meshes (mesh.size or mesh.tets_per_grain, mesh.threads)");
+  for (const std::string& name : c.names_in("phase"))
+    if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
+  Mesh3Job job;
+  GrainMesh3Options& o = job.options;
+  if (c.has("mesh.size") && c.has("mesh.h")) c.fail("mesh.h", "give either mesh.size or mesh.h, not both");
+  const std::string size_key = c.has("mesh.h") ? "mesh.h" : "mesh.size";
+  if (c.has(size_key) && c.has("mesh.tets_per_grain"))
+    c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
+  const double box = t.width * t.height * t.depth;
+  // The regular tetrahedron of edge h has volume h^3 / (6 sqrt 2).
+  if (c.has(size_key)) {
+    o.size = c.number(size_key);
+    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
+  } else {
+    const double n = c.number("mesh.tets_per_grain", 500.0);
+    if (!(n >= 10.0 && n <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
+    const double tet = box / std::max<std::size_t>(1, t.grains.size()) / n;
+    o.size = std::cbrt(6.0 * std::sqrt(2.0) * tet);
+  }
+  const double tets = box / (o.size * o.size * o.size / (6.0 * std::sqrt(2.0)));
+  if (tets > kMaxTets)
+    c.fail(c.has(size_key) ? size_key : "mesh.tets_per_grain",
+           "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");
+  const long long threads = c.integer("mesh.threads", 0);
+  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
+  o.threads = static_cast<int>(threads);
+  const long long width = c.integer("output.picture_width", job.picture_width);
+  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  job.picture_width = static_cast<int>(width);
+  job.section = c.number("output.section", job.section);
+  if (!(job.section > 0.0 && job.section < 1.0))
+    c.fail("output.section", "must lie in (0, 1) (a fraction of the depth), got " + c.text("output.section"));
+  o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
+  return job;
+}
+
+void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
+                         const std::filesystem::path& out) {
+  const Mesh3Job job = read_mesh_3d_job(c, t);
+  const GrainMesh3 m = mesh_tessellation_3d(t, job.options);
+  check_conformity(t, m);
+  const TetQuality q = measure_quality(m.mesh);
+  std::vector<double> quality;
+  for (const auto& tet : m.mesh.tets)
+    quality.push_back(radius_ratio(m.mesh.points[tet[0]], m.mesh.points[tet[1]], m.mesh.points[tet[2]], m.mesh.points[tet[3]]));
+  Warnings warnings;
+  if (q.min_dihedral_deg < 5.0)
+    warnings.add("mesh: the smallest dihedral angle is " + to_text(q.min_dihedral_deg, 3) + " degrees (" +
+                 to_text(100.0 * q.share_dihedral_below_10, 2) +
+                 " % of the tetrahedra have one below 10): short edges and sharp wedges of the tessellation cause it");
+
+  StagedOutput staged(out, "mesh");
+  std::vector<std::string> names;
+  for (const Phase& p : t.phases) names.push_back(p.name);
+  write_tet_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", &m.grain}, {"phase", &m.phase}, {"region", &m.region}},
+                {{"quality", &quality}}, {{"phase_names", names}});
+  const Section section = mesh_section(m.mesh, m.grain, m.phase, job.section * t.depth);
+  write_mesh_png(staged.dir() / "mesh.png", section.cells,
+                 {.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain, .legend = names,
+                  .scale_bar = true});
+  const double per_grain = static_cast<double>(m.mesh.tets.size()) / static_cast<double>(t.grains.size());
+  Json report;
+  report["tessellation"] = tessellation.string();
+  report["mesh"] = {{"points", m.mesh.points.size()},
+                    {"cells", m.mesh.tets.size()},
+                    {"q_min", q.q_min},
+                    {"q_mean", q.q_mean},
+                    {"min_dihedral_deg", q.min_dihedral_deg},
+                    {"max_dihedral_deg", q.max_dihedral_deg},
+                    {"share_dihedral_below_10", q.share_dihedral_below_10},
+                    {"cells_per_grain_mean", per_grain}};
+  report["grains"] = t.grains.size();
+  report["regions"] = t.regions.size();
+  report["size"] = job.options.size;
+  report["surface_points"] = m.surface_points;
+  report["surface_triangles"] = m.surface_triangles;
+  report["pairs"] = {{"x", m.pairs.axis[0].size()}, {"y", m.pairs.axis[1].size()}, {"z", m.pairs.axis[2].size()}};
+  report["conforming"] = true;  // check_conformity passed, or nothing was written
+  report["threads"] = job.options.threads;
+  report["section_z"] = job.section * t.depth;
+  report["surface_seconds"] = m.surface_seconds;
+  report["fill_seconds"] = m.fill_seconds;
+  report["seconds"] = m.seconds;
+  add_time_limit(report, job.options.deadline);
+  report["peak_memory_mib"] = peak_memory_mib();
+  write_report(staged, report, warnings);
+  staged.commit();
+  std::printf("grainmesh mesh: 3D, %zu points, %zu tetrahedra (%.0f per grain), q_min %.3f, q_mean %.3f, smallest "
+              "dihedral %.1f deg, conforming (%.2f s)\n  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n",
+              m.mesh.points.size(), m.mesh.tets.size(), per_grain, q.q_min, q.q_mean, q.min_dihedral_deg, m.seconds,
+              out.string().c_str(), job.section * t.depth);
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,27 @@
+// `grainmesh mesh TESSELLATION.json -o OUT` for a 3D tessellation (version 2): OUT/
+// mesh.vtu (VTK tetrahedra with grain, phase, region and quality), mesh.png (a section)
+// and report.json (last) with the mesh's size, quality and seconds per stage.
+#pragma once
+
+#include <filesystem>
+
+#include "grains3d/grain_mesh_3d.hpp"
+#include "pipelines/config.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+struct Mesh3Job {
+  GrainMesh3Options options;
+  int picture_width = 1200;  // pixels
+  double section = 0.5;      // mesh.png: the section's height, a fraction of the depth
+};
+
+// Reads and checks the mesh keys for a 3D tessellation: mesh.size (or mesh.h) or
+// mesh.tets_per_grain (default 500), mesh.threads; the 2D-only keys refused by name.
+Mesh3Job read_mesh_3d_job(const Config& config, const Tessellation3& t);
+
+void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& config,
+                         const std::filesystem::path& out);
+
+}  // namespace grainmesh
