@@ -1,9 +1,14 @@
 // make bench: 3D cells of 100 and 1,000 Lloyd-relaxed periodic grains meshed at about 500
 // tetrahedra per grain, each run in a fresh child process: seconds per stage (tessellate,
 // surfaces, TetGen filling on all cores), peak memory, and the quality (radius ratio,
-// dihedral angles; of the tetrahedra touching a grain surface and of the others apart).
+// dihedral angles; of the tetrahedra touching a grain surface and of the others apart),
+// against Gmsh meshing the same polyhedra from a written .geo (one volume per region,
+// shared surfaces; Gmsh's 3D Delaunay with its optimiser, 2 threads).
 // Prints a table and writes bench/results.json ("mesh3d").
+#include <array>
 #include <chrono>
+#include <fstream>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +16,7 @@
 #include <vector>
 
 #include "bench/child.hpp"
+#include "bench/peers.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
@@ -25,20 +31,85 @@ struct Case {
   double limit_seconds;  // the goal, 0 = none
 };
 
-Json measure(const Case& c) {
+Tessellation3Options cell_options(const Case& c) {
   Tessellation3Options o;
   o.width = o.height = o.depth = std::cbrt(static_cast<double>(c.grains)) * 0.5;  // grains of about 0.6 diameter
   o.grains = c.grains;
   o.lloyd_iterations = 5;
   o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.15, false, 211e9, 0.31, {}}};
+  return o;
+}
+
+// The element edge for `per_grain` regular tetrahedra per grain.
+double element_size(const Tessellation3& t, double per_grain) {
+  const double v = t.width * t.height * t.depth / static_cast<double>(t.grains.size()) / per_grain;
+  return std::cbrt(6.0 * std::sqrt(2.0) * v);
+}
+
+Json quality_json(const TetMesh& m, double grains) {
+  const TetQuality q = measure_quality(m);
+  return {{"points", m.points.size()},
+          {"cells", m.tets.size()},
+          {"cells_per_grain_mean", static_cast<double>(m.tets.size()) / grains},
+          {"q_min", q.q_min},
+          {"q_mean", q.q_mean},
+          {"min_dihedral_deg", q.min_dihedral_deg},
+          {"share_dihedral_below_10", q.share_dihedral_below_10}};
+}
+
+// The same polyhedra as a Gmsh .geo: a point per vertex, a line per edge, a plane surface
+// per face, a volume per region (its faces shared with its neighbours), meshed at edge h
+// by Gmsh's 3D Delaunay with its optimiser.
+void write_geo(const std::filesystem::path& file, const Tessellation3& t, double h) {
+  std::ofstream out(file);
+  out.precision(17);
+  for (std::size_t v = 0; v < t.vertices.size(); ++v)
+    out << "Point(" << v + 1 << ") = {" << t.vertices[v].x << ", " << t.vertices[v].y << ", " << t.vertices[v].z << ", " << h << "};\n";
+  std::map<std::pair<int, int>, int> line;
+  for (std::size_t f = 0; f < t.faces.size(); ++f) {
+    const auto& ring = t.faces[f].ring;
+    std::string loop;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const int a = ring[k], b = ring[(k + 1) % ring.size()];
+      const auto [it, added] = line.emplace(std::minmax(a, b), static_cast<int>(line.size()) + 1);
+      if (added) out << "Line(" << it->second << ") = {" << std::min(a, b) + 1 << ", " << std::max(a, b) + 1 << "};\n";
+      loop += (loop.empty() ? "" : ", ") + std::to_string(a < b ? it->second : -it->second);
+    }
+    out << "Curve Loop(" << f + 1 << ") = {" << loop << "};\nPlane Surface(" << f + 1 << ") = {" << f + 1 << "};\n";
+  }
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    std::string loop;
+    for (int f : t.regions[r].faces) loop += (loop.empty() ? "" : ", ") + std::to_string(f + 1);
+    out << "Surface Loop(" << r + 1 << ") = {" << loop << "};\nVolume(" << r + 1 << ") = {" << r + 1 << "};\n";
+  }
+  out << "Mesh.CharacteristicLengthMax = " << h << ";\nMesh.Optimize = 1;\n";
+}
+
+// Gmsh meshing the cell's polyhedra (write_geo), timed as a program, its tetrahedra
+// measured by our measures.
+Json gmsh_peer(const Case& c, const std::filesystem::path& scratch) {
+  Tessellation3Options o = cell_options(c);
+  Rng rng(1);
+  const Tessellation3 t = tessellate_3d(o, rng);
+  const double h = element_size(t, c.per_grain);
+  const auto geo = scratch / "cell.geo", msh = scratch / "cell.msh";
+  write_geo(geo, t, h);
+  const ProcessRun r = run_process({"gmsh", geo.string(), "-3", "-nt", "2", "-format", "msh2", "-o", msh.string()},
+                                   scratch / "gmsh.log");
+  if (r.exit_code != 0) return {{"error", "gmsh failed (exit " + std::to_string(r.exit_code) + ")"}};
+  Json j{{"seconds", r.seconds}, {"peak_memory_mib", r.peak_mib}};
+  j.update(quality_json(read_msh2_tets(msh), static_cast<double>(t.grains.size())));
+  return j;
+}
+
+Json measure(const Case& c) {
+  Tessellation3Options o = cell_options(c);
   Rng rng(1);
   const auto start = std::chrono::steady_clock::now();
   const Tessellation3 t = tessellate_3d(o, rng);
   const double tessellate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double v = o.width * o.height * o.depth / static_cast<double>(t.grains.size()) / c.per_grain;
-  const GrainMesh3 m = mesh_tessellation_3d(t, {.size = std::cbrt(6.0 * std::sqrt(2.0) * v)});
+  const GrainMesh3 m = mesh_tessellation_3d(t, {.size = element_size(t, c.per_grain)});
   check_conformity(t, m);
-  const TetQuality q = measure_quality(m.mesh);
   // The same measures over the tetrahedra with a point on a surface, and the rest.
   TetMesh surface, inner;
   surface.points = inner.points = m.mesh.points;
@@ -48,29 +119,26 @@ Json measure(const Case& c) {
     (touches ? surface : inner).tets.push_back(tet);
   }
   const TetQuality qs = measure_quality(surface), qi = measure_quality(inner);
-  return {{"seconds", tessellate_seconds + m.seconds},
-          {"tessellate_seconds", tessellate_seconds},
-          {"surface_seconds", m.surface_seconds},
-          {"fill_seconds", m.fill_seconds},
-          {"grains", t.grains.size()},
-          {"points", m.mesh.points.size()},
-          {"cells", m.mesh.tets.size()},
-          {"cells_per_grain_mean", static_cast<double>(m.mesh.tets.size()) / static_cast<double>(t.grains.size())},
-          {"q_min", q.q_min},
-          {"q_mean", q.q_mean},
-          {"min_dihedral_deg", q.min_dihedral_deg},
-          {"share_dihedral_below_10", q.share_dihedral_below_10},
-          {"surface_tets_q_mean", qs.q_mean},
+  Json j{{"seconds", tessellate_seconds + m.seconds},
+         {"tessellate_seconds", tessellate_seconds},
+         {"surface_seconds", m.surface_seconds},
+         {"fill_seconds", m.fill_seconds},
+         {"grains", t.grains.size()}};
+  j.update(quality_json(m.mesh, static_cast<double>(t.grains.size())));
+  j.update(Json{{"surface_tets_q_mean", qs.q_mean},
           {"surface_tets_min_dihedral_deg", qs.min_dihedral_deg},
           {"inner_tets_q_mean", qi.q_mean},
           {"inner_tets_min_dihedral_deg", qi.min_dihedral_deg},
-          {"tessellation_sharpest_dihedral_deg", t.stats.sharpest_dihedral_deg}};
+          {"tessellation_sharpest_dihedral_deg", t.stats.sharpest_dihedral_deg}});
+  return j;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::filesystem::path source = argc > 1 ? argv[1] : ".";
+  const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("grainmesh-bench-mesh3d-" + std::to_string(getpid()));
+  std::filesystem::create_directories(scratch);
   const std::vector<Case> cases{
       {"100 grains, 500 tets/grain", 100, 500, 0},
       {"1000 grains, 500 tets/grain", 1000, 500, 60},
@@ -94,11 +162,24 @@ int main(int argc, char** argv) {
                 row["surface_tets_q_mean"].get<double>(), row["surface_tets_min_dihedral_deg"].get<double>(),
                 row["inner_tets_q_mean"].get<double>(), row["inner_tets_min_dihedral_deg"].get<double>());
     std::fflush(stdout);
+    const Json gmsh = gmsh_version(scratch).empty() ? Json{{"error", "gmsh is not installed (make bench installs it)"}}
+                                                     : gmsh_peer(c, scratch);
+    if (gmsh.contains("error")) {
+      std::printf("%-30s gmsh: %s\n", "", gmsh["error"].get<std::string>().c_str());
+    } else {
+      std::printf("%-30s Gmsh (.geo, same polyhedra): %.2f s, %zu cells, q_mean %.3f, q_min %.3f, min dihedral %.2f, "
+                  "<10 deg %.4f, %.1f MiB\n", "", gmsh["seconds"].get<double>(), gmsh["cells"].get<std::size_t>(),
+                  gmsh["q_mean"].get<double>(), gmsh["q_min"].get<double>(), gmsh["min_dihedral_deg"].get<double>(),
+                  gmsh["share_dihedral_below_10"].get<double>(), gmsh["peak_memory_mib"].get<double>());
+    }
+    std::fflush(stdout);
     Json labelled{{"case", c.name}};
     labelled.update(row);
+    labelled["gmsh"] = gmsh;
     if (c.limit_seconds > 0) labelled["limit_seconds"] = c.limit_seconds;
     results.push_back(labelled);
   }
+  std::filesystem::remove_all(scratch);
   write_results(source / "bench" / "results.json", "mesh3d",
                 "one run each in a fresh process; TetGen on all cores", results);
   return 0;

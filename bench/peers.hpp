@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bench/child.hpp"
+#include "mesh/tetmesh.hpp"
 
 namespace grainmesh {
 
@@ -96,6 +97,48 @@ inline TriMesh read_msh2(const std::filesystem::path& file) {
     }
   }
   if (m.triangles.empty()) throw std::runtime_error(file.string() + " holds no triangles");
+  return m;
+}
+
+// The tetrahedra of a Gmsh 2.2 ASCII .msh file (element type 4), points renumbered from
+// 0 and tetrahedra turned positive.
+inline TetMesh read_msh2_tets(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  TetMesh m;
+  std::map<long, int> index;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line == "$Nodes") {
+      long n = 0;
+      in >> n;
+      for (long k = 0; k < n; ++k) {
+        long id;
+        double x, y, z;
+        in >> id >> x >> y >> z;
+        index[id] = static_cast<int>(m.points.size());
+        m.points.push_back({x, y, z});
+      }
+    } else if (line == "$Elements") {
+      long n = 0;
+      in >> n;
+      std::getline(in, line);
+      for (long k = 0; k < n; ++k) {
+        std::getline(in, line);
+        std::istringstream e(line);
+        long id, type, ntags;
+        e >> id >> type >> ntags;
+        for (long t = 0; t < ntags; ++t) e >> id;
+        if (type != 4) continue;
+        long a, b, c, d;
+        e >> a >> b >> c >> d;
+        std::array<int, 4> t{index.at(a), index.at(b), index.at(c), index.at(d)};
+        if (tet_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) < 0.0) std::swap(t[2], t[3]);
+        m.tets.push_back(t);
+      }
+    }
+  }
+  if (m.tets.empty()) throw std::runtime_error(file.string() + " holds no tetrahedra");
   return m;
 }
 

@@ -20,7 +20,7 @@ packages=(
   clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
 )
 if [[ "${1:-}" == "--bench" ]]; then
-  packages+=(gmsh)                      # make bench's peer mesher
+  packages+=(gmsh)                      # make bench's peer mesher (2D and 3D)
 fi
 
 missing=()
