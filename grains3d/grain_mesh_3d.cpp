@@ -16,6 +16,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/process.hpp"
+#include "grains3d/smooth_interior.hpp"
 #include "grains3d/surface_mesh.hpp"
 
 namespace grainmesh {
@@ -110,15 +111,27 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
   const auto eles = read_table(dir / (name + ".1.ele"));
   if (nodes.empty() || eles.empty() || nodes.size() - 1 < global.size())
     throw GeometryError("TetGen's output for region " + std::to_string(r) + " is incomplete");
-  RegionTets out;
-  for (std::size_t k = 1 + global.size(); k < nodes.size(); ++k) out.interior.push_back({nodes[k][1], nodes[k][2], nodes[k][3]});
+  // The region's points and tetrahedra in TetGen's numbering (its first points are the
+  // surface's, in the order given), positive; the inner points smoothed.
+  const int nb = static_cast<int>(global.size());
+  std::vector<Vec3> local_points;
+  for (int k = 0; k < nb; ++k) local_points.push_back(points[global[k]]);
+  for (std::size_t k = 1 + global.size(); k < nodes.size(); ++k) local_points.push_back({nodes[k][1], nodes[k][2], nodes[k][3]});
+  std::vector<std::array<int, 4>> local_tets;
   for (std::size_t k = 1; k < eles.size(); ++k) {
     std::array<int, 4> tet{};
-    for (int c = 0; c < 4; ++c) {
-      const int v = static_cast<int>(eles[k][1 + c]);
-      tet[c] = v < static_cast<int>(global.size()) ? global[v] : -1 - (v - static_cast<int>(global.size()));
-    }
-    out.tets.push_back(tet);
+    for (int c = 0; c < 4; ++c) tet[c] = static_cast<int>(eles[k][1 + c]);
+    const auto& p = local_points;
+    if (tet_volume(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
+    local_tets.push_back(tet);
+  }
+  smooth_free_points(local_points, local_tets, nb, o.smoothing_passes);
+  RegionTets out;
+  out.interior.assign(local_points.begin() + nb, local_points.end());
+  for (const auto& tet : local_tets) {
+    std::array<int, 4> mapped{};
+    for (int c = 0; c < 4; ++c) mapped[c] = tet[c] < nb ? global[tet[c]] : -1 - (tet[c] - nb);
+    out.tets.push_back(mapped);
   }
   std::error_code ignored;
   for (const char* ext : {".smesh", ".1.node", ".1.ele", ".1.face", ".1.edge", ".log"})

@@ -19,6 +19,7 @@ struct GrainMesh3Options {
   // volume bound is the regular tetrahedron of edge `size`.
   double radius_edge = 1.3;
   double min_dihedral_deg = 15.0;
+  int smoothing_passes = 5;        // smooth_interior.hpp, on each region's inner points
   Deadline deadline{};
 };
 
