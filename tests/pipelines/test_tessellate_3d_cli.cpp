@@ -63,11 +63,6 @@ TEST_CASE("a 3D tessellation.json reads back to the same bytes, and a seed gives
   REQUIRE(run_grainmesh({"tessellate", test::example("grains_wc_co").string(), "-o", (dir / "two").string()}).exit_code == 0);
   CHECK_THROWS_WITH(tessellation_3d_from_json(test::read_file(dir / "two" / "tessellation.json"), "two"),
                     Catch::Contains("a 2D tessellation (version 1)"));
-  // grainmesh mesh does not take it yet, and says so naming the file.
-  const auto r = run_grainmesh({"mesh", (dir / "a" / "tessellation.json").string(), "-o", (dir / "mesh").string()});
-  CHECK(r.exit_code != 0);
-  CHECK(r.err.find("a 3D tessellation (version 2)") != std::string::npos);
-  CHECK_FALSE(fs::exists(dir / "mesh"));
 }
 
 TEST_CASE("bad 3D tessellation input gives one line naming the key and no output", "[cli][tessellate3d]") {
