@@ -6,19 +6,36 @@
 
 namespace grainmesh {
 
-Section tessellation_section(const Tessellation3& t, double z) {
-  Section s;
-  std::map<std::pair<int, int>, int> point_of;  // (a, b) edge crossing, or (v, v) a vertex on the plane
-  auto point_id = [&](int a, int b) {
+namespace {
+
+// The points where the plane z = `z` cuts segments between 3D points, each made once and
+// numbered in `out`: a segment by its ends (a, b), a point on the plane as (v, v).
+class PlanePoints {
+ public:
+  PlanePoints(const std::vector<Vec3>& points, double z, std::vector<Vec2>& out) : points_(points), z_(z), out_(out) {}
+  int at(int a, int b) {
     const auto key = std::minmax(a, b);
-    const auto [it, added] = point_of.emplace(key, static_cast<int>(s.cells.points.size()));
+    const auto [it, added] = ids_.emplace(key, static_cast<int>(out_.size()));
     if (added) {
-      const Vec3 p = t.vertices[key.first], q = t.vertices[key.second];
-      const double u = key.first == key.second ? 0.0 : (z - p.z) / (q.z - p.z);
-      s.cells.points.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y)});
+      const Vec3 p = points_[key.first], q = points_[key.second];
+      const double u = key.first == key.second ? 0.0 : (z_ - p.z) / (q.z - p.z);
+      out_.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y)});
     }
     return it->second;
-  };
+  }
+
+ private:
+  const std::vector<Vec3>& points_;
+  double z_;
+  std::vector<Vec2>& out_;
+  std::map<std::pair<int, int>, int> ids_;
+};
+
+}  // namespace
+
+Section tessellation_section(const Tessellation3& t, double z) {
+  Section s;
+  PlanePoints plane(t.vertices, z, s.cells.points);
   for (const Region3& r : t.regions) {
     bool below = false, above = false;  // a region only touching the plane has no section
     for (int f : r.faces)
@@ -35,8 +52,8 @@ Section tessellation_section(const Tessellation3& t, double z) {
       for (std::size_t k = 0; k < v.size(); ++k) {
         const int a = v[k], b = v[(k + 1) % v.size()];
         const double da = t.vertices[a].z - z, db = t.vertices[b].z - z;
-        if (da == 0.0) cut.push_back(point_id(a, a));
-        else if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) cut.push_back(point_id(a, b));
+        if (da == 0.0) cut.push_back(plane.at(a, a));
+        else if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) cut.push_back(plane.at(a, b));
       }
       std::sort(cut.begin(), cut.end());
       cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
@@ -69,17 +86,7 @@ Section tessellation_section(const Tessellation3& t, double z) {
 
 Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z) {
   Section s;
-  std::map<std::pair<int, int>, int> point_of;  // as in tessellation_section
-  auto point_id = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    const auto [it, added] = point_of.emplace(key, static_cast<int>(s.cells.points.size()));
-    if (added) {
-      const Vec3 p = mesh.points[key.first], q = mesh.points[key.second];
-      const double u = key.first == key.second ? 0.0 : (z - p.z) / (q.z - p.z);
-      s.cells.points.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y)});
-    }
-    return it->second;
-  };
+  PlanePoints plane(mesh.points, z, s.cells.points);
   for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
     const auto& t = mesh.tets[k];
     bool below = false, above = false;
@@ -91,10 +98,10 @@ Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const s
     std::vector<int> ring;
     for (int i = 0; i < 4; ++i) {
       const double di = mesh.points[t[i]].z - z;
-      if (di == 0.0) ring.push_back(point_id(t[i], t[i]));
+      if (di == 0.0) ring.push_back(plane.at(t[i], t[i]));
       for (int j = i + 1; j < 4; ++j) {
         const double dj = mesh.points[t[j]].z - z;
-        if ((di < 0.0 && dj > 0.0) || (di > 0.0 && dj < 0.0)) ring.push_back(point_id(t[i], t[j]));
+        if ((di < 0.0 && dj > 0.0) || (di > 0.0 && dj < 0.0)) ring.push_back(plane.at(t[i], t[j]));
       }
     }
     if (ring.size() < 3) continue;

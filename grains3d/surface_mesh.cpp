@@ -15,21 +15,6 @@ namespace grainmesh {
 
 namespace {
 
-// The side of the box (axis, 0 low or 1 high) every vertex of `ring` lies on; axis -1 when none.
-std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& ring) {
-  const Vec3 box = t.size();
-  for (int a = 0; a < 3; ++a) {
-    bool low = true, high = true;
-    for (int id : ring) {
-      low = low && t.vertices[id][a] == 0.0;
-      high = high && t.vertices[id][a] == box[a];
-    }
-    if (low) return {a, 0};
-    if (high) return {a, 1};
-  }
-  return {-1, 0};
-}
-
 struct Edges {
   std::map<std::pair<int, int>, int> id;  // (min, max) vertex ids -> edge
   std::vector<std::pair<int, int>> ends;  // canonical direction: lexicographically smaller point first

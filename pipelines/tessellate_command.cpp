@@ -29,6 +29,23 @@ const std::vector<std::string>& tessellate_config_keys() {
   return keys;
 }
 
+DiagramSettings read_diagram_settings(const Config& c, double min_edge) {
+  DiagramSettings d;
+  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
+  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
+  d.lloyd_iterations = static_cast<int>(lloyd);
+  d.size_cv = c.number("tessellation.size_cv", 0.0);
+  if (!(d.size_cv >= 0.0 && d.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
+  d.min_edge = c.number("tessellation.min_edge", min_edge);
+  if (!(d.min_edge >= 0.0 && d.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
+  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
+  if (arr == "random") d.arrangement = Arrangement::random;
+  else if (arr == "dispersed") d.arrangement = Arrangement::dispersed;
+  else if (arr == "clustered") d.arrangement = Arrangement::clustered;
+  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
+  return d;
+}
+
 double positive(const Config& c, const std::string& key) {
   if (!c.has(key)) c.fail(key, "missing (required)");
   const double v = c.number(key);
@@ -164,8 +181,8 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 TessellateJob read_tessellate_job(const Config& c) {
   c.check_keys(tessellate_config_keys());
   if (c.has("domain.depth"))
-    c.fail("domain.depth", "3D cells are tessellated by grainmesh tessellate only so far; mesh, export and run take 2D "
-                           "configs (leave domain.depth out)");
+    c.fail("domain.depth", "3D cells go through grainmesh tessellate and grainmesh mesh only so far; run, sweep, "
+                           "converge and export take 2D configs (leave domain.depth out)");
   if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
   TessellateJob job;
   TessellationOptions& o = job.options;
@@ -174,22 +191,15 @@ TessellateJob read_tessellate_job(const Config& c) {
   o.periodic = c.flag("domain.periodic", true);
   read_grain_count(c, o);
   job.seed = c.unsigned_integer("tessellation.seed", 1);
-  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
-  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
-  o.lloyd_iterations = static_cast<int>(lloyd);
-  o.size_cv = c.number("tessellation.size_cv", 0.0);
-  if (!(o.size_cv >= 0.0 && o.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
-  o.min_edge = c.number("tessellation.min_edge", o.min_edge);
-  if (!(o.min_edge >= 0.0 && o.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
+  const DiagramSettings d = read_diagram_settings(c, o.min_edge);
+  o.lloyd_iterations = d.lloyd_iterations;
+  o.size_cv = d.size_cv;
+  o.min_edge = d.min_edge;
+  o.arrangement = d.arrangement;
   const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
   if (mode == "grain") o.phase_mode = PhaseMode::grain;
   else if (mode == "binder") o.phase_mode = PhaseMode::binder;
   else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
-  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
-  if (arr == "random") o.arrangement = Arrangement::random;
-  else if (arr == "dispersed") o.arrangement = Arrangement::dispersed;
-  else if (arr == "clustered") o.arrangement = Arrangement::clustered;
-  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
   o.phases = read_phases(c);
   read_matrix_phase(c, o);
   read_contiguity(c, o);

@@ -15,6 +15,10 @@ for name in grains_wc_co grains_binder; do
   cp "$tmp/${name}_mesh/mesh.png" "docs/images/${name}_mesh.png"
   cp "$tmp/${name}_mesh/mesh_detail.png" "docs/images/${name}_mesh_detail.png"
 done
+./build/grainmesh tessellate data/examples/grains_3d_wc_co.ini -o "$tmp/3d" --set output.picture_width=480 > /dev/null
+cp "$tmp/3d/tessellation.png" docs/images/grains_3d_wc_co.png
+./build/grainmesh mesh "$tmp/3d/tessellation.json" -o "$tmp/3d_mesh" --set output.picture_width=480 > /dev/null 2>&1
+cp "$tmp/3d_mesh/mesh.png" docs/images/grains_3d_wc_co_mesh.png
 ./build/grainmesh run -o "$tmp/run" --solve --set output.picture_width=800 > /dev/null
 cp "$tmp/run/stress_xx.png" docs/images/default_stress_xx.png
 cp "$tmp/run/stress_histogram.png" docs/images/default_stress_histogram.png

@@ -219,10 +219,7 @@ std::vector<double> phase_boundary_areas(const Tessellation3& t) {
   for (int a = 0; a < 3; ++a) {
     std::map<int, int> image(t.partners.axis[a].begin(), t.partners.axis[a].end());
     for (const Face3& face : t.faces) {
-      if (face.front >= 0 || t.vertices[face.ring[0]][a] != 0.0) continue;
-      bool on_side = true;
-      for (int id : face.ring) on_side = on_side && t.vertices[id][a] == 0.0;
-      if (!on_side) continue;
+      if (face.front >= 0 || box_side(t, face.ring) != std::pair{a, 0}) continue;
       std::vector<int> key;
       for (int id : face.ring) key.push_back(image.at(id));
       std::sort(key.begin(), key.end());

@@ -122,6 +122,10 @@ inline double interior_dihedral(Vec3 n_a, Vec3 n_b, Vec3 off_b, Vec3 on_edge) {
   return dot(n_a, off_b - on_edge) <= 0.0 ? pi - between : pi + between;
 }
 
+// The side of the box every vertex of `ring` lies on, as {axis, 0 low or 1 high}; axis -1
+// when there is none. Exact: vertices on a side carry its coordinate.
+std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& ring);
+
 // Volume of a region (its faces as stored) and area of a face.
 double region_volume(const Tessellation3& t, const Region3& r);
 double face_area(const Tessellation3& t, const Face3& f);

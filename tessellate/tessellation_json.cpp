@@ -104,6 +104,28 @@ std::vector<std::pair<int, int>> read_pairs(const Json& j) {
   return pairs;
 }
 
+// Parses a tessellation.json, its format and version checked: `version` (1: 2D, 2: 3D)
+// wanted, the other one named. Then `read` fills the result; every error, the JSON
+// library's too, becomes one GeometryError starting with `source`.
+template <typename T, typename Read>
+T read_tessellation(const std::string& text, const std::string& source, int version, Read read) {
+  try {
+    const Json j = Json::parse(text);
+    if (j.value("format", "") != "grainmesh-tessellation")
+      throw GeometryError("not a grainmesh tessellation (format key)");
+    const int found = read_int(j.at("version"));
+    if (found == 3 - version)
+      throw GeometryError(version == 1 ? "a 3D tessellation (version 2), where a 2D one is needed"
+                                       : "a 2D tessellation (version 1), where a 3D one is needed");
+    if (found != version) throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
+    return read(j);
+  } catch (const nlohmann::json::exception& e) {
+    throw GeometryError(source + ": not a tessellation.json of grainmesh tessellate: " + json_error_text(e));
+  } catch (const GeometryError& e) {
+    throw GeometryError(source + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 std::string tessellation_to_json(const Tessellation& t) {
@@ -146,14 +168,8 @@ Json descriptors_json(const Tessellation& t) {
 }
 
 Tessellation tessellation_from_json(const std::string& text, const std::string& source) {
-  Tessellation t;
-  try {
-    const Json j = Json::parse(text);
-    if (j.value("format", "") != "grainmesh-tessellation")
-      throw GeometryError("not a grainmesh tessellation (format key)");
-    const int version = read_int(j.at("version"));
-    if (version == 2) throw GeometryError("a 3D tessellation (version 2), where a 2D one is needed");
-    if (version != 1) throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
+  return read_tessellation<Tessellation>(text, source, 1, [](const Json& j) {
+    Tessellation t;
     const Json& d = j.at("domain");
     t.width = d.at("width").get<double>();
     t.height = d.at("height").get<double>();
@@ -182,12 +198,8 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
     t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();
     t.stats.shortest_edge = s.at("shortest_edge").get<double>();
     validate(t);
-  } catch (const nlohmann::json::exception& e) {
-    throw GeometryError(source + ": not a tessellation.json of grainmesh tessellate: " + json_error_text(e));
-  } catch (const GeometryError& e) {
-    throw GeometryError(source + ": " + e.what());
-  }
-  return t;
+    return t;
+  });
 }
 
 nlohmann::ordered_json phases_json(const Tessellation& t) { return phases_json(t.phases, t.stats.phases); }
@@ -302,14 +314,8 @@ Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phas
 }  // namespace
 
 Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source) {
-  Tessellation3 t;
-  try {
-    const Json j = Json::parse(text);
-    if (j.value("format", "") != "grainmesh-tessellation")
-      throw GeometryError("not a grainmesh tessellation (format key)");
-    const int version = read_int(j.at("version"));
-    if (version == 1) throw GeometryError("a 2D tessellation (version 1), where a 3D one is needed");
-    if (version != 2) throw GeometryError("tessellation version " + j.at("version").dump() + " is not supported");
+  return read_tessellation<Tessellation3>(text, source, 2, [](const Json& j) {
+    Tessellation3 t;
     const Json& d = j.at("domain");
     t.width = d.at("width").get<double>();
     t.height = d.at("height").get<double>();
@@ -341,12 +347,8 @@ Tessellation3 tessellation_3d_from_json(const std::string& text, const std::stri
           throw GeometryError("a partner id is out of range");
     t.stats = read_statistics(j.at("statistics"), t.phases);
     validate(t);
-  } catch (const nlohmann::json::exception& e) {
-    throw GeometryError(source + ": not a tessellation.json of grainmesh tessellate: " + json_error_text(e));
-  } catch (const GeometryError& e) {
-    throw GeometryError(source + ": " + e.what());
-  }
-  return t;
+    return t;
+  });
 }
 
 }  // namespace grainmesh

@@ -13,8 +13,9 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw GeometryError("3D tessellation invalid: " + what); }
 
-// The side of the box (axis) every vertex of `ring` lies on, or -1.
-int box_axis(const Tessellation3& t, const std::vector<int>& ring) {
+}  // namespace
+
+std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& ring) {
   const Vec3 box = t.size();
   for (int a = 0; a < 3; ++a) {
     bool low = true, high = true;
@@ -22,12 +23,11 @@ int box_axis(const Tessellation3& t, const std::vector<int>& ring) {
       low = low && t.vertices[id][a] == 0.0;
       high = high && t.vertices[id][a] == box[a];
     }
-    if (low || high) return a;
+    if (low) return {a, 0};
+    if (high) return {a, 1};
   }
-  return -1;
+  return {-1, 0};
 }
-
-}  // namespace
 
 void validate(const Tessellation3& t) {
   const int nr = static_cast<int>(t.regions.size());
@@ -40,7 +40,7 @@ void validate(const Tessellation3& t) {
       if (id < 0 || id >= nv) fail(name + " has a vertex id out of range");
     if (face.back < 0 || face.back >= nr || face.front >= nr || face.front == face.back)
       fail(name + " does not lie between two regions");
-    if (face.front < 0 && box_axis(t, face.ring) < 0) fail(name + " bounds one region only but is not on the box");
+    if (face.front < 0 && box_side(t, face.ring).first < 0) fail(name + " bounds one region only but is not on the box");
   }
   double total = 0.0;
   std::vector<double> grain_volume(t.grains.size(), 0.0);

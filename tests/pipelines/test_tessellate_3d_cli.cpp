@@ -85,7 +85,7 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
       {"tessellate", three, {"tessellation.grains=10", "phase.Co.fraction=0.01"}, "phase.Co.fraction: a fraction of 0.01 gives the phase none of the 10 grains"},
       {"tessellate", three, {"output.section=1"}, "output.section: must lie in (0, 1)"},
       {"tessellate", two, {"output.section=0.5"}, "output.section: only for 3D cells (with domain.depth)"},
-      {"run", three, {}, "domain.depth: 3D cells are tessellated by grainmesh tessellate only so far"},
+      {"run", three, {}, "domain.depth: 3D cells go through grainmesh tessellate and grainmesh mesh only so far"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{c.command, c.config, "-o", (dir / "out").string()};
