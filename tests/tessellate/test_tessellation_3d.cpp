@@ -242,12 +242,14 @@ TEST_CASE("3D: 1,000 periodic grains with Laguerre sizes and Lloyd steps stay va
   require_face_partners(t);
   require_symmetric_neighbours(t);
   for (const PhaseStats& p : t.stats.phases) REQUIRE(std::abs(p.achieved_fraction - p.target_fraction) <= 0.01);
+#ifndef GRAINMESH_SANITIZED  // statistics, not memory or UB: the release build checks them (40 s under ASan)
   // Lloyd-relaxed Voronoi cells have about 14 faces (Kelvin's 14, Poisson's 15.5).
   Tessellation3Options v = options(1000, true);
   v.lloyd_iterations = 10;
   const Tessellation3 relaxed = make(v, 7);
   REQUIRE(relaxed.stats.faces_per_grain_mean == Approx(14.2).margin(0.8));
   REQUIRE(relaxed.stats.volume_std / relaxed.stats.volume_mean < 0.2);
+#endif
 }
 
 TEST_CASE("3D: Lloyd's steps even out the volumes, and a seed gives the same cell twice", "[tessellate3d]") {
