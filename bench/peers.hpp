@@ -58,13 +58,12 @@ inline ProcessRun run_process(const std::vector<std::string>& argv, const std::f
   return r;
 }
 
-// The triangles of a Gmsh 2.2 ASCII .msh file (element type 2), points renumbered from 0
-// and triangles turned counter-clockwise.
-inline TriMesh read_msh2(const std::filesystem::path& file) {
+// Reads a Gmsh 2.2 ASCII .msh file: each node to node(id, x, y, z), each element of
+// `type` (2 triangle, 4 tetrahedron) with `corners` nodes to element(node ids).
+template <typename Node, typename Element>
+void read_msh2(const std::filesystem::path& file, int type, int corners, Node node, Element element) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot read " + file.string());
-  TriMesh m;
-  std::map<long, int> index;
   std::string line;
   while (std::getline(in, line)) {
     if (line == "$Nodes") {
@@ -74,8 +73,7 @@ inline TriMesh read_msh2(const std::filesystem::path& file) {
         long id;
         double x, y, z;
         in >> id >> x >> y >> z;
-        index[id] = static_cast<int>(m.points.size());
-        m.points.push_back({x, y});
+        node(id, x, y, z);
       }
     } else if (line == "$Elements") {
       long n = 0;
@@ -84,60 +82,54 @@ inline TriMesh read_msh2(const std::filesystem::path& file) {
       for (long k = 0; k < n; ++k) {
         std::getline(in, line);
         std::istringstream e(line);
-        long id, type, ntags;
-        e >> id >> type >> ntags;
-        for (long t = 0; t < ntags; ++t) e >> id;
-        if (type != 2) continue;
-        long a, b, c;
-        e >> a >> b >> c;
-        std::array<int, 3> t{index.at(a), index.at(b), index.at(c)};
-        if (signed_area2(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < 0.0) std::swap(t[1], t[2]);
-        m.triangles.push_back(t);
+        long id, t, ntags;
+        e >> id >> t >> ntags;
+        for (long g = 0; g < ntags; ++g) e >> id;
+        if (t != type) continue;
+        std::vector<long> ids(corners);
+        for (long& v : ids) e >> v;
+        element(ids);
       }
     }
   }
+}
+
+// The triangles of a Gmsh 2.2 .msh file, points renumbered from 0 and triangles turned
+// counter-clockwise.
+inline TriMesh read_msh2(const std::filesystem::path& file) {
+  TriMesh m;
+  std::map<long, int> index;
+  read_msh2(
+      file, 2, 3,
+      [&](long id, double x, double y, double) {
+        index[id] = static_cast<int>(m.points.size());
+        m.points.push_back({x, y});
+      },
+      [&](const std::vector<long>& v) {
+        std::array<int, 3> t{index.at(v[0]), index.at(v[1]), index.at(v[2])};
+        if (signed_area2(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < 0.0) std::swap(t[1], t[2]);
+        m.triangles.push_back(t);
+      });
   if (m.triangles.empty()) throw std::runtime_error(file.string() + " holds no triangles");
   return m;
 }
 
-// The tetrahedra of a Gmsh 2.2 ASCII .msh file (element type 4), points renumbered from
-// 0 and tetrahedra turned positive.
+// The tetrahedra of a Gmsh 2.2 .msh file, points renumbered from 0 and tetrahedra turned
+// positive.
 inline TetMesh read_msh2_tets(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
   TetMesh m;
   std::map<long, int> index;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line == "$Nodes") {
-      long n = 0;
-      in >> n;
-      for (long k = 0; k < n; ++k) {
-        long id;
-        double x, y, z;
-        in >> id >> x >> y >> z;
+  read_msh2(
+      file, 4, 4,
+      [&](long id, double x, double y, double z) {
         index[id] = static_cast<int>(m.points.size());
         m.points.push_back({x, y, z});
-      }
-    } else if (line == "$Elements") {
-      long n = 0;
-      in >> n;
-      std::getline(in, line);
-      for (long k = 0; k < n; ++k) {
-        std::getline(in, line);
-        std::istringstream e(line);
-        long id, type, ntags;
-        e >> id >> type >> ntags;
-        for (long t = 0; t < ntags; ++t) e >> id;
-        if (type != 4) continue;
-        long a, b, c, d;
-        e >> a >> b >> c >> d;
-        std::array<int, 4> t{index.at(a), index.at(b), index.at(c), index.at(d)};
+      },
+      [&](const std::vector<long>& v) {
+        std::array<int, 4> t{index.at(v[0]), index.at(v[1]), index.at(v[2]), index.at(v[3])};
         if (tet_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) < 0.0) std::swap(t[2], t[3]);
         m.tets.push_back(t);
-      }
-    }
-  }
+      });
   if (m.tets.empty()) throw std::runtime_error(file.string() + " holds no tetrahedra");
   return m;
 }
