@@ -43,7 +43,7 @@ Tessellation3Options cell_options(const Case& c) {
 // The element edge for `per_grain` regular tetrahedra per grain.
 double element_size(const Tessellation3& t, double per_grain) {
   const double v = t.width * t.height * t.depth / static_cast<double>(t.grains.size()) / per_grain;
-  return std::cbrt(6.0 * std::sqrt(2.0) * v);
+  return regular_tet_edge(v);
 }
 
 Json quality_json(const TetMesh& m, double grains) {

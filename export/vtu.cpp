@@ -67,6 +67,19 @@ void write_xml(const std::filesystem::path& file, D* data, const char* kind, Com
     throw IoError(file.string() + ": cannot write " + kind + " file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
 
+// Adds `values` (one per cell of `cells`) to the grid as cell array `name`. Throws IoError
+// when there are not that many.
+template <typename Array, typename T>
+void add_cell_array(vtkUnstructuredGrid* grid, const std::filesystem::path& file, const std::string& name,
+                    const std::vector<T>& values, std::size_t cells) {
+  if (values.size() != cells) throw IoError(file.string() + ": cell array " + name + " is not one value per cell");
+  vtkNew<Array> a;
+  a->SetName(name.c_str());
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (std::size_t k = 0; k < values.size(); ++k) a->SetValue(static_cast<vtkIdType>(k), values[k]);
+  grid->GetCellData()->AddArray(a);
+}
+
 // write_vtu, for triangles and for cells.
 template <typename Mesh>
 void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::vector<CellField>& fields,
@@ -189,22 +202,8 @@ void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
     const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
     grid->InsertNextCell(VTK_TETRA, 4, ids);
   }
-  for (const auto& [name, values] : ints) {
-    if (values->size() != mesh.tets.size()) throw IoError(file.string() + ": cell array " + name + " is not one per tetrahedron");
-    vtkNew<vtkIntArray> a;
-    a->SetName(name.c_str());
-    a->SetNumberOfTuples(static_cast<vtkIdType>(values->size()));
-    for (std::size_t k = 0; k < values->size(); ++k) a->SetValue(static_cast<vtkIdType>(k), (*values)[k]);
-    grid->GetCellData()->AddArray(a);
-  }
-  for (const auto& [name, values] : reals) {
-    if (values->size() != mesh.tets.size()) throw IoError(file.string() + ": cell array " + name + " is not one per tetrahedron");
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name.c_str());
-    a->SetNumberOfTuples(static_cast<vtkIdType>(values->size()));
-    for (std::size_t k = 0; k < values->size(); ++k) a->SetValue(static_cast<vtkIdType>(k), (*values)[k]);
-    grid->GetCellData()->AddArray(a);
-  }
+  for (const auto& [name, values] : ints) add_cell_array<vtkIntArray>(grid, file, name, *values, mesh.tets.size());
+  for (const auto& [name, values] : reals) add_cell_array<vtkDoubleArray>(grid, file, name, *values, mesh.tets.size());
   for (const FieldLabels& l : labels) {
     vtkNew<vtkStringArray> names;
     names->SetName(l.name.c_str());
@@ -223,10 +222,7 @@ void write_tessellation_vtu(const std::filesystem::path& file, const Tessellatio
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
   grid->Allocate(static_cast<vtkIdType>(t.regions.size()));
-  vtkNew<vtkIntArray> grain, phase, region;
-  grain->SetName("grain");
-  phase->SetName("phase");
-  region->SetName("region");
+  std::vector<int> grain, phase, region;
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     std::vector<vtkIdType> ids, stream;  // the polyhedron's points; its faces as [n, ids...]
     for (int f : t.regions[r].faces) {
@@ -241,11 +237,12 @@ void write_tessellation_vtu(const std::filesystem::path& file, const Tessellatio
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(ids.size()), ids.data(),
                          static_cast<vtkIdType>(t.regions[r].faces.size()), stream.data());
-    grain->InsertNextValue(t.regions[r].grain);
-    phase->InsertNextValue(t.regions[r].phase);
-    region->InsertNextValue(static_cast<int>(r));
+    grain.push_back(t.regions[r].grain);
+    phase.push_back(t.regions[r].phase);
+    region.push_back(static_cast<int>(r));
   }
-  for (vtkIntArray* a : {grain.Get(), phase.Get(), region.Get()}) grid->GetCellData()->AddArray(a);
+  for (const auto& [name, values] : {std::pair{"grain", &grain}, {"phase", &phase}, {"region", &region}})
+    add_cell_array<vtkIntArray>(grid, file, name, *values, t.regions.size());
   vtkNew<vtkStringArray> names;
   names->SetName("phase_names");
   for (const Phase& p : t.phases) names->InsertNextValue(p.name);

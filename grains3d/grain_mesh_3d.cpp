@@ -100,7 +100,7 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
     out << "0\n0\n";
     if (!out) throw IoError((dir / (name + ".smesh")).string() + ": cannot write TetGen's input");
   }
-  const double max_volume = o.size * o.size * o.size / (6.0 * std::sqrt(2.0));
+  const double max_volume = regular_tet_volume(o.size);
   char switches[128];
   std::snprintf(switches, sizeof switches, "-pYzQq%.6g/%.6ga%.6gO7/7", o.radius_edge, o.min_dihedral_deg, max_volume);
   const int code = run_child({"tetgen", switches, name + ".smesh"}, dir, dir / (name + ".log"), o.deadline,

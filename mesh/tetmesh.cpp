@@ -36,6 +36,9 @@ std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return out;
 }
 
+double regular_tet_volume(double edge) { return edge * edge * edge / (6.0 * std::sqrt(2.0)); }
+double regular_tet_edge(double volume) { return std::cbrt(6.0 * std::sqrt(2.0) * volume); }
+
 TetQuality measure_quality(const TetMesh& mesh) {
   TetQuality q;
   if (mesh.tets.empty()) return q;

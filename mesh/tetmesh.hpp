@@ -21,6 +21,12 @@ double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 // The six dihedral angles (radians), at edges ab, ac, ad, bc, bd, cd.
 std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
+// The regular tetrahedron: its volume from its edge (h^3 / (6 sqrt 2)) and its edge from
+// its volume. How a wanted element size becomes a volume bound, and tetrahedra per grain
+// an element size.
+double regular_tet_volume(double edge);
+double regular_tet_edge(double volume);
+
 // What report.json's `mesh` holds for a tetrahedral mesh.
 struct TetQuality {
   double q_min = 0.0;               // radius ratio

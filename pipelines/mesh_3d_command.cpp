@@ -32,7 +32,6 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
   if (c.has(size_key) && c.has("mesh.tets_per_grain"))
     c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
   const double box = t.width * t.height * t.depth;
-  // The regular tetrahedron of edge h has volume h^3 / (6 sqrt 2).
   if (c.has(size_key)) {
     o.size = c.number(size_key);
     if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
@@ -40,9 +39,9 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
     const double n = c.number("mesh.tets_per_grain", 500.0);
     if (!(n >= 10.0 && n <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
     const double tet = box / std::max<std::size_t>(1, t.grains.size()) / n;
-    o.size = std::cbrt(6.0 * std::sqrt(2.0) * tet);
+    o.size = regular_tet_edge(tet);
   }
-  const double tets = box / (o.size * o.size * o.size / (6.0 * std::sqrt(2.0)));
+  const double tets = box / regular_tet_volume(o.size);
   if (tets > kMaxTets)
     c.fail(c.has(size_key) ? size_key : "mesh.tets_per_grain",
            "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");

@@ -291,9 +291,8 @@ LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<d
     }
     for (int k = 0; k < (periodic ? 27 : 1); ++k) {
       const auto m = periodic ? image_shift(k) : std::array<int, 3>{0, 0, 0};
-      ExactPolyhedron piece = poly;
-      for (int a = 0; a < 3 && !piece.faces.empty(); ++a) {
-        if (!periodic) continue;  // the mirrors already bound the cell by the box
+      ExactPolyhedron piece = poly;  // bounded: the mirrors already bound the cell by the box
+      for (int a = 0; a < 3 && periodic && !piece.faces.empty(); ++a) {
         const EK::FT lo = EK::FT(box[a]) * EK::FT(m[a]);
         piece = clip(piece, a, lo, true);
         if (!piece.faces.empty()) piece = clip(piece, a, lo + EK::FT(box[a]), false);

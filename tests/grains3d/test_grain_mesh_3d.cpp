@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "grains3d/grain_mesh_3d.hpp"
+#include "mesh/tetmesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 using namespace grainmesh;
@@ -30,7 +31,7 @@ Tessellation3 cell(int grains, bool periodic, std::uint64_t seed, int lloyd = 3)
 // The edge of the regular tetrahedron of the mean grain volume / `per_grain`.
 double size_for(const Tessellation3& t, double per_grain) {
   const double v = t.width * t.height * t.depth / static_cast<double>(t.grains.size()) / per_grain;
-  return std::cbrt(6.0 * std::sqrt(2.0) * v);
+  return regular_tet_edge(v);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -162,6 +163,19 @@ TEST_CASE("3D: a periodic cubic lattice of seeds gives cubes, every vertex degen
   REQUIRE(t.stats.sharpest_dihedral_deg == Approx(90.0));
   REQUIRE(t.stats.phases[0].achieved_fraction == Approx(0.5));
   require_face_partners(t);
+  // Contiguity from face areas, against the lattice's own count: cubes whose seeds differ
+  // in one coordinate share two faces of 1/4 on the torus.
+  std::array<double, 4> shared{};  // [phase of one * 2 + phase of other]
+  for (int g = 0; g < 8; ++g)
+    for (int h = g + 1; h < 8; ++h) {
+      int differ = 0;
+      for (int a = 0; a < 3; ++a) differ += o.seeds[g][a] != o.seeds[h][a];
+      if (differ == 1) shared[t.grains[g].phase * 2 + t.grains[h].phase] += 0.5;
+    }
+  for (int p = 0; p < 2; ++p) {
+    const double own = shared[p * 2 + p], other = shared[1] + shared[2];
+    REQUIRE(t.stats.phases[p].contiguity == Approx(2.0 * own / (2.0 * own + other)).margin(1e-12));
+  }
 }
 
 TEST_CASE("3D invariants on drawn cells: volumes, two regions per face, exact partners, fractions", "[tessellate3d]") {
