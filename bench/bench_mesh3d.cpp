@@ -40,12 +40,6 @@ Tessellation3Options cell_options(const Case& c) {
   return o;
 }
 
-// The element edge for `per_grain` regular tetrahedra per grain.
-double element_size(const Tessellation3& t, double per_grain) {
-  const double v = t.width * t.height * t.depth / static_cast<double>(t.grains.size()) / per_grain;
-  return regular_tet_edge(v);
-}
-
 Json quality_json(const TetMesh& m, double grains) {
   const TetQuality q = measure_quality(m);
   return {{"points", m.points.size()},
@@ -91,7 +85,7 @@ Json gmsh_peer(const Case& c, const std::filesystem::path& scratch) {
   Tessellation3Options o = cell_options(c);
   Rng rng(1);
   const Tessellation3 t = tessellate_3d(o, rng);
-  const double h = element_size(t, c.per_grain);
+  const double h = size_for_tets_per_grain(t, c.per_grain);
   const auto geo = scratch / "cell.geo", msh = scratch / "cell.msh";
   write_geo(geo, t, h);
   const ProcessRun r = run_process({"gmsh", geo.string(), "-3", "-nt", "2", "-format", "msh2", "-o", msh.string()},
@@ -108,7 +102,7 @@ Json measure(const Case& c) {
   const auto start = std::chrono::steady_clock::now();
   const Tessellation3 t = tessellate_3d(o, rng);
   const double tessellate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const GrainMesh3 m = mesh_tessellation_3d(t, {.size = element_size(t, c.per_grain)});
+  const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, c.per_grain)});
   check_conformity(t, m);
   // The same measures over the tetrahedra with a point on a surface, and the rest.
   TetMesh surface, inner;

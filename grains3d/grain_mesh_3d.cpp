@@ -4,6 +4,7 @@
 #include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/process.hpp"
-#include "grains3d/smooth_interior.hpp"
+#include "grains3d/improve_tets.hpp"
 #include "grains3d/surface_mesh.hpp"
 
 namespace grainmesh {
@@ -100,12 +101,19 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
     out << "0\n0\n";
     if (!out) throw IoError((dir / (name + ".smesh")).string() + ": cannot write TetGen's input");
   }
+  // TetGen 1.5.0 trips an assertion in its point location on a few inputs (a small region
+  // with a face on the box, say); another point insertion order (its -b switch) gets
+  // past it, and the first order that works is used, so the result stays deterministic.
   const double max_volume = regular_tet_volume(o.size);
-  char switches[128];
-  std::snprintf(switches, sizeof switches, "-pYzQq%.6g/%.6ga%.6gO7/7", o.radius_edge, o.min_dihedral_deg, max_volume);
-  const int code = run_child({"tetgen", switches, name + ".smesh"}, dir, dir / (name + ".log"), o.deadline,
-                             "TetGen filling region " + std::to_string(r));
-  if (code == 127) throw GeometryError("TetGen (the tetgen program) is not installed: make run installs it");
+  int code = 0;
+  for (const char* order : {"", "b/1", "b/0.5"}) {
+    char switches[128];
+    std::snprintf(switches, sizeof switches, "-pYzQq%.6g/%.6ga%.6gO7/7%s", o.radius_edge, o.min_dihedral_deg, max_volume, order);
+    code = run_child({"tetgen", switches, name + ".smesh"}, dir, dir / (name + ".log"), o.deadline,
+                     "TetGen filling region " + std::to_string(r));
+    if (code == 127) throw GeometryError("TetGen (the tetgen program) is not installed: make run installs it");
+    if (code == 0) break;
+  }
   if (code != 0) throw GeometryError("TetGen failed on region " + std::to_string(r) + " (exit code " + std::to_string(code) + ")");
   const auto nodes = read_table(dir / (name + ".1.node"));
   const auto eles = read_table(dir / (name + ".1.ele"));
@@ -125,7 +133,7 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
     if (tet_volume(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
     local_tets.push_back(tet);
   }
-  smooth_free_points(local_points, local_tets, nb, o.smoothing_passes);
+  improve_tets(local_points, local_tets, nb, o.improvement_passes);
   RegionTets out;
   out.interior.assign(local_points.begin() + nb, local_points.end());
   for (const auto& tet : local_tets) {
@@ -140,6 +148,12 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
 }
 
 }  // namespace
+
+double size_for_tets_per_grain(const Tessellation3& t, double per_grain) {
+  constexpr double kTetsPerBound = 1.3;
+  const double grain = t.width * t.height * t.depth / static_cast<double>(std::max<std::size_t>(1, t.grains.size()));
+  return regular_tet_edge(kTetsPerBound * grain / per_grain);
+}
 
 GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options& o) {
   if (!(o.size > 0.0)) throw GeometryError("3D mesh: the element size must be positive");

@@ -19,7 +19,7 @@ struct GrainMesh3Options {
   // volume bound is the regular tetrahedron of edge `size`.
   double radius_edge = 1.3;
   double min_dihedral_deg = 15.0;
-  int smoothing_passes = 5;        // smooth_interior.hpp, on each region's inner points
+  int improvement_passes = 3;      // improve_tets.hpp: flips, insertion and smoothing inside each region
   Deadline deadline{};
 };
 
@@ -40,6 +40,12 @@ struct GrainMesh3 {
 // thread count. Throws GeometryError (a face or a region that cannot be meshed, TetGen
 // missing or failing), TimeLimitError when the deadline passes.
 GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options& options);
+
+// The element size for about `per_grain` tetrahedra per grain: the edge of the regular
+// tetrahedron of 1.3 x the mean grain volume / per_grain, since the fill makes about 1.3
+// tetrahedra per regular one of its volume bound (measured: 645 and 657 per grain for
+// 500 nominal on Lloyd-relaxed cells of 100 and 1,000 grains).
+double size_for_tets_per_grain(const Tessellation3& t, double per_grain);
 
 // The 3D conformity checker: every tetrahedron positive; every triangle of the mesh
 // shared by two tetrahedra, or by one on the box; the tessellation's faces made of

@@ -38,8 +38,7 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
   } else {
     const double n = c.number("mesh.tets_per_grain", 500.0);
     if (!(n >= 10.0 && n <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
-    const double tet = box / std::max<std::size_t>(1, t.grains.size()) / n;
-    o.size = regular_tet_edge(tet);
+    o.size = size_for_tets_per_grain(t, n);
   }
   const double tets = box / regular_tet_volume(o.size);
   if (tets > kMaxTets)
@@ -58,61 +57,76 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
   return job;
 }
 
-void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
-                         const std::filesystem::path& out) {
-  const Mesh3Job job = read_mesh_3d_job(c, t);
-  const GrainMesh3 m = mesh_tessellation_3d(t, job.options);
+GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job) {
+  GrainMesh3 m = mesh_tessellation_3d(t, job.options);
   check_conformity(t, m);
+  return m;
+}
+
+Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m, const Mesh3Job& job,
+                         Warnings& warnings) {
   const TetQuality q = measure_quality(m.mesh);
   std::vector<double> quality;
   for (const auto& tet : m.mesh.tets)
     quality.push_back(radius_ratio(m.mesh.points[tet[0]], m.mesh.points[tet[1]], m.mesh.points[tet[2]], m.mesh.points[tet[3]]));
-  Warnings warnings;
   if (q.min_dihedral_deg < 5.0)
     warnings.add("mesh: the smallest dihedral angle is " + to_text(q.min_dihedral_deg, 3) + " degrees (" +
                  to_text(100.0 * q.share_dihedral_below_10, 2) +
-                 " % of the tetrahedra have one below 10): short edges and sharp wedges of the tessellation cause it");
-
-  StagedOutput staged(out, "mesh");
+                 " % of the tetrahedra have one below 10): sharp corners of the tessellation's faces cause it");
   std::vector<std::string> names;
   for (const Phase& p : t.phases) names.push_back(p.name);
-  write_tet_vtu(staged.dir() / "mesh.vtu", m.mesh, {{"grain", &m.grain}, {"phase", &m.phase}, {"region", &m.region}},
+  write_tet_vtu(dir / "mesh.vtu", m.mesh, {{"grain", &m.grain}, {"phase", &m.phase}, {"region", &m.region}},
                 {{"quality", &quality}}, {{"phase_names", names}});
   const Section section = mesh_section(m.mesh, m.grain, m.phase, job.section * t.depth);
-  write_mesh_png(staged.dir() / "mesh.png", section.cells,
+  write_mesh_png(dir / "mesh.png", section.cells,
                  {.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain, .legend = names,
                   .scale_bar = true});
   const double per_grain = static_cast<double>(m.mesh.tets.size()) / static_cast<double>(t.grains.size());
-  Json report;
-  report["tessellation"] = tessellation.string();
-  report["mesh"] = {{"points", m.mesh.points.size()},
-                    {"cells", m.mesh.tets.size()},
-                    {"q_min", q.q_min},
-                    {"q_mean", q.q_mean},
-                    {"min_dihedral_deg", q.min_dihedral_deg},
-                    {"max_dihedral_deg", q.max_dihedral_deg},
-                    {"share_dihedral_below_10", q.share_dihedral_below_10},
-                    {"cells_per_grain_mean", per_grain}};
-  report["grains"] = t.grains.size();
-  report["regions"] = t.regions.size();
-  report["size"] = job.options.size;
-  report["surface_points"] = m.surface_points;
-  report["surface_triangles"] = m.surface_triangles;
-  report["pairs"] = {{"x", m.pairs.axis[0].size()}, {"y", m.pairs.axis[1].size()}, {"z", m.pairs.axis[2].size()}};
-  report["conforming"] = true;  // check_conformity passed, or nothing was written
-  report["threads"] = job.options.threads;
-  report["section_z"] = job.section * t.depth;
-  report["surface_seconds"] = m.surface_seconds;
-  report["fill_seconds"] = m.fill_seconds;
+  return {{"mesh",
+           {{"points", m.mesh.points.size()},
+            {"cells", m.mesh.tets.size()},
+            {"q_min", q.q_min},
+            {"q_mean", q.q_mean},
+            {"min_dihedral_deg", q.min_dihedral_deg},
+            {"max_dihedral_deg", q.max_dihedral_deg},
+            {"share_dihedral_below_10", q.share_dihedral_below_10},
+            {"cells_per_grain_mean", per_grain}}},
+          {"grains", t.grains.size()},
+          {"regions", t.regions.size()},
+          {"size", job.options.size},
+          {"surface_points", m.surface_points},
+          {"surface_triangles", m.surface_triangles},
+          {"pairs", {{"x", m.pairs.axis[0].size()}, {"y", m.pairs.axis[1].size()}, {"z", m.pairs.axis[2].size()}}},
+          {"conforming", true},  // check_conformity passed, or nothing was written
+          {"threads", job.options.threads},
+          {"section_z", job.section * t.depth},
+          {"surface_seconds", m.surface_seconds},
+          {"fill_seconds", m.fill_seconds}};
+}
+
+void print_mesh_3d_summary(const GrainMesh3& m, std::size_t grains) {
+  const TetQuality q = measure_quality(m.mesh);
+  std::printf("grainmesh mesh: 3D, %zu points, %zu tetrahedra (%.0f per grain), q_min %.3f, q_mean %.3f, smallest "
+              "dihedral %.1f deg, conforming (%.2f s)\n",
+              m.mesh.points.size(), m.mesh.tets.size(), static_cast<double>(m.mesh.tets.size()) / static_cast<double>(grains),
+              q.q_min, q.q_mean, q.min_dihedral_deg, m.seconds);
+}
+
+void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
+                         const std::filesystem::path& out) {
+  const Mesh3Job job = read_mesh_3d_job(c, t);
+  const GrainMesh3 m = run_mesh_3d_job(t, job);
+  Warnings warnings;
+  StagedOutput staged(out, "mesh");
+  Json report{{"tessellation", tessellation.string()}};
+  report.update(write_mesh_3d_files(staged.dir(), t, m, job, warnings));
   report["seconds"] = m.seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
-  std::printf("grainmesh mesh: 3D, %zu points, %zu tetrahedra (%.0f per grain), q_min %.3f, q_mean %.3f, smallest "
-              "dihedral %.1f deg, conforming (%.2f s)\n  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n",
-              m.mesh.points.size(), m.mesh.tets.size(), per_grain, q.q_min, q.q_mean, q.min_dihedral_deg, m.seconds,
-              out.string().c_str(), job.section * t.depth);
+  print_mesh_3d_summary(m, t.grains.size());
+  std::printf("  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n", out.string().c_str(), job.section * t.depth);
 }
 
 }  // namespace grainmesh

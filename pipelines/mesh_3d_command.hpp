@@ -7,6 +7,7 @@
 
 #include "grains3d/grain_mesh_3d.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/report.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
@@ -20,6 +21,18 @@ struct Mesh3Job {
 // Reads and checks the mesh keys for a 3D tessellation: mesh.size (or mesh.h) or
 // mesh.tets_per_grain (default 500), mesh.threads; the 2D-only keys refused by name.
 Mesh3Job read_mesh_3d_job(const Config& config, const Tessellation3& t);
+
+// Meshes the cell and checks the mesh's conformity (check_conformity throws otherwise).
+GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job);
+
+// Writes mesh.vtu and mesh.png (the section) into `dir`; returns what report.json says of
+// the mesh (`mesh` with its quality, counts, seconds per stage); a sliver left in the
+// mesh becomes a warning.
+Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m, const Mesh3Job& job,
+                         Warnings& warnings);
+
+// The mesh's one-line summary, on stdout.
+void print_mesh_3d_summary(const GrainMesh3& m, std::size_t grains);
 
 void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& config,
                          const std::filesystem::path& out);

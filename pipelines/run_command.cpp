@@ -18,6 +18,8 @@
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/result_pictures.hpp"
+#include "pipelines/run_3d_command.hpp"
+#include "pipelines/stage_line.hpp"
 #include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
 
@@ -25,40 +27,12 @@ namespace grainmesh {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 // The largest of a report's per-stage figures.
 double largest(const Json& stages) {
   double most = 0.0;
   for (const auto& [stage, value] : stages.items()) most = std::max(most, value.get<double>());
   return most;
 }
-
-// The stage on one line of a terminal, rewritten in place (at most ten times a second);
-// nothing when not shown.
-class StageLine {
- public:
-  StageLine(bool show, Clock::time_point start) : show_(show), start_(start), last_(start - std::chrono::seconds(1)) {}
-  bool shown() const { return show_; }
-  void show(const std::string& what, bool force = true) const {
-    if (!show_) return;
-    const auto now = Clock::now();
-    if (!force && now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    std::fprintf(stderr, "\r\033[Kgrainmesh run: %s (%.1f s)", what.c_str(), since(start_));
-    std::fflush(stderr);
-  }
-  void end() const {
-    if (show_) std::fprintf(stderr, "\r\033[K");
-  }
-
- private:
-  bool show_;
-  Clock::time_point start_;
-  mutable Clock::time_point last_;  // when the line was last rewritten
-};
 
 // Each stage's peak resident memory (the solve's with the solver's processes), in MiB by
 // stage name.
@@ -222,6 +196,7 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
 
 void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   c.check_keys(run_config_keys());
+  if (c.has("domain.depth")) return run_run_3d_command(c, out, solve, quiet, summary);
   check_output_replaceable(out, "run");
   Warnings warnings;
   RunPlan plan = read_run_plan(c, solve, warnings);

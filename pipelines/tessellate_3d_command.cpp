@@ -102,12 +102,9 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
   return job;
 }
 
-void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out, "tessellate");
-  const Tessellate3Job job = read_tessellate_3d_job(c);
-  const auto start = std::chrono::steady_clock::now();
+Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& c, Warnings& warnings) {
   Rng rng(job.seed);
-  const Tessellation3 t = tessellate_3d(job.options, rng);
+  Tessellation3 t = tessellate_3d(job.options, rng);
   const Tessellation3Stats& s = t.stats;
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
     const PhaseStats& ps = s.phases[p];
@@ -117,47 +114,63 @@ void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out
                  " grains: use at least " + to_text(std::ceil(1.0 / ps.target_fraction - 1e-9)) +
                  " grains (tessellation.grains), about 50 for fractions within 1 %");
   }
-  Warnings warnings;
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
     const PhaseStats& ps = s.phases[p];
     if (std::abs(ps.achieved_fraction - ps.target_fraction) > 0.01)
       warnings.add("phase." + t.phases[p].name + ".fraction: " + to_text(ps.achieved_fraction, 4) + " achieved for a target of " +
                    to_text(ps.target_fraction, 4) + " with " + std::to_string(s.grains) + " grains");
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
 
-  StagedOutput staged(out, "tessellate");
-  write_text_file(staged.dir() / "tessellation.json", tessellation_to_json(t));
-  write_tessellation_vtu(staged.dir() / "tessellation.vtu", t);
+Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job) {
+  write_text_file(dir / "tessellation.json", tessellation_to_json(t));
+  write_tessellation_vtu(dir / "tessellation.vtu", t);
   const Section section = tessellation_section(t, job.section * t.depth);
   PictureOptions picture{.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain,
                          .scale_bar = true};
   for (const Phase& p : t.phases) picture.legend.push_back(p.name);
-  write_mesh_png(staged.dir() / "tessellation.png", section.cells, picture);
-  Json report;
-  report["config"] = c.source();
-  report["seed"] = job.seed;
-  report["width"] = t.width;
-  report["height"] = t.height;
-  report["depth"] = t.depth;
-  report["periodic"] = t.periodic;
-  report["grains"] = s.grains;
-  report["statistics"] = statistics_json(s, t.phases);
-  report["section_z"] = job.section * t.depth;
-  report["vertices"] = t.vertices.size();
-  report["faces"] = t.faces.size();
-  report["regions"] = t.regions.size();
+  write_mesh_png(dir / "tessellation.png", section.cells, picture);
+  return {{"seed", job.seed},
+          {"width", t.width},
+          {"height", t.height},
+          {"depth", t.depth},
+          {"periodic", t.periodic},
+          {"grains", t.stats.grains},
+          {"statistics", statistics_json(t.stats, t.phases)},
+          {"section_z", job.section * t.depth},
+          {"vertices", t.vertices.size()},
+          {"faces", t.faces.size()},
+          {"regions", t.regions.size()}};
+}
+
+void print_tessellation_3d_summary(const Tessellation3& t, double seconds) {
+  const Tessellation3Stats& s = t.stats;
+  std::printf("grainmesh tessellate: %d grains in 3D, %zu regions, %zu faces, sharpest dihedral %.1f deg, shortest edge %.3g (%.3f s)\n",
+              s.grains, t.regions.size(), t.faces.size(), s.sharpest_dihedral_deg, s.shortest_edge, seconds);
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)\n", t.phases[p].name.c_str(), s.phases[p].target_fraction,
+                s.phases[p].achieved_fraction, s.phases[p].grains);
+}
+
+void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out) {
+  check_output_replaceable(out, "tessellate");
+  const Tessellate3Job job = read_tessellate_3d_job(c);
+  const auto start = std::chrono::steady_clock::now();
+  Warnings warnings;
+  const Tessellation3 t = run_tessellate_3d_job(job, c, warnings);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  StagedOutput staged(out, "tessellate");
+  Json report{{"config", c.source()}};
+  report.update(write_tessellation_3d_files(staged.dir(), t, job));
   report["seconds"] = seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
 
-  std::printf("grainmesh tessellate: %d grains in 3D, %zu regions, %zu faces, sharpest dihedral %.1f deg, shortest edge %.3g (%.3f s)\n",
-              s.grains, t.regions.size(), t.faces.size(), s.sharpest_dihedral_deg, s.shortest_edge, seconds);
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)\n", t.phases[p].name.c_str(), s.phases[p].target_fraction,
-                s.phases[p].achieved_fraction, s.phases[p].grains);
+  print_tessellation_3d_summary(t, seconds);
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png (section z = %g), report.json}\n",
               out.string().c_str(), job.section * t.depth);
 }

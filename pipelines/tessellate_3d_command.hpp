@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "pipelines/config.hpp"
+#include "pipelines/report.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
@@ -21,6 +22,17 @@ struct Tessellate3Job {
 // Reads and checks a 3D tessellation config (the keys of tessellate_config_keys(); the
 // 2D-only ones refused by name). Throws ConfigError naming the key.
 Tessellate3Job read_tessellate_3d_job(const Config& config);
+
+// Tessellates (randomness from job.seed only). A phase with no grain fails naming its
+// fraction key; a fraction missed by more than 1 % becomes a warning.
+Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& config, Warnings& warnings);
+
+// Writes tessellation.json, tessellation.vtu and tessellation.png (the section) into
+// `dir`; returns what report.json says of the cell (seed, box, statistics, counts).
+Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job);
+
+// The cell's one-line summary and its phases, on stdout.
+void print_tessellation_3d_summary(const Tessellation3& t, double seconds);
 
 void run_tessellate_3d_command(const Config& config, const std::filesystem::path& out);
 

@@ -28,12 +28,6 @@ Tessellation3 cell(int grains, bool periodic, std::uint64_t seed, int lloyd = 3)
   return tessellate_3d(o, rng);
 }
 
-// The edge of the regular tetrahedron of the mean grain volume / `per_grain`.
-double size_for(const Tessellation3& t, double per_grain) {
-  const double v = t.width * t.height * t.depth / static_cast<double>(t.grains.size()) / per_grain;
-  return regular_tet_edge(v);
-}
-
 }  // namespace
 
 TEST_CASE("3D mesh: one grain fills the box exactly, conforming", "[mesh3d]") {
@@ -52,7 +46,7 @@ TEST_CASE("3D mesh: drawn cells conform, periodic surfaces pair up, grain volume
     for (std::uint64_t seed : {1u, 2u}) {
       CAPTURE(periodic, seed);
       const Tessellation3 t = cell(20, periodic, seed);
-      const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for(t, 300)});
+      const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)});
       REQUIRE_NOTHROW(check_conformity(t, m));  // also the grain volumes to 1e-9
       if (periodic)
         for (int a = 0; a < 3; ++a) REQUIRE(m.pairs.axis[a].size() > t.partners.axis[a].size());
@@ -68,8 +62,8 @@ TEST_CASE("3D mesh: drawn cells conform, periodic surfaces pair up, grain volume
 
 TEST_CASE("3D mesh: the same mesh for 1 and 2 threads", "[mesh3d]") {
   const Tessellation3 t = cell(20, true, 3);
-  const GrainMesh3 one = mesh_tessellation_3d(t, {.size = size_for(t, 200), .threads = 1});
-  const GrainMesh3 two = mesh_tessellation_3d(t, {.size = size_for(t, 200), .threads = 2});
+  const GrainMesh3 one = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200), .threads = 1});
+  const GrainMesh3 two = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200), .threads = 2});
   REQUIRE(one.mesh.points == two.mesh.points);
   REQUIRE(one.mesh.tets == two.mesh.tets);
   REQUIRE(one.grain == two.grain);

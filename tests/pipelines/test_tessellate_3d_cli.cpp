@@ -85,7 +85,11 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
       {"tessellate", three, {"tessellation.grains=10", "phase.Co.fraction=0.01"}, "phase.Co.fraction: a fraction of 0.01 gives the phase none of the 10 grains"},
       {"tessellate", three, {"output.section=1"}, "output.section: must lie in (0, 1)"},
       {"tessellate", two, {"output.section=0.5"}, "output.section: only for 3D cells (with domain.depth)"},
-      {"run", three, {}, "domain.depth: 3D cells go through grainmesh tessellate and grainmesh mesh only so far"},
+      {"converge", three, {}, "domain.depth: 3D cells go through grainmesh tessellate, mesh and run only so far"},
+      {"run", three, {"solve.processes=2"}, "solve.processes: not available for 3D cells (domain.depth is set)"},
+      {"run", three, {"homogenise.boundary=periodic"}, "homogenise.boundary: not available for 3D cells"},
+      {"run", three, {"mesh.triangles_per_grain=50"}, "mesh.triangles_per_grain: not available for 3D meshes"},
+      {"run", three, {"mesh.tets_per_grain=5"}, "mesh.tets_per_grain: must lie between 10 and 1e6"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{c.command, c.config, "-o", (dir / "out").string()};
@@ -111,7 +115,7 @@ TEST_CASE("grainmesh mesh meshes a 3D tessellation into conforming tetrahedra an
   const auto r = run_grainmesh({"mesh", tess, "-o", (dir / "m").string(), "--set", "mesh.tets_per_grain=300"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  for (const char* f : {"mesh.vtu", "mesh.png", "report.json"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
+  for (const char* f : {"mesh.vtu", "mesh.png"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
   const auto report = nlohmann::json::parse(test::read_file(dir / "m" / "report.json"));
   const auto& m = report["mesh"];
   for (const char* key : {"points", "cells", "q_min", "q_mean", "min_dihedral_deg", "share_dihedral_below_10", "cells_per_grain_mean"})
@@ -136,4 +140,37 @@ TEST_CASE("grainmesh mesh meshes a 3D tessellation into conforming tetrahedra an
        "mesh.tets_per_grain: only for 3D tessellations"},
   };
   for (const auto& c : refusals) test::check_refused(c, dir / "refused");
+}
+
+TEST_CASE("grainmesh run tessellates and meshes a 3D config in one go, and its config.ini repeats it",
+          "[cli][mesh3d]") {
+  test::ScratchDir dir("run3d");
+  const std::string cfg = test::example("grains_3d_wc_co").string();
+  const auto r = run_grainmesh({"run", cfg, "-o", (dir / "a").string(), "--set", "tessellation.grains=30", "--set",
+                                "mesh.tets_per_grain=300"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* f : {"tessellation.json", "tessellation.vtu", "tessellation.png", "mesh.vtu", "mesh.png", "config.ini"})
+    CHECK(fs::file_size(dir / "a" / f) > 100);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "a" / "report.json"));
+  CHECK(report["grains"].get<int>() == 30);
+  CHECK(report["conforming"].get<bool>());
+  for (const char* stage : {"tessellate", "mesh", "total"}) CHECK(report["seconds"][stage].get<double>() > 0.0);
+  // About the tetrahedra per grain asked for (the element size is calibrated for it).
+  const double per_grain = report["mesh"]["cells_per_grain_mean"].get<double>();
+  CHECK(per_grain > 0.7 * 300);
+  CHECK(per_grain < 1.3 * 300);
+  CHECK(report["mesh"]["q_mean"].get<double>() > 0.65);
+
+  // The resolved config repeats the run: the same cell and the same mesh.
+  const auto again = run_grainmesh({"run", (dir / "a" / "config.ini").string(), "-o", (dir / "b").string()});
+  REQUIRE(again.exit_code == 0);
+  CHECK(test::read_file(dir / "a" / "tessellation.json") == test::read_file(dir / "b" / "tessellation.json"));
+  CHECK(test::read_file(dir / "a" / "mesh.vtu") == test::read_file(dir / "b" / "mesh.vtu"));
+
+  // --solve waits for 3D OpenFOAM cases: refused by name, nothing written.
+  const auto solve = run_grainmesh({"run", cfg, "-o", (dir / "c").string(), "--solve"});
+  CHECK(solve.exit_code == 2);
+  CHECK(solve.err.find("domain.depth: --solve: 3D cells are not exported to OpenFOAM yet") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "c"));
 }
