@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace grainmesh {
 
@@ -22,18 +23,53 @@ double smallest_angle(Vec3 a, Vec3 b, Vec3 c) {
   return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
 }
 
-}  // namespace
+// A centre fan's triangles lean at most this far from the face (cosine of 10 degrees):
+// a face bent a little gives a fan bent a little, and the region's dihedral angles at the
+// face's edges stay about what they were.
+constexpr double kFanCosine = 0.98480775301;
 
-FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, double flat, Vec3 box) {
-  FaceShape shape;
+// The ring's centroid and unit Newell normal; a zero normal for a degenerate ring.
+std::pair<Vec3, Vec3> centre_and_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
   const int n = static_cast<int>(ring.size());
   Vec3 c{}, normal{};
   for (int v : ring) c += p[v];
   c = c / static_cast<double>(n);
   for (int k = 0; k < n; ++k) normal += cross(p[ring[k]] - c, p[ring[(k + 1) % n]] - c);
   const double len = norm(normal);
-  if (!(len > 0.0)) return {.planar = false, .valid = false, .triangles = {}};
-  normal = normal / len;
+  return {c, len > 0.0 ? normal / len : Vec3{}};
+}
+
+// A triangle of a split turns with the face (and is not flat): its normal within
+// acos(cosine) of the face's.
+bool turns_with(Vec3 a, Vec3 b, Vec3 d, Vec3 normal, double cosine = 1e-3) {
+  const Vec3 m = cross(b - a, d - a);
+  return dot(m, normal) > cosine * norm(m);
+}
+
+}  // namespace
+
+double smallest_angle(const std::vector<Vec3>& p, const std::vector<std::array<int, 3>>& triangles) {
+  double least = std::numbers::pi;
+  for (const auto& [a, b, c] : triangles) least = std::min(least, smallest_angle(p[a], p[b], p[c]));
+  return least;
+}
+
+CentreFan centre_fan(const std::vector<Vec3>& p, const std::vector<int>& ring) {
+  const auto [c, normal] = centre_and_normal(p, ring);
+  CentreFan fan{.valid = norm(normal) > 0.0, .centre = c, .smallest_angle = std::numbers::pi};
+  for (std::size_t k = 0; k < ring.size() && fan.valid; ++k) {
+    const Vec3 a = p[ring[k]], b = p[ring[(k + 1) % ring.size()]];
+    fan.valid = turns_with(c, a, b, normal);
+    fan.smallest_angle = std::min(fan.smallest_angle, smallest_angle(c, a, b));
+  }
+  return fan;
+}
+
+FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, double flat, Vec3 box) {
+  FaceShape shape;
+  const int n = static_cast<int>(ring.size());
+  const auto [c, normal] = centre_and_normal(p, ring);
+  if (!(norm(normal) > 0.0)) return {.planar = false, .valid = false, .triangles = {}};
   double off = 0.0;
   for (int v : ring) off = std::max(off, std::abs(dot(p[v] - c, normal)));
   if (n == 3 || off <= flat) return shape;
@@ -52,8 +88,7 @@ FaceShape face_shape(const std::vector<Vec3>& p, const std::vector<int>& ring, d
       for (int k = i + 1; k < j; ++k) {
         if (!chord_ok(i, k) || !chord_ok(k, j) || !chord_ok(i, j)) continue;
         const Vec3 a = p[ring[i]], b = p[ring[k]], d = p[ring[j]];
-        const Vec3 m = cross(b - a, d - a);
-        if (dot(m, normal) <= 1e-3 * norm(m)) continue;
+        if (!turns_with(a, b, d, normal)) continue;
         const double q = std::min({best[i][k], best[k][j], smallest_angle(a, b, d)});
         if (best[i][k] >= 0.0 && best[k][j] >= 0.0 && q > best[i][j]) {
           best[i][j] = q;

@@ -1,5 +1,6 @@
 // How a face of a 3D tessellation is taken once short-edge collapses have bent it: planar,
-// or split into planar triangles without new points (regularise_3d.cpp).
+// or split into planar triangles, without new points or about one new centre point
+// (regularise_3d.cpp).
 #pragma once
 
 #include <array>
@@ -23,5 +24,19 @@ struct FaceShape {
   std::vector<std::array<int, 3>> triangles;  // point ids; empty when planar
 };
 FaceShape face_shape(const std::vector<Vec3>& points, const std::vector<int>& ring, double flat, Vec3 box);
+
+// The other split of a bent face: a new point at its vertices' centroid, joined to every
+// edge, when each of the fan's triangles turns with the ring; the smallest angle of its
+// triangles. A face of many points bent a little by a collapse gets thin triangles from
+// diagonals alone (its slices), where the fan's are about as wide as the face.
+struct CentreFan {
+  bool valid = false;
+  Vec3 centre;
+  double smallest_angle = 0.0;  // radians
+};
+CentreFan centre_fan(const std::vector<Vec3>& points, const std::vector<int>& ring);
+
+// The smallest angle (radians) of the triangles (point ids).
+double smallest_angle(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
 
 }  // namespace grainmesh

@@ -220,8 +220,11 @@ class Collapser {
       const std::vector<int>& ring = t_.faces[f].ring;
       // A planar face: its own normal at its edges, its centroid off them (a fan of it may
       // hold zero-area triangles where vertices line up along a side of the box).
-      const FaceShape shape = face_shape(t_.vertices, ring, flat(), box_);
-      if (shape.planar) {
+      FaceShape shape = face_shape(t_.vertices, ring, flat(), box_);
+      if (const auto centre = fan_centre_.find(f); centre != fan_centre_.end()) {
+        shape.triangles.clear();
+        for (std::size_t k = 0; k < ring.size(); ++k) shape.triangles.push_back({centre->second, ring[k], ring[(k + 1) % ring.size()]});
+      } else if (shape.planar) {
         Vec3 n{}, c{};
         for (std::size_t k = 0; k < ring.size(); ++k) {
           n += cross(t_.vertices[ring[k]], t_.vertices[ring[(k + 1) % ring.size()]]);
@@ -388,8 +391,26 @@ class Collapser {
     ++removed_regions_;
   }
 
-  // Dead faces dropped, bent faces split into triangles (face_shape), unused
-  // vertices dropped.
+  // Bent face f split about a new centre point (centre_fan) rather than by diagonals
+  // (`shape`): when the fan's smallest angle is larger and its regions' sharpest dihedral
+  // angles stay at least min(what they were, kMinDihedral). Then the centre is a new
+  // vertex, in fan_centre_.
+  bool fan_is_better(int f, const FaceShape& shape) {
+    const Face3& face = t_.faces[f];
+    const CentreFan fan = centre_fan(t_.vertices, face.ring);
+    if (!fan.valid || !(fan.smallest_angle > smallest_angle(t_.vertices, shape.triangles))) return false;
+    auto sharpest = [&] { return std::min(region_sharpest(face.back), face.front >= 0 ? region_sharpest(face.front) : std::numbers::pi); };
+    const double before = sharpest();
+    fan_centre_[f] = static_cast<int>(t_.vertices.size());
+    t_.vertices.push_back(fan.centre);
+    if (sharpest() >= std::min(before, kMinDihedral)) return true;
+    fan_centre_.erase(f);
+    t_.vertices.pop_back();
+    return false;
+  }
+
+  // Dead faces dropped, bent faces split into triangles (face_shape's, or the centre
+  // fan's when its smallest angle is larger), unused vertices dropped.
   void finish() {
     std::vector<std::vector<int>> replaced(t_.faces.size());
     std::vector<Face3> faces;
@@ -402,7 +423,13 @@ class Collapser {
         faces.push_back(face);
         continue;
       }
-      for (const auto& [a, b, c] : shape.triangles) {
+      std::vector<std::array<int, 3>> triangles = shape.triangles;
+      if (fan_is_better(f, shape)) {
+        triangles.clear();
+        for (std::size_t k = 0; k < face.ring.size(); ++k)
+          triangles.push_back({fan_centre_.at(f), face.ring[k], face.ring[(k + 1) % face.ring.size()]});
+      }
+      for (const auto& [a, b, c] : triangles) {
         replaced[f].push_back(static_cast<int>(faces.size()));
         faces.push_back({.ring = {a, b, c}, .back = face.back, .front = face.front});
       }
@@ -442,6 +469,7 @@ class Collapser {
   std::vector<std::vector<int>> vertex_faces_;
   std::vector<bool> dead_;
   std::vector<bool> dead_region_;
+  std::map<int, int> fan_centre_;  // bent faces split about a new centre point: face -> its vertex
   std::vector<int> grain_regions_;  // live regions of each grain
   std::unordered_map<Vec3, int, PointHash> at_;
 
