@@ -3,7 +3,9 @@
 // surfaces, TetGen filling on all cores), peak memory, and the quality (radius ratio,
 // dihedral angles; of the tetrahedra touching a grain surface and of the others apart),
 // against Gmsh meshing the same polyhedra from a written .geo (one volume per region,
-// shared surfaces; Gmsh's 3D Delaunay with its optimiser, 2 threads).
+// shared surfaces; Gmsh's 3D Delaunay with its optimiser, 2 threads), and against Gmsh as
+// the second filler of our own surfaces (its 3D Delaunay with its optimiser; Debian's Gmsh
+// has no Netgen).
 // Prints a table and writes bench/results.json ("mesh3d").
 #include <array>
 #include <chrono>
@@ -18,6 +20,7 @@
 #include "bench/child.hpp"
 #include "bench/peers.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
+#include "grains3d/surface_mesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 using namespace grainmesh;
@@ -79,15 +82,43 @@ void write_geo(const std::filesystem::path& file, const Tessellation3& t, double
   out << "Mesh.CharacteristicLengthMax = " << h << ";\nMesh.Optimize = 1;\n";
 }
 
-// Gmsh meshing the cell's polyhedra (write_geo), timed as a program, its tetrahedra
-// measured by our measures.
-Json gmsh_peer(const Case& c, const std::filesystem::path& scratch) {
+// Our surface mesh as discrete Gmsh surfaces (a .msh, one elementary entity per face) and
+// a .geo that merges it and makes a volume per region: Gmsh as the second filler, its
+// volumes keeping our surface triangles as TetGen's do.
+void write_surface_geo(const std::filesystem::path& dir, const Tessellation3& t, double h) {
+  const SurfaceMesh s = mesh_surfaces(t, h);
+  std::ofstream msh(dir / "surface.msh");
+  msh.precision(17);
+  msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << s.points.size() << "\n";
+  for (std::size_t v = 0; v < s.points.size(); ++v) msh << v + 1 << ' ' << s.points[v].x << ' ' << s.points[v].y << ' ' << s.points[v].z << '\n';
+  std::size_t count = 0;
+  for (const auto& f : s.faces) count += f.size();
+  msh << "$EndNodes\n$Elements\n" << count << "\n";
+  std::size_t id = 0;
+  for (std::size_t f = 0; f < s.faces.size(); ++f)
+    for (const auto& tr : s.faces[f])
+      msh << ++id << " 2 2 " << f + 1 << ' ' << f + 1 << ' ' << tr[0] + 1 << ' ' << tr[1] + 1 << ' ' << tr[2] + 1 << '\n';
+  msh << "$EndElements\n";
+  std::ofstream geo(dir / "filler.geo");
+  geo << "Merge \"surface.msh\";\n";
+  for (std::size_t r = 0; r < t.regions.size(); ++r) {
+    std::string loop;
+    for (int f : t.regions[r].faces) loop += (loop.empty() ? "" : ", ") + std::to_string(f + 1);
+    geo << "Surface Loop(" << r + 1 << ") = {" << loop << "};\nVolume(" << r + 1 << ") = {" << r + 1 << "};\n";
+  }
+  geo << "Mesh.CharacteristicLengthMax = " << h << ";\nMesh.Optimize = 1;\nMesh.SaveAll = 1;\n";
+}
+
+// Gmsh run on `geo` (write_geo: meshing the polyhedra itself; write_surface_geo: filling
+// our surfaces), timed as a program, its tetrahedra measured by our measures.
+Json gmsh_peer(const Case& c, const std::filesystem::path& scratch, bool our_surfaces) {
   Tessellation3Options o = cell_options(c);
   Rng rng(1);
   const Tessellation3 t = tessellate_3d(o, rng);
   const double h = size_for_tets_per_grain(t, c.per_grain);
-  const auto geo = scratch / "cell.geo", msh = scratch / "cell.msh";
-  write_geo(geo, t, h);
+  const auto geo = scratch / (our_surfaces ? "filler.geo" : "cell.geo"), msh = scratch / "cell.msh";
+  if (our_surfaces) write_surface_geo(scratch, t, h);
+  else write_geo(geo, t, h);
   const ProcessRun r = run_process({"gmsh", geo.string(), "-3", "-nt", "2", "-format", "msh2", "-o", msh.string()},
                                    scratch / "gmsh.log");
   if (r.exit_code != 0) return {{"error", "gmsh failed (exit " + std::to_string(r.exit_code) + ")"}};
@@ -156,20 +187,27 @@ int main(int argc, char** argv) {
                 row["surface_tets_q_mean"].get<double>(), row["surface_tets_min_dihedral_deg"].get<double>(),
                 row["inner_tets_q_mean"].get<double>(), row["inner_tets_min_dihedral_deg"].get<double>());
     std::fflush(stdout);
-    const Json gmsh = gmsh_version(scratch).empty() ? Json{{"error", "gmsh is not installed (make bench installs it)"}}
-                                                     : gmsh_peer(c, scratch);
-    if (gmsh.contains("error")) {
-      std::printf("%-30s gmsh: %s\n", "", gmsh["error"].get<std::string>().c_str());
-    } else {
-      std::printf("%-30s Gmsh (.geo, same polyhedra): %.2f s, %zu cells, q_mean %.3f, q_min %.3f, min dihedral %.2f, "
-                  "<10 deg %.4f, %.1f MiB\n", "", gmsh["seconds"].get<double>(), gmsh["cells"].get<std::size_t>(),
-                  gmsh["q_mean"].get<double>(), gmsh["q_min"].get<double>(), gmsh["min_dihedral_deg"].get<double>(),
-                  gmsh["share_dihedral_below_10"].get<double>(), gmsh["peak_memory_mib"].get<double>());
+    const bool have_gmsh = !gmsh_version(scratch).empty();
+    Json peers;
+    for (const bool ours : {false, true}) {
+      const char* name = ours ? "gmsh_filler" : "gmsh";
+      peers[name] = have_gmsh ? gmsh_peer(c, scratch, ours) : Json{{"error", "gmsh is not installed (make bench installs it)"}};
+      const Json& g = peers[name];
+      const char* label = ours ? "Gmsh filling our surfaces" : "Gmsh (.geo, same polyhedra)";
+      if (g.contains("error")) {
+        std::printf("%-30s %s: %s\n", "", label, g["error"].get<std::string>().c_str());
+        continue;
+      }
+      std::printf("%-30s %s: %.2f s, %zu cells, q_mean %.3f, q_min %.3f, min dihedral %.2f, <10 deg %.4f, %.1f MiB\n", "",
+                  label, g["seconds"].get<double>(), g["cells"].get<std::size_t>(), g["q_mean"].get<double>(),
+                  g["q_min"].get<double>(), g["min_dihedral_deg"].get<double>(), g["share_dihedral_below_10"].get<double>(),
+                  g["peak_memory_mib"].get<double>());
+      std::fflush(stdout);
     }
     std::fflush(stdout);
     Json labelled{{"case", c.name}};
     labelled.update(row);
-    labelled["gmsh"] = gmsh;
+    labelled.update(peers);
     if (c.limit_seconds > 0) labelled["limit_seconds"] = c.limit_seconds;
     results.push_back(labelled);
   }
