@@ -40,6 +40,24 @@ Vec3 circumcentre(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return a + num / (2.0 * dot(u, cross(v, w)));
 }
 
+// Every face of the tetrahedra as (key of its sorted corners, tetrahedron t x `per` +
+// the corner it faces away from when per = 4, else t), sorted: a face's two sides are
+// neighbours. Corner ids below 2^21.
+std::vector<std::pair<std::uint64_t, int>> face_incidence(const std::vector<Tet>& tets, int per) {
+  std::vector<std::pair<std::uint64_t, int>> incidence;
+  incidence.reserve(tets.size() * 4);
+  for (int t = 0; t < static_cast<int>(tets.size()); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<std::uint64_t, 3> f{};
+      for (int i = 0, n = 0; i < 4; ++i)
+        if (i != skip) f[n++] = static_cast<std::uint64_t>(tets[t][i]);
+      std::sort(f.begin(), f.end());
+      incidence.emplace_back(f[0] << 42 | f[1] << 21 | f[2], per == 4 ? t * 4 + skip : t);
+    }
+  std::sort(incidence.begin(), incidence.end());
+  return incidence;
+}
+
 class Improver {
  public:
   Improver(std::vector<Vec3>& points, std::vector<Tet>& tets, int first_free)
@@ -190,17 +208,7 @@ int Improver::remove_edges() {
 // The 2-3 flip: two tetrahedra abcd and abce across an inner face become three around
 // the edge de, when de passes through abc.
 int Improver::flip_faces() {
-  std::vector<std::pair<std::uint64_t, int>> incidence;
-  incidence.reserve(tets_.size() * 4);
-  for (int t = 0; t < static_cast<int>(tets_.size()); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<std::uint64_t, 3> f{};
-      for (int i = 0, n = 0; i < 4; ++i)
-        if (i != skip) f[n++] = static_cast<std::uint64_t>(tets_[t][i]);
-      std::sort(f.begin(), f.end());
-      incidence.emplace_back(f[0] << 42 | f[1] << 21 | f[2], t);
-    }
-  std::sort(incidence.begin(), incidence.end());
+  const auto incidence = face_incidence(tets_, 1);
   std::vector<std::pair<double, std::size_t>> faces;
   for (std::size_t k = 0; k + 1 < incidence.size(); ++k)
     if (incidence[k].first == incidence[k + 1].first) {
@@ -354,17 +362,7 @@ int Improver::smooth() {
 // tetrahedra's worst beats the removed ones'.
 int Improver::insert_points() {
   // Each tetrahedron's neighbour across the face opposite each corner; -1 on the surface.
-  std::vector<std::pair<std::uint64_t, int>> incidence;
-  incidence.reserve(tets_.size() * 4);
-  for (int t = 0; t < static_cast<int>(tets_.size()); ++t)
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<std::uint64_t, 3> f{};
-      for (int i = 0, n = 0; i < 4; ++i)
-        if (i != skip) f[n++] = static_cast<std::uint64_t>(tets_[t][i]);
-      std::sort(f.begin(), f.end());
-      incidence.emplace_back(f[0] << 42 | f[1] << 21 | f[2], t * 4 + skip);
-    }
-  std::sort(incidence.begin(), incidence.end());
+  const auto incidence = face_incidence(tets_, 4);
   std::vector<std::array<int, 4>> across(tets_.size(), {-1, -1, -1, -1});
   for (std::size_t k = 0; k + 1 < incidence.size(); ++k)
     if (incidence[k].first == incidence[k + 1].first) {
