@@ -83,7 +83,7 @@ DiscreteTraction::Neighbour DiscreteTraction::neighbour(int f) const {
   const PolyMesh::Patch& other = pm_.patches[patch_index(pm_, patch.neighbour_patch)];
   // Face k of a cyclic patch pairs with face k of its neighbour patch, which lies at this
   // one plus the separation.
-  return {pm_.owner[other.start + (f - patch.start)], -scale_ * patch.separation, jump_[p]};
+  return {pm_.owner[other.start + (f - patch.start)], -scale_ * Vec2{patch.separation.x, patch.separation.y}, jump_[p]};
 }
 
 Vec2 DiscreteTraction::face_force(int f) const {

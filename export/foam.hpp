@@ -10,6 +10,7 @@
 
 #include "common/geometry.hpp"
 #include "common/periodic_pairs.hpp"
+#include "common/vec3.hpp"
 #include "grains/grain_mesh.hpp"
 #include "mesh/cell_mesh.hpp"
 #include "mesh/trimesh.hpp"
@@ -122,15 +123,16 @@ struct PolyMesh {
     std::string name, type;        // type: patch, symmetryPlane, empty, cyclic
     int start = 0, size = 0;
     std::string neighbour_patch;   // cyclic only
-    Vec2 separation{};             // cyclic only: neighbour = this + separation (mesh units)
+    Vec3 separation{};             // cyclic only: neighbour = this + separation (mesh units)
   };
   struct FaceZone {
     std::string name;
     std::vector<int> faces;
     std::vector<char> flip;        // 1 where the face points from the higher label to the lower
   };
-  std::vector<Vec2> points2d;      // the mesh's points; the polyMesh has them at z = 0 and z = thickness
+  std::vector<Vec2> points2d;      // a 2D mesh's points; the polyMesh has them at z = 0 and z = thickness
   double thickness = 0.0;
+  std::vector<Vec3> points3d;      // a 3D mesh's points (then points2d is empty)
   std::vector<int> face_start, face_points;  // face f: face_points[face_start[f] .. face_start[f + 1])
   std::vector<int> owner, neighbour;         // neighbour for internal faces only
   std::vector<Patch> patches;
@@ -219,6 +221,13 @@ void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, c
 // (right, left, bottom, and top unless uniaxial), GeometryError when a cyclic side's faces
 // do not pair, or a boundary edge lies on no side while the mesh is to be cyclic.
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
+
+// The zones of a built polyMesh (cells in its order, internal faces counted): a cellZone
+// per phase (every cell in exactly one), one per grain when `grain_zones`; faceZones
+// grainBoundaries and phaseInterfaces, a face's flip set where it points from the higher
+// label to the lower. For the 2D and the 3D builders.
+void add_zones(const std::vector<int>& grain, const std::vector<int>& phase, const std::vector<FoamPhase>& phases,
+               bool grain_zones, PolyMesh& pm);
 
 // Writes constant/polyMesh (points, faces, owner, neighbour, boundary, cellZones,
 // faceZones) of `pm` into `dir`, ASCII or binary as `options` says.

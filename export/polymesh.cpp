@@ -106,8 +106,8 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
     if (cyclic && s != kNoSide) {
       p.type = "cyclic";
       p.neighbour_patch = side_name(static_cast<CellSide>(s ^ 1));
-      const Vec2 shift = is_vertical(s) ? Vec2{m.cell.width(), 0.0} : Vec2{0.0, m.cell.height()};
-      p.separation = (s % 2 == 0) ? shift : -shift;
+      const Vec3 shift = is_vertical(s) ? Vec3{m.cell.width(), 0.0, 0.0} : Vec3{0.0, m.cell.height(), 0.0};
+      p.separation = (s % 2 == 0) ? shift : -1.0 * shift;
     } else if (s == kLeft || s == kBottom || (s == kTop && !top_free)) {
       p.type = "symmetryPlane";
     } else {
@@ -122,18 +122,19 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
   }
 }
 
-// Zones: a cellZone per phase (every cell in exactly one), optionally per grain; faceZones
-// of grain boundaries and phase interfaces.
-void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
-  for (std::size_t p = 0; p < m.phases.size(); ++p) {
+}  // namespace
+
+void add_zones(const std::vector<int>& grain, const std::vector<int>& phase, const std::vector<FoamPhase>& phases,
+               bool grain_zones, PolyMesh& pm) {
+  for (std::size_t p = 0; p < phases.size(); ++p) {
     std::vector<int> cells;
     for (int t = 0; t < pm.cells; ++t)
-      if (m.phase[t] == static_cast<int>(p)) cells.push_back(t);
-    pm.cell_zones.emplace_back(m.phases[p].name, std::move(cells));
+      if (phase[t] == static_cast<int>(p)) cells.push_back(t);
+    pm.cell_zones.emplace_back(phases[p].name, std::move(cells));
   }
-  if (o.grain_zones) {
+  if (grain_zones) {
     std::map<int, std::vector<int>> by_grain;
-    for (int t = 0; t < pm.cells; ++t) by_grain[m.grain[t]].push_back(t);
+    for (int t = 0; t < pm.cells; ++t) by_grain[grain[t]].push_back(t);
     for (auto& [g, cells] : by_grain) pm.cell_zones.emplace_back("grain" + std::to_string(g), std::move(cells));
   }
   // faceZones: grain boundaries and phase interfaces; a face's flip says that it points
@@ -142,20 +143,18 @@ void add_zones(const ExportMesh& m, const FoamOptions& o, PolyMesh& pm) {
   PolyMesh::FaceZone interfaces{.name = "phaseInterfaces", .faces = {}, .flip = {}};
   for (int f = 0; f < pm.internal_faces(); ++f) {
     const int o_ = pm.owner[f], nb = pm.neighbour[f];
-    if (m.grain[o_] != m.grain[nb]) {
+    if (grain[o_] != grain[nb]) {
       grains.faces.push_back(f);
-      grains.flip.push_back(m.grain[o_] > m.grain[nb]);
+      grains.flip.push_back(grain[o_] > grain[nb]);
     }
-    if (m.phase[o_] != m.phase[nb]) {
+    if (phase[o_] != phase[nb]) {
       interfaces.faces.push_back(f);
-      interfaces.flip.push_back(m.phase[o_] > m.phase[nb]);
+      interfaces.flip.push_back(phase[o_] > phase[nb]);
     }
   }
   pm.face_zones.push_back(std::move(grains));
   pm.face_zones.push_back(std::move(interfaces));
 }
-
-}  // namespace
 
 PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   const CellMesh& mesh = m.mesh;
@@ -215,7 +214,7 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   pm.patches.push_back(empty);
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
 
-  add_zones(m, o, pm);
+  add_zones(m.grain, m.phase, m.phases, o.grain_zones, pm);
   return pm;
 }
 
@@ -224,9 +223,12 @@ void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const 
   const std::string loc = "constant/polyMesh";
   const double s = o.convert_to_meters;
   std::vector<double> xyz;
-  xyz.reserve(6 * pm.points2d.size());
-  for (double z : {0.0, pm.thickness})
-    for (const Vec2 p : pm.points2d) xyz.insert(xyz.end(), {s * p.x, s * p.y, s * z});
+  xyz.reserve(6 * pm.points2d.size() + 3 * pm.points3d.size());
+  if (pm.points2d.empty())
+    for (const Vec3 p : pm.points3d) xyz.insert(xyz.end(), {s * p.x, s * p.y, s * p.z});
+  else
+    for (double z : {0.0, pm.thickness})
+      for (const Vec2 p : pm.points2d) xyz.insert(xyz.end(), {s * p.x, s * p.y, s * z});
   FoamFile(dir / "points", "vectorField", loc, "points", bin).vectors(xyz).write();
 
   FoamFile faces(dir / "faces", bin ? "faceCompactList" : "faceList", loc, "faces", bin);
@@ -258,7 +260,9 @@ void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const 
           .number(s * p.separation.x)
           .text(" ")
           .number(s * p.separation.y)
-          .text(" 0);\n");
+          .text(" ")
+          .number(s * p.separation.z + 0.0)  // + 0: no -0
+          .text(");\n");
     }
     boundary.text("    }\n");
   }

@@ -14,6 +14,7 @@
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
 #include "export/foam.hpp"
+#include "checkmesh.hpp"
 #include "helpers.hpp"
 #include "kirsch.hpp"
 #include "grains/grain_mesh.hpp"
@@ -25,23 +26,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Cell counts per zone, as checkMesh reports them under "Checking basic cellZone addressing".
-std::map<std::string, int> zone_cells(const std::string& log) {
-  std::map<std::string, int> zones;
-  const auto start = log.find("Checking basic cellZone addressing");
-  if (start == std::string::npos) return zones;
-  std::istringstream in(log.substr(start));
-  std::string line;
-  std::getline(in, line);
-  std::getline(in, line);  // the column titles
-  const std::regex row(R"(^\s+(\S+)\s+(\d+)\s+\d+\s+\S+)");
-  while (std::getline(in, line)) {
-    std::smatch m;
-    if (!std::regex_search(line, m, row)) break;
-    zones[m[1]] = std::stoi(m[2]);
-  }
-  return zones;
-}
 
 // The xx components of the stress the solver wrote.
 std::vector<double> read_sigma_xx(const fs::path& file, std::size_t cells) {
@@ -68,18 +52,7 @@ Tessellation microstructure(bool periodic, bool binder = false) {
   return tessellate(o, rng);
 }
 
-void check_mesh_ok(const fs::path& case_dir, const ExportMesh& e) {
-  const auto r = test::run_openfoam(case_dir, "checkMesh");
-  INFO(r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0));
-  REQUIRE(r.exit_code == 0);
-  CHECK(r.out.find("Mesh OK.") != std::string::npos);
-  const auto zones = zone_cells(r.out);
-  for (std::size_t p = 0; p < e.phases.size(); ++p) {
-    const int written = static_cast<int>(std::count(e.phase.begin(), e.phase.end(), static_cast<int>(p)));
-    REQUIRE(zones.count(e.phases[p].name) == 1);
-    CHECK(zones.at(e.phases[p].name) == written);
-  }
-}
+void check_mesh_ok(const fs::path& case_dir, const ExportMesh& e) { test::check_mesh_ok(case_dir, e.phases, e.phase); }
 
 // The number after `label` in checkMesh's log (NaN when absent).
 double logged(const std::string& log, const std::string& label) {

@@ -1,0 +1,78 @@
+// The 3D OpenFOAM export's polyMesh, judged by checkMesh: periodic two-phase cells of
+// tetrahedra with the box's six sides as patches and as three cyclic pairs.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "checkmesh.hpp"
+#include "common/text_file.hpp"
+#include "export/foam_3d.hpp"
+#include "export/foam_file.hpp"
+#include "helpers.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+using namespace grainmesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+ExportMesh3 cell_3d(bool periodic) {
+  Tessellation3Options o;
+  o.grains = 20;
+  o.periodic = periodic;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
+  Rng rng(3);
+  const Tessellation3 t = tessellate_3d(o, rng);
+  return grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
+}
+
+// The polyMesh in DIR/constant/polyMesh with the least of a case checkMesh reads.
+void write_mesh_case(const fs::path& dir, const PolyMesh& pm, const FoamOptions& o) {
+  fs::create_directories(dir / "constant" / "polyMesh");
+  fs::create_directories(dir / "system");
+  write_polymesh(dir / "constant" / "polyMesh", pm, o);
+  write_text(dir / "system" / "controlDict", dictionary_header("system", "controlDict") +
+                                                  "application solidDisplacementFoam;\nstartFrom startTime;\nstartTime 0;\n"
+                                                  "stopAt endTime;\nendTime 1;\ndeltaT 1;\nwriteControl timeStep;\n"
+                                                  "writeInterval 1;\n");
+  write_text(dir / "system" / "fvSchemes", dictionary_header("system", "fvSchemes") +
+                                                "ddtSchemes {}\ngradSchemes {}\ndivSchemes {}\nlaplacianSchemes {}\n"
+                                                "interpolationSchemes {}\nsnGradSchemes {}\n");
+  write_text(dir / "system" / "fvSolution", dictionary_header("system", "fvSolution"));
+}
+
+}  // namespace
+
+TEST_CASE("3D polyMesh: checkMesh passes a periodic two-phase cell with six patches and with three cyclic pairs",
+          "[export][openfoam][mesh3d]") {
+  test::ScratchDir dir("foam3d");
+  const ExportMesh3 e = cell_3d(true);
+  for (const bool cyclic : {false, true}) {
+    CAPTURE(cyclic);
+    FoamOptions o;
+    o.cyclic = cyclic;
+    o.grain_zones = true;
+    const PolyMesh pm = build_polymesh_3d(e, o);
+    // Every tetrahedron's four faces: internal ones twice.
+    REQUIRE(pm.cells == static_cast<int>(e.mesh.tets.size()));
+    REQUIRE(2 * pm.internal_faces() + (pm.faces() - pm.internal_faces()) == 4 * pm.cells);
+    REQUIRE(pm.patches.size() == 6);
+    for (int a = 0; a < 3; ++a) REQUIRE(pm.patches[2 * a].size == pm.patches[2 * a + 1].size);  // periodic surfaces
+    for (const auto& p : pm.patches) CHECK(p.type == (cyclic ? "cyclic" : p.name == "right" ? "patch" : "symmetryPlane"));
+    const fs::path c = dir / (cyclic ? "cyclic" : "patches");
+    write_mesh_case(c, pm, o);
+    const auto zones = test::check_mesh_ok(c, e.phases, e.phase);
+    CHECK(zones.size() == e.phases.size() + 20);  // and one per grain
+  }
+}
+
+TEST_CASE("3D polyMesh: cyclic pairs need a periodic mesh", "[export][mesh3d]") {
+  FoamOptions o;
+  o.cyclic = true;
+  CHECK_THROWS_WITH(build_polymesh_3d(cell_3d(false), o), Catch::Contains("export.cyclic: the mesh is not periodic"));
+  o.cyclic = false;
+  const PolyMesh pm = build_polymesh_3d(cell_3d(false), o);
+  CHECK(pm.patches.size() == 6);
+}
