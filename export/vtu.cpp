@@ -186,17 +186,25 @@ void write_tessellation_vtp(const std::filesystem::path& file, const Tessellatio
   write_xml<vtkXMLPolyDataWriter>(file, poly.Get(), "VTP", Compression::zlib);
 }
 
+namespace {
+
+// The grid's points, in double precision, in their order.
+void set_points(vtkUnstructuredGrid* grid, const std::vector<Vec3>& p) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), p[i].x, p[i].y, p[i].z);
+  grid->SetPoints(points);
+}
+
+}  // namespace
+
 void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
                    const std::vector<std::pair<std::string, const std::vector<int>*>>& ints,
                    const std::vector<std::pair<std::string, const std::vector<double>*>>& reals,
                    const std::vector<FieldLabels>& labels) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
   vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(points);
+  set_points(grid, mesh.points);
   grid->Allocate(static_cast<vtkIdType>(mesh.tets.size()));
   for (const auto& t : mesh.tets) {
     const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
@@ -214,13 +222,8 @@ void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
 }
 
 void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(t.vertices.size()));
-  for (std::size_t i = 0; i < t.vertices.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), t.vertices[i].x, t.vertices[i].y, t.vertices[i].z);
   vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(points);
+  set_points(grid, t.vertices);
   grid->Allocate(static_cast<vtkIdType>(t.regions.size()));
   std::vector<int> grain, phase, region;
   for (std::size_t r = 0; r < t.regions.size(); ++r) {

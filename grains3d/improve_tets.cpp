@@ -253,8 +253,12 @@ void Improver::climb(int p, const std::vector<int>& star, double length, Vec3& a
     const Vec3 keep = points_[p];
     points_[p] = at;
     int worst = star[0];
+    double worst_q = q(tets_[worst]);
     for (int t : star)
-      if (q(tets_[t]) < q(tets_[worst])) worst = t;
+      if (const double v = q(tets_[t]); v < worst_q) {
+        worst = t;
+        worst_q = v;
+      }
     Vec3 gradient{};
     const double h = 1e-4 * length;
     for (int axis = 0; axis < 3; ++axis) {

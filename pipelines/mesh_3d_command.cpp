@@ -7,6 +7,7 @@
 #include "export/picture.hpp"
 #include "export/section.hpp"
 #include "export/vtu.hpp"
+#include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 
@@ -27,8 +28,7 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
     if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
   Mesh3Job job;
   GrainMesh3Options& o = job.options;
-  if (c.has("mesh.size") && c.has("mesh.h")) c.fail("mesh.h", "give either mesh.size or mesh.h, not both");
-  const std::string size_key = c.has("mesh.h") ? "mesh.h" : "mesh.size";
+  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
   if (c.has(size_key) && c.has("mesh.tets_per_grain"))
     c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
   const double box = t.width * t.height * t.depth;
@@ -104,12 +104,11 @@ Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& 
           {"fill_seconds", m.fill_seconds}};
 }
 
-void print_mesh_3d_summary(const GrainMesh3& m, std::size_t grains) {
-  const TetQuality q = measure_quality(m.mesh);
+void print_mesh_3d_summary(const Json& mesh, double seconds) {
   std::printf("grainmesh mesh: 3D, %zu points, %zu tetrahedra (%.0f per grain), q_min %.3f, q_mean %.3f, smallest "
               "dihedral %.1f deg, conforming (%.2f s)\n",
-              m.mesh.points.size(), m.mesh.tets.size(), static_cast<double>(m.mesh.tets.size()) / static_cast<double>(grains),
-              q.q_min, q.q_mean, q.min_dihedral_deg, m.seconds);
+              mesh["points"].get<std::size_t>(), mesh["cells"].get<std::size_t>(), mesh["cells_per_grain_mean"].get<double>(),
+              mesh["q_min"].get<double>(), mesh["q_mean"].get<double>(), mesh["min_dihedral_deg"].get<double>(), seconds);
 }
 
 void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
@@ -125,7 +124,7 @@ void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& te
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
-  print_mesh_3d_summary(m, t.grains.size());
+  print_mesh_3d_summary(report["mesh"], m.seconds);
   std::printf("  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n", out.string().c_str(), job.section * t.depth);
 }
 

@@ -31,8 +31,8 @@ GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job);
 Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m, const Mesh3Job& job,
                          Warnings& warnings);
 
-// The mesh's one-line summary, on stdout.
-void print_mesh_3d_summary(const GrainMesh3& m, std::size_t grains);
+// The mesh's one-line summary, on stdout, from the `mesh` write_mesh_3d_files reported.
+void print_mesh_3d_summary(const Json& mesh, double seconds);
 
 void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& config,
                          const std::filesystem::path& out);

@@ -28,6 +28,11 @@ const std::vector<std::string>& mesh_config_keys() {
   return keys;
 }
 
+std::string one_of_keys(const Config& c, const std::string& a, const std::string& b) {
+  if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
+  return c.has(b) ? b : a;
+}
+
 Tessellation read_tessellation_file(const std::filesystem::path& file) {
   return tessellation_from_json(read_text_file(file, "tessellation file"), file.string());
 }
@@ -39,12 +44,8 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   MeshJob job;
   GrainMeshOptions& o = job.options;
   // mesh.h and mesh.grading are the run config's names of mesh.size and mesh.gradient.
-  auto one_of = [&](const std::string& a, const std::string& b) {
-    if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
-    return c.has(b) ? b : a;
-  };
-  const std::string size_key = one_of("mesh.size", "mesh.h");
-  const std::string gradient_key = one_of("mesh.gradient", "mesh.grading");
+  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
+  const std::string gradient_key = one_of_keys(c, "mesh.gradient", "mesh.grading");
   if (c.has(size_key) && c.has("mesh.triangles_per_grain"))
     c.fail("mesh.triangles_per_grain", "give either " + size_key + " or mesh.triangles_per_grain, not both");
   if (c.has(size_key)) {

@@ -49,10 +49,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   StagedOutput staged(out, "run");
   Json report{{"config", c.source()}, {"config_fingerprint", config_fingerprint(c)}};
   report.update(write_tessellation_3d_files(staged.dir(), t, tess_job));
-  Json meshed = write_mesh_3d_files(staged.dir(), t, m, mesh_job, warnings);
-  meshed.erase("grains");    // the tessellation's count (grains with a cell) stands
-  meshed.erase("section_z");  // the same section for both pictures
-  report.update(meshed);
+  report.update(write_mesh_3d_files(staged.dir(), t, m, mesh_job, warnings));  // its grains and section_z: the same
   write_text_file(staged.dir() / "config.ini", config_ini(c));
   seconds["total"] = since(start);
   report["seconds"] = seconds;
@@ -62,7 +59,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   staged.commit();
   if (!summary) return;
   print_tessellation_3d_summary(t, seconds["tessellate"].get<double>());
-  print_mesh_3d_summary(m, t.grains.size());
+  print_mesh_3d_summary(report["mesh"], m.seconds);
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
               "config.ini, report.json}\n",
               out.string().c_str(), tess_job.section * t.depth);
