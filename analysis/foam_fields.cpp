@@ -104,10 +104,13 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
   return parse_values(file, text, value, type, faces);
 }
 
+CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells) {
+  return {read_cell_field(result_dir / "D", "vector", cells), read_cell_field(result_dir / kStressField, "symmTensor", cells)};
+}
+
 CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o) {
   const std::size_t cells = m.mesh.cells();
-  CaseFields f{read_cell_field(result_dir / "D", "vector", cells),
-               read_cell_field(result_dir / kStressField, "symmTensor", cells)};
+  CaseFields f = read_case_fields(result_dir, cells);
   if (o.delta_T == 0.0) return f;
   const std::vector<double> thermal = thermal_stress(m, o);
   for (std::size_t k = 0; k < cells; ++k)

@@ -41,6 +41,8 @@ struct CaseFields {
   FieldValues stress;        // symmTensor: xx xy xz yy yz zz
 };
 CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o);
+// The two fields as written, of a case of `cells` cells without a temperature change.
+CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells);
 
 // The solver's stress of every cell (plane stress: zz zero), and the length of the
 // displacement.

@@ -1,16 +1,14 @@
 #include "analysis/homogenise.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <exception>
-#include <thread>
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_recovery.hpp"
 #include "analysis/traction.hpp"
 #include "common/errors.hpp"
+#include "common/side_by_side.hpp"
 
 namespace grainmesh {
 
@@ -29,7 +27,7 @@ MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
 }
 
 std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
-  const double strain = load_strain(m.cell, m.phases, o);
+  const double strain = load_strain(foam_cell(m), o);
   std::vector<LoadCase> cases{LoadCase{"xx", {strain, 0.0, 0.0}}, LoadCase{"yy", {0.0, strain, 0.0}},
                               LoadCase{"xy", {0.0, 0.0, 0.5 * strain}}};
   if (o.delta_T == 0.0) return cases;
@@ -47,7 +45,7 @@ std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions
 FoamOptions load_case_options(const FoamOptions& o, const LoadCase& c) {
   FoamOptions out = o;
   out.cyclic = true;
-  out.strain = c.strain;
+  out.strain = {c.strain[0], c.strain[1], 0.0, 0.0, 0.0, c.strain[2]};
   out.delta_T = c.delta_T;
   return out;
 }
@@ -66,8 +64,8 @@ Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFiel
   const DiscreteTraction traction(pm, m, o, fields.displacement,
                                   read_cell_field(result_dir / kGradientField, "tensor", cells), fields.stress);
   const double s2 = o.convert_to_meters * o.convert_to_meters;
-  const Vec2 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
-  const Vec2 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
+  const Vec3 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
+  const Vec3 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
   // The shear through right and through top: equal in the continuum, nearly so here.
   return {{right.x, top.y, 0.5 * (right.y + top.x)}, traction.virial_stress()};
 }
@@ -78,7 +76,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                                  const FoamOptions& o, const Deadline& deadline,
                                  const std::filesystem::path& case_shown_as) {
   Homogenised h;
-  h.run = run_solver(case_dir, m, o, deadline, case_shown_as);
+  h.run = run_solver(case_dir, foam_cell(m), o, deadline, case_shown_as);
   h.fields = read_case_fields(h.run.result_dir, m, o);
   h.cell_stress = recovered_stress(h.fields, m, o);
   // The force through `right`: the load the cell carries. From sigma's face values there,
@@ -90,12 +88,12 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
     const PolyMesh::Patch& patch = pm.patches[right];
     const FieldValues sigma =
         read_patch_field(h.run.result_dir / kStressField, "symmTensor", "right", static_cast<std::size_t>(patch.size));
-    const Vec2 force = written_patch_force(pm, m, o, right, sigma);
+    const Vec3 force = written_patch_force(pm, m, o, right, sigma);
     h.sigma_xx = force.x / (m.cell.height() * pm.thickness * o.convert_to_meters * o.convert_to_meters);
   }
   // Left held, right moved by the displacement: the mean of d(ux)/dx over the cell is
   // exactly displacement / width.
-  h.strain_xx = o.cyclic ? cyclic_strain(m, o)[0] : o.displacement / m.cell.width();
+  h.strain_xx = o.cyclic ? cyclic_strain(foam_cell(m), o)[0] : o.displacement / m.cell.width();
   h.modulus = h.sigma_xx / h.strain_xx;
   h.volume_average = volume_average(h.fields, m);
   h.volume_average_modulus = h.volume_average.xx / h.strain_xx;
@@ -110,37 +108,24 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
   if (case_dirs.size() != loads.size()) throw GeometryError("solve_periodic: a case directory per load case is needed");
   PeriodicHomogenised h;
   h.cases.resize(loads.size());
-  std::vector<std::exception_ptr> failed(loads.size());
   auto solve = [&](int k) {
-    try {
-      LoadCaseResult& r = h.cases[k];
-      r.load = loads[k];
-      const FoamOptions ok = load_case_options(o, r.load);
-      const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
-      r.run = run_solver(case_dirs[k], m, ok, deadline, shown, r.load.name);
-      r.fields = read_case_fields(r.run.result_dir, m, ok);
-      r.cell_stress = recovered_stress(r.fields, m, ok);
-      Balanced balanced = periodic_stress(r.run.result_dir, r.fields, m, pm, ok);
-      r.stress = balanced.mean;
-      r.virial_stress = std::move(balanced.virial);
-      r.volume_average = volume_average(r.fields, m);
-    } catch (...) {
-      failed[k] = std::current_exception();
-    }
+    LoadCaseResult& r = h.cases[k];
+    r.load = loads[k];
+    const FoamOptions ok = load_case_options(o, r.load);
+    const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
+    r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
+    r.fields = read_case_fields(r.run.result_dir, m, ok);
+    r.cell_stress = recovered_stress(r.fields, m, ok);
+    Balanced balanced = periodic_stress(r.run.result_dir, r.fields, m, pm, ok);
+    r.stress = balanced.mean;
+    r.virial_stress = std::move(balanced.virial);
+    r.volume_average = volume_average(r.fields, m);
   };
-  // Side by side, `parallel` at a time (each solver is one process), each taking the next
-  // case as it finishes one; the shear case first, as it takes longest.
+  // Side by side, `parallel` at a time (each solver is one process); the shear case first,
+  // as it takes longest.
   std::vector<int> order{2, 0, 1};
   if (n == 4) order.insert(order.begin() + 1, 3);
-  std::atomic<int> next{0};
-  std::vector<std::thread> running;
-  for (int w = 0; w < std::clamp(parallel, 1, n); ++w)
-    running.emplace_back([&] {
-      for (int i = next++; i < n; i = next++) solve(order[static_cast<std::size_t>(i)]);
-    });
-  for (std::thread& t : running) t.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  side_by_side(order, parallel, solve);
   for (int k = 0; k < 3; ++k) {
     const LoadCaseResult& r = h.cases[k];
     // Per engineering strain: the shear case's tensor component is half its gamma.

@@ -1,5 +1,6 @@
 #include "analysis/solve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -52,13 +53,14 @@ double run_utility(const SolveJob& job, const std::vector<std::string>& argv) {
 
 // What the monitor watches for: convergence by grainmesh's measure, a stall, divergence (a
 // thousand times the displacement the load can give), the case's own stop.
-SolveMonitor::Options watch_options(const ExportMesh& m, const FoamOptions& o, const CaseStop& stop) {
-  const double load_scale = std::max(load_strain(m.cell, m.phases, o), thermal_strain(m.phases, o)) *
-                            std::max(m.cell.width(), m.cell.height());
+SolveMonitor::Options watch_options(const FoamCell& cell, const FoamOptions& o, const CaseStop& stop) {
+  const double load_scale = std::max(load_strain(cell, o), thermal_strain(cell.phases, o)) *
+                            std::max({cell.size.x, cell.size.y, cell.size.z});
   return {.tolerance = kSolverTolerance,
           .stall_corrections = 500,
           .diverged_range = 1e3 * load_scale * o.convert_to_meters,
-          .case_watches = {stop.alone != 1, stop.alone != 0},
+          .case_watches = {stop.alone < 0 || stop.alone == 0, stop.alone < 0 || stop.alone == 1,
+                           stop.alone < 0 || stop.alone == 2},
           .case_tolerance = stop.tolerance,
           .case_patience = 50,
           .stress_window = kStressWindow,
@@ -79,9 +81,9 @@ struct Followed {
 // few corrections more each time), up to eight times; each run's log is kept as log.*.N.
 // Each run is followed and killed as soon as it stalls, diverges or will not stop on its
 // own; its seconds are added to r.solver_seconds.
-Followed run_until_converged(const SolveJob& job, const ExportMesh& m, const FoamOptions& o, SolveRun& r) {
-  const CaseStop stop = case_stop(m, o);
-  SolveMonitor::Options watch = watch_options(m, o, stop);
+Followed run_until_converged(const SolveJob& job, const FoamCell& cell, const FoamOptions& o, SolveRun& r) {
+  const CaseStop stop = case_stop(cell, o);
+  SolveMonitor::Options watch = watch_options(cell, o, stop);
   auto solve = [&](SolveMonitor& monitor) {
     const auto started = std::chrono::steady_clock::now();
     const int status = run_child(job.command, job.case_dir, job.log, job.deadline, "solidDisplacementFoam",
@@ -101,7 +103,7 @@ Followed run_until_converged(const SolveJob& job, const ExportMesh& m, const Foa
       start = std::stoi(latest_time_dir(job.parallel ? job.case_dir / "processor0" : job.case_dir).filename().string());
       tighter *= 0.1;
       watch.case_tolerance = stop.tolerance * tighter;
-      write_control_dict(job.case_dir, m, o, kMaxCorrections, tighter, start);
+      write_control_dict(job.case_dir, cell, o, kMaxCorrections, tighter, start);
     }
     f.monitor = SolveMonitor(watch);
     f.status = solve(f.monitor);
@@ -109,7 +111,7 @@ Followed run_until_converged(const SolveJob& job, const ExportMesh& m, const Foa
       // Converged by the measure, but OpenFOAM's own residual of a component near zero is
       // noise: solved again to exactly where the measure was met (the same corrections, one
       // process, so the same numbers), and written there.
-      write_control_dict(job.case_dir, m, o, start + f.monitor.converged_at(), tighter, start);
+      write_control_dict(job.case_dir, cell, o, start + f.monitor.converged_at(), tighter, start);
       f.monitor = SolveMonitor(watch);
       f.status = solve(f.monitor);
     }
@@ -122,11 +124,11 @@ Followed run_until_converged(const SolveJob& job, const ExportMesh& m, const Foa
 }
 
 // Throws SolveError, with what to do about it, unless the solve converged.
-void check_converged(const SolveJob& job, const Followed& f, const ExportMesh& m, const FoamOptions& o) {
+void check_converged(const SolveJob& job, const Followed& f, const FoamCell& cell, const FoamOptions& o) {
   const SolveMonitor& monitor = f.monitor;
   const std::string advice =
-      harmonic_stiffness(m, o) && stiffness_contrast(m, o) > 3.0
-          ? ": the stiffness contrast " + to_text(stiffness_contrast(m, o), 3) +
+      harmonic_stiffness(cell, o) && stiffness_contrast(cell.phases, o) > 3.0
+          ? ": the stiffness contrast " + to_text(stiffness_contrast(cell.phases, o), 3) +
                 " is too high for export.stiffness_interpolation = harmonic; use auto or linear"
           : ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
   const SolveMonitor::State state = monitor.state();
@@ -150,7 +152,7 @@ void check_converged(const SolveJob& job, const Followed& f, const ExportMesh& m
 
 }  // namespace
 
-SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell, const FoamOptions& o,
                     const Deadline& deadline, const std::filesystem::path& case_shown_as, const std::string& load_case) {
   check_installed(o);
   const std::filesystem::path shown = case_shown_as.empty() ? case_dir : case_shown_as;
@@ -166,8 +168,8 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, 
                      .see = "; see " + (shown / "log.solidDisplacementFoam").string()};
   SolveRun r;
   if (job.parallel) r.decompose_seconds = run_utility(job, {"decomposePar", "-force"});
-  const Followed f = run_until_converged(job, m, o, r);
-  check_converged(job, f, m, o);
+  const Followed f = run_until_converged(job, cell, o, r);
+  check_converged(job, f, cell, o);
   if (job.parallel) r.reconstruct_seconds = run_utility(job, {"reconstructPar", "-latestTime"});
   r.corrections = f.total;
   r.final_residual = f.monitor.measure();

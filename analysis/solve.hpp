@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "common/deadline.hpp"
 #include "export/foam.hpp"
@@ -13,7 +14,7 @@ namespace grainmesh {
 struct SolveRun {
   int corrections = 0;                          // solver corrections
   double final_residual = 0.0;                  // the convergence measure at the last (solve_monitor.hpp)
-  std::array<double, 2> component_residuals{};  // OpenFOAM's own residuals of Dx and Dy there
+  std::vector<double> component_residuals;      // OpenFOAM's own residuals of Dx, Dy (and Dz in 3D) there
   double stress_change = 0.0;                   // the largest relative change of the effective stress
                                                 // over the last kStressWindow corrections
   std::filesystem::path result_dir;             // the time directory holding the fields
@@ -22,13 +23,14 @@ struct SolveRun {
   double solver_seconds = 0.0, decompose_seconds = 0.0, reconstruct_seconds = 0.0;
 };
 
-// Runs solidDisplacementFoam in `case_dir` (written by write_foam_case for `m` with `o`),
+// Runs solidDisplacementFoam in `case_dir` (written by write_foam_case, or
+// write_foam_case_3d, for a mesh of `cell` with `o`),
 // following its log: it is stopped once converged (solve_monitor.hpp), or killed within
 // a few hundred corrections of stalling or diverging. Throws IoError when OpenFOAM is
 // missing, SolveError (one line naming the field and `load_case` when given, what
 // happened and what to do, and the log as found under `case_shown_as`, when given) when
 // it fails, and TimeLimitError when `deadline` passes.
-SolveRun run_solver(const std::filesystem::path& case_dir, const ExportMesh& m, const FoamOptions& o,
+SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell, const FoamOptions& o,
                     const Deadline& deadline = {}, const std::filesystem::path& case_shown_as = {},
                     const std::string& load_case = {});
 

@@ -11,7 +11,7 @@ namespace grainmesh {
 
 namespace {
 
-constexpr std::array<const char*, 2> kComponent{"x", "y"};
+constexpr std::array<const char*, 3> kComponent{"x", "y", "z"};
 
 // The number after `key` in `l`, or NaN when `key` is not there.
 double number_after(std::string_view l, std::string_view key) {
@@ -21,16 +21,18 @@ double number_after(std::string_view l, std::string_view key) {
   return std::strtod(rest.c_str(), nullptr);  // also reads "nan" and "inf"
 }
 
-// "(a b c)" after `key`: its first two numbers.
-bool vector_after(std::string_view l, std::string_view key, std::array<double, 2>& v) {
+// "(a b c)" after `key`: its three numbers.
+bool vector_after(std::string_view l, std::string_view key, std::array<double, 3>& v) {
   const auto at = l.find(key);
   if (at == std::string_view::npos) return false;
   const std::string rest(l.substr(at + key.size()));
   const char* p = rest.c_str();
   while (*p == ' ' || *p == '(') ++p;
   char* end = nullptr;
-  v[0] = std::strtod(p, &end);
-  v[1] = std::strtod(end, nullptr);
+  for (double& x : v) {
+    x = std::strtod(p, &end);
+    p = end;
+  }
   return true;
 }
 
@@ -54,8 +56,9 @@ SolveMonitor::State SolveMonitor::feed(std::string_view text) {
 void SolveMonitor::line(std::string_view l) {
   if (l.find("Solving for D") != std::string_view::npos) {
     const auto at = l.find("Solving for D") + 13;
-    const int c = at < l.size() && l[at] == 'y' ? 1 : (at < l.size() && l[at] == 'x' ? 0 : -1);
-    if (c < 0) return;  // Dz is never solved in 2D
+    const int c = at < l.size() && l[at] >= 'x' && l[at] <= 'z' ? l[at] - 'x' : -1;
+    if (c < 0) return;
+    if (c == 2) components_ = 3;  // Dz is solved in 3D only
     residual_[c] = number_after(l, "Initial residual = ");
     if (c == 0) ++corrections_;
     if (!std::isfinite(residual_[c]) && (state_ == State::running || state_ == State::converged)) {
@@ -65,17 +68,18 @@ void SolveMonitor::line(std::string_view l) {
     }
   } else if (l.find("areaIntegrate(") != std::string_view::npos && l.find(") of sigmaD = (") != std::string_view::npos) {
     // A symmTensor (xx xy xz yy yz zz) integrated over a side: the traction's components,
-    // xx and xy on left and right, xy and yy on bottom and top.
+    // xx xy xz on left and right, xy yy yz on bottom and top, xz yz zz on back and front.
     const auto open = l.find("areaIntegrate(") + 14;
     const std::string_view side = l.substr(open, l.find(')', open) - open);
-    const bool normal_x = side == "left" || side == "right";
+    const int normal = side == "left" || side == "right" ? 0 : side == "bottom" || side == "top" ? 1 : 2;
+    static constexpr std::array<std::array<int, 3>, 3> kRow{{{0, 1, 2}, {1, 3, 4}, {2, 4, 5}}};
     const std::string rest(l.substr(l.find(") of sigmaD = (") + 15));
     const char* p = rest.c_str();
     for (int k = 0; k < 6; ++k) {
       char* end = nullptr;
       const double v = std::strtod(p, &end);
       if (end == p) break;
-      if (k == 1 || k == (normal_x ? 0 : 3)) forces_.push_back(v);
+      if (std::find(kRow[normal].begin(), kRow[normal].end(), k) != kRow[normal].end()) forces_.push_back(v);
       p = end;
     }
   } else if (vector_after(l, "min(region0) of D =", low_)) {
@@ -102,10 +106,14 @@ void SolveMonitor::judge() {
     forces_.clear();
   }
   if (state_ != State::running && state_ != State::converged) return;  // stopped: kept as it was
-  std::array<double, 2> range{high_[0] - low_[0], high_[1] - low_[1]};
-  const double scale = std::max(range[0], range[1]);
+  std::array<double, 3> range{};
+  double scale = 0.0;
+  for (int c = 0; c < components_; ++c) {
+    range[c] = high_[c] - low_[c];
+    if (!(range[c] <= scale)) scale = range[c];  // NaN wins
+  }
   measure_ = 0.0;
-  for (int c = 0; c < 2; ++c) {
+  for (int c = 0; c < components_; ++c) {
     const double w = scale > 0.0 ? residual_[c] * range[c] / scale : residual_[c];
     if (!(w <= measure_)) {  // NaN wins
       measure_ = w;
@@ -119,7 +127,7 @@ void SolveMonitor::judge() {
   if (state_ == State::converged) {
     // Will the case's own stop come? Its residual must keep halving until below its tolerance.
     double own = 0.0;
-    for (int c = 0; c < 2; ++c)
+    for (int c = 0; c < components_; ++c)
       if (o_.case_watches[c]) own = std::max(own, residual_[c]);
     if (own < o_.case_tolerance) return;
     if (own < 0.5 * best_) {
@@ -149,7 +157,9 @@ std::string SolveMonitor::diagnosis() const {
   const std::string after = " after " + std::to_string(corrections_) + " corrections";
   if (state_ == State::diverging) {
     if (!std::isfinite(measure_)) return "the displacement's residual became " + to_text(measure_) + after;
-    return "the displacement grew to a range of " + to_text(std::max(high_[0] - low_[0], high_[1] - low_[1])) +
+    double range = 0.0;
+    for (int c = 0; c < components_; ++c) range = std::max(range, high_[c] - low_[c]);
+    return "the displacement grew to a range of " + to_text(range) +
            " m, a thousand times what the load can give," + after;
   }
   if (state_ == State::stalled)

@@ -30,7 +30,7 @@ class SolveMonitor {
     // The case's own stop (export/foam.hpp, CaseStop): OpenFOAM's residual of the watched
     // components below case_tolerance. After the measure converged, the case gets
     // case_patience corrections to halve its own; else it is stuck (a component near zero).
-    std::array<bool, 2> case_watches{true, true};
+    std::array<bool, 3> case_watches{true, true, true};
     double case_tolerance = 1e-8;
     int case_patience = 50;
     // The effective stress has settled when no correction of the last stress_window changed
@@ -54,11 +54,12 @@ class SolveMonitor {
   State state() const { return state_; }
 
   // Corrections so far; the one at which the measure first fell below the tolerance (0
-  // before); the measure at the last, and OpenFOAM's residuals of x and y there.
+  // before); the measure at the last, and OpenFOAM's residuals of the components solved
+  // there (x and y; z too in 3D).
   int corrections() const { return corrections_; }
   int converged_at() const { return converged_at_; }
   double measure() const { return measure_; }
-  const std::array<double, 2>& residuals() const { return residual_; }
+  std::vector<double> residuals() const { return {residual_.begin(), residual_.begin() + components_}; }
   // How much the logged forces changed at most over the last stress_window corrections,
   // relative to the largest of their components (infinite before that many corrections,
   // or when the case logs none).
@@ -74,7 +75,8 @@ class SolveMonitor {
   State state_ = State::running;
   std::string partial_;
   int corrections_ = 0, converged_at_ = 0;
-  std::array<double, 2> residual_{1.0, 1.0}, low_{0.0, 0.0}, high_{0.0, 0.0};
+  int components_ = 2;  // 3 once Dz is solved (a 3D case)
+  std::array<double, 3> residual_{1.0, 1.0, 1.0}, low_{}, high_{};
   double measure_ = 1.0;
   double best_ = 1e300;  // the measure (after convergence: the case's) when it last halved, and the correction it did
   int best_at_ = 0;

@@ -20,15 +20,41 @@ std::array<Vec2, 2> face_edge(const PolyMesh& pm, int f) {
 }
 
 // The face's area vector (metres squared), out of the cell centred at `owner_centre`
-// (metres), and its centre.
+// (metres), and its centre: a 2D case's side face from its edge (z 0, as the cell
+// centres), a 3D face as OpenFOAM has it (a triangle's own; a polygon's from the
+// triangles about its points' mean, centres weighted by area).
 struct FaceGeometry {
-  Vec2 S, centre;
+  Vec3 S, centre;
   double area;
 };
-FaceGeometry face_geometry(const PolyMesh& pm, int f, double scale, double thickness, Vec2 owner_centre) {
-  const auto [a, b] = face_edge(pm, f);
-  const Vec2 centre = 0.5 * scale * (a + b);
-  Vec2 S = thickness * scale * scale * Vec2{b.y - a.y, a.x - b.x};  // thickness and edge in metres
+FaceGeometry face_geometry(const PolyMesh& pm, int f, double scale, double thickness, Vec3 owner_centre) {
+  Vec3 S, centre;
+  if (pm.points3d.empty()) {
+    const auto [a, b] = face_edge(pm, f);
+    centre = Vec3{0.5 * scale * (a.x + b.x), 0.5 * scale * (a.y + b.y), 0.0};
+    S = thickness * scale * scale * Vec3{b.y - a.y, a.x - b.x, 0.0};  // thickness and edge in metres
+  } else {
+    const int first = pm.face_start[f], n = pm.face_start[f + 1] - first;
+    auto point = [&](int k) { return scale * pm.points3d[pm.face_points[first + k % n]]; };
+    if (n == 3) {
+      centre = (point(0) + point(1) + point(2)) / 3.0;
+      S = 0.5 * cross(point(1) - point(0), point(2) - point(0));
+    } else {
+      Vec3 mean;
+      for (int k = 0; k < n; ++k) mean += point(k);
+      mean = mean / n;
+      Vec3 sum_c;
+      double sum_a = 0.0;
+      for (int k = 0; k < n; ++k) {
+        const Vec3 t = cross(point(k + 1) - point(k), mean - point(k));
+        const double a = norm(t);
+        S += 0.5 * t;
+        sum_c += a * (point(k) + point(k + 1) + mean);
+        sum_a += a;
+      }
+      centre = sum_c / (3.0 * sum_a);
+    }
+  }
   if (dot(S, centre - owner_centre) < 0.0) S = -S;
   return {S, centre, norm(S)};
 }
@@ -41,112 +67,128 @@ int patch_index(const PolyMesh& pm, const std::string& name) {
   return -1;
 }
 
-DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D,
-                                   FieldValues grad_D, FieldValues sigma)
+DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, const std::vector<int>& phase,
+                                   const FoamOptions& o, std::vector<Vec3> centre, std::vector<double> volume,
+                                   FieldValues D, FieldValues grad_D, FieldValues sigma)
     : pm_(pm),
       scale_(o.convert_to_meters),
       thickness_(pm.thickness),
-      harmonic_(harmonic_stiffness(m, o)),
+      dimensions_(cell.dimensions()),
+      centre_(std::move(centre)),
+      volume_(std::move(volume)),
+      harmonic_(harmonic_stiffness(cell, o)),
       D_(std::move(D)),
       grad_(std::move(grad_D)),
       sigma_(std::move(sigma)) {
-  centre_.resize(pm.cells);
   gamma_.resize(pm.cells);
-  volume_.resize(pm.cells);
-  for (int c = 0; c < pm.cells; ++c) {
-    centre_[c] = scale_ * cell_centroid(m.mesh, static_cast<std::size_t>(c));
-    volume_[c] = cell_area(m.mesh, static_cast<std::size_t>(c)) * thickness_ * scale_ * scale_ * scale_;
-    gamma_[c] = lame(m.phases[m.phase[c]], o.plane_stress).gamma();
-  }
+  for (int c = 0; c < pm.cells; ++c) gamma_[c] = lame(cell.phases[phase[c]], o.plane_stress).gamma();
   patch_of_face_.assign(pm.faces(), -1);
-  jump_.assign(pm.patches.size(), {0.0, 0.0});
+  jump_.assign(pm.patches.size(), Vec3{});
   for (std::size_t p = 0; p < pm.patches.size(); ++p) {
     const PolyMesh::Patch& patch = pm.patches[p];
     for (int f = patch.start; f < patch.start + patch.size; ++f) patch_of_face_[f] = static_cast<int>(p);
     if (patch.type != "cyclic") continue;
-    // The jump the case gives the low patch of each pair: the macroscopic strain times
-    // the separation; the high patch has its negative.
-    const std::array<double, 3> e = cyclic_strain(m, o);  // xx, yy, xy
-    const bool x_pair = patch.name == "left" || patch.name == "right";
-    const double L = scale_ * (x_pair ? m.cell.width() : m.cell.height());
-    std::array<double, 2> j = x_pair ? std::array<double, 2>{e[0] * L, e[2] * L} : std::array<double, 2>{e[2] * L, e[1] * L};
-    if (patch.name == "right" || patch.name == "top") j = {-j[0], -j[1]};
-    jump_[p] = j;
+    // The jump the case gives the low patch of each pair; the high patch has its negative.
+    const Vec3 j = cyclic_jump(cyclic_strain(cell, o), patch.name, cell, scale_);
+    const bool high = patch.name == "right" || patch.name == "top" || patch.name == "front";
+    jump_[p] = high ? -j : j;
+  }
+}
+
+DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D,
+                                   FieldValues grad_D, FieldValues sigma)
+    : DiscreteTraction(pm, foam_cell(m), m.phase, o, {}, {}, std::move(D), std::move(grad_D), std::move(sigma)) {
+  centre_.resize(pm.cells);
+  volume_.resize(pm.cells);
+  for (int c = 0; c < pm.cells; ++c) {
+    const Vec2 centroid = cell_centroid(m.mesh, static_cast<std::size_t>(c));
+    centre_[c] = scale_ * Vec3{centroid.x, centroid.y, 0.0};
+    volume_[c] = cell_area(m.mesh, static_cast<std::size_t>(c)) * thickness_ * scale_ * scale_ * scale_;
+  }
+}
+
+DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh3& m, const FoamOptions& o, FieldValues D,
+                                   FieldValues grad_D, FieldValues sigma)
+    : DiscreteTraction(pm, foam_cell(m), m.phase, o, {}, {}, std::move(D), std::move(grad_D), std::move(sigma)) {
+  centre_.resize(pm.cells);
+  volume_.resize(pm.cells);
+  for (int c = 0; c < pm.cells; ++c) {
+    const std::array<int, 4>& t = m.mesh.tets[static_cast<std::size_t>(c)];
+    const auto& p = m.mesh.points;
+    centre_[c] = (0.25 * scale_) * (p[t[0]] + p[t[1]] + p[t[2]] + p[t[3]]);
+    volume_[c] = tet_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) * scale_ * scale_ * scale_;
   }
 }
 
 DiscreteTraction::Neighbour DiscreteTraction::neighbour(int f) const {
-  if (f < pm_.internal_faces()) return {pm_.neighbour[f], {}, {0.0, 0.0}};
+  if (f < pm_.internal_faces()) return {pm_.neighbour[f], {}, {}};
   const int p = patch_of_face_[f];
   const PolyMesh::Patch& patch = pm_.patches[p];
   if (patch.type != "cyclic") return {};
   const PolyMesh::Patch& other = pm_.patches[patch_index(pm_, patch.neighbour_patch)];
   // Face k of a cyclic patch pairs with face k of its neighbour patch, which lies at this
   // one plus the separation.
-  return {pm_.owner[other.start + (f - patch.start)], -scale_ * Vec2{patch.separation.x, patch.separation.y}, jump_[p]};
+  return {pm_.owner[other.start + (f - patch.start)], -(scale_ * patch.separation), jump_[p]};
 }
 
-Vec2 DiscreteTraction::face_force(int f) const {
+Vec3 DiscreteTraction::face_force(int f) const {
   const Neighbour nb = neighbour(f);
   if (nb.cell < 0) throw GeometryError("face " + std::to_string(f) + " is neither internal nor cyclic");
   const int P = pm_.owner[f], N = nb.cell;
-  const Vec2 CP = centre_[P], CN = centre_[N] + nb.shift;
+  const Vec3 CP = centre_[P], CN = centre_[N] + nb.shift;
   const FaceGeometry g = face_geometry(pm_, f, scale_, thickness_, CP);
-  const Vec2 n = g.S / g.area;
+  const Vec3 n = g.S / g.area;
   // OpenFOAM's linear weight of the owner, and its non-orthogonal delta and correction.
   const double own = std::abs(dot(g.S, g.centre - CP)), nei = std::abs(dot(g.S, CN - g.centre));
   const double w = nei / (own + nei);
-  const Vec2 d = CN - CP;
+  const Vec3 d = CN - CP;
   const double delta = 1.0 / std::max(dot(n, d), 0.05 * norm(d));
-  const Vec2 k = n - delta * d;
+  const Vec3 k = n - delta * d;
   // OpenFOAM's harmonic is 1 / reverseLinear(1 / gamma): each side's compliance weighted
   // by its own distance to the face, as in a series of two springs.
   const double gamma = harmonic_ ? 1.0 / ((1 - w) / gamma_[P] + w / gamma_[N]) : w * gamma_[P] + (1 - w) * gamma_[N];
   // Tensors as OpenFOAM orders them: grad(D)_ij = d D_j / d x_i, at index 3 i + j;
-  // sigma symmetric at xx 0, xy 1, yy 3.
+  // sigma symmetric: xx xy xz yy yz zz.
+  static constexpr int kSymmetric[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
   auto grad = [&](int c, int i, int j) { return grad_[c][3 * i + j]; };
-  auto sig = [&](int c, int i, int j) {
-    const double* s = sigma_[c];
-    return i == 0 && j == 0 ? s[0] : i == 1 && j == 1 ? s[3] : s[1];
-  };
-  auto X = [&](int c, int i, int j) { return sig(c, i, j) - gamma_[c] * grad(c, i, j); };
-  const double Sv[2] = {g.S.x, g.S.y}, kv[2] = {k.x, k.y};
-  double F[2] = {0.0, 0.0};
-  for (int j = 0; j < 2; ++j) {
+  auto X = [&](int c, int i, int j) { return sigma_[c][kSymmetric[i][j]] - gamma_[c] * grad(c, i, j); };
+  Vec3 F;
+  for (int j = 0; j < dimensions_; ++j) {
     double sn = delta * (D_[N][j] - nb.jump[j] - D_[P][j]);
-    for (int i = 0; i < 2; ++i) sn += kv[i] * (w * grad(P, i, j) + (1 - w) * grad(N, i, j));
+    for (int i = 0; i < dimensions_; ++i) sn += k[i] * (w * grad(P, i, j) + (1 - w) * grad(N, i, j));
     F[j] = gamma * g.area * sn;
-    for (int i = 0; i < 2; ++i) F[j] += Sv[i] * (w * X(P, i, j) + (1 - w) * X(N, i, j));
+    for (int i = 0; i < dimensions_; ++i) F[j] += g.S[i] * (w * X(P, i, j) + (1 - w) * X(N, i, j));
   }
-  return {F[0], F[1]};
+  return F;
 }
 
-Vec2 DiscreteTraction::patch_force(int patch) const {
+Vec3 DiscreteTraction::patch_force(int patch) const {
   const PolyMesh::Patch& p = pm_.patches[patch];
-  Vec2 sum{};
+  Vec3 sum{};
   for (int f = p.start; f < p.start + p.size; ++f) sum += face_force(f);
   return sum;
 }
 
-Vec2 DiscreteTraction::cell_imbalance(int c) const {
+Vec3 DiscreteTraction::cell_imbalance(int c) const {
   // Every face of every cell, once: a slow scan, for checks.
-  Vec2 sum{};
+  Vec3 sum{};
   for (int f = 0; f < pm_.faces(); ++f) {
     const bool owned = pm_.owner[f] == c, neighboured = f < pm_.internal_faces() && pm_.neighbour[f] == c;
     if (!owned && !neighboured) continue;
     const int p = patch_of_face_[f];
     if (p >= 0 && pm_.patches[p].type == "empty") continue;
-    if (p >= 0 && pm_.patches[p].type != "cyclic") return {std::numeric_limits<double>::quiet_NaN(), 0.0};
-    const Vec2 F = face_force(f);
+    if (p >= 0 && pm_.patches[p].type != "cyclic") return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
+    const Vec3 F = face_force(f);
     sum += owned ? F : -F;
   }
   return sum;
 }
 
 std::vector<StressState> DiscreteTraction::virial_stress() const {
+  if (dimensions_ != 2) throw GeometryError("virial_stress: of a 2D case only");
   std::vector<StressState> out(static_cast<std::size_t>(pm_.cells));
-  auto add = [&](int c, Vec2 face_centre, Vec2 F) {
-    const Vec2 r = face_centre - centre_[c];
+  auto add = [&](int c, Vec3 face_centre, Vec3 F) {
+    const Vec3 r = face_centre - centre_[c];
     StressState& s = out[static_cast<std::size_t>(c)];
     s.xx += r.x * F.x, s.yy += r.y * F.y, s.xy += 0.5 * (r.x * F.y + r.y * F.x);
   };
@@ -156,8 +198,8 @@ std::vector<StressState> DiscreteTraction::virial_stress() const {
     if (p >= 0 && pm_.patches[p].type != "cyclic")
       throw GeometryError("virial_stress: patch " + pm_.patches[p].name + " is neither cyclic nor empty");
     const int P = pm_.owner[f];
-    const Vec2 F = face_force(f);
-    const Vec2 centre = face_geometry(pm_, f, scale_, thickness_, centre_[P]).centre;
+    const Vec3 F = face_force(f);
+    const Vec3 centre = face_geometry(pm_, f, scale_, thickness_, centre_[P]).centre;
     add(P, centre, F);
     if (p < 0) add(pm_.neighbour[f], centre, -F);  // a cyclic face's partner adds its own
   }
@@ -168,15 +210,15 @@ std::vector<StressState> DiscreteTraction::virial_stress() const {
   return out;
 }
 
-Vec2 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
+Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
                          const FieldValues& sigma) {
   const PolyMesh::Patch& p = pm.patches[patch];
-  Vec2 sum{};
+  Vec3 sum{};
   for (int f = p.start; f < p.start + p.size; ++f) {
-    const FaceGeometry g =
-        face_geometry(pm, f, o.convert_to_meters, pm.thickness, o.convert_to_meters * cell_centroid(m.mesh, static_cast<std::size_t>(pm.owner[f])));
+    const Vec2 owner = o.convert_to_meters * cell_centroid(m.mesh, static_cast<std::size_t>(pm.owner[f]));
+    const FaceGeometry g = face_geometry(pm, f, o.convert_to_meters, pm.thickness, Vec3{owner.x, owner.y, 0.0});
     const double* s = sigma[static_cast<std::size_t>(f - p.start)];
-    sum += Vec2{g.S.x * s[0] + g.S.y * s[1], g.S.x * s[1] + g.S.y * s[3]};
+    sum += Vec3{g.S.x * s[0] + g.S.y * s[1], g.S.x * s[1] + g.S.y * s[3], 0.0};
   }
   return sum;
 }

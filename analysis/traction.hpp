@@ -18,7 +18,9 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
 #include "common/geometry.hpp"
+#include "common/vec3.hpp"
 #include "export/foam.hpp"
+#include "export/foam_3d.hpp"
 
 namespace grainmesh {
 
@@ -28,42 +30,51 @@ class DiscreteTraction {
   // cyclic patch's jump in D (metres; the low patch's, the high one has its negative).
   DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
+  // The same for a 3D case (write_foam_case_3d).
+  DiscreteTraction(const PolyMesh& pm, const ExportMesh3& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
+                   FieldValues sigma);
 
-  // The force (N; x and y) through face f out of its owner: internal and cyclic faces.
-  Vec2 face_force(int f) const;
+  // The force (N; z zero in 2D) through face f out of its owner: internal and cyclic faces.
+  Vec3 face_force(int f) const;
   // The sum over a cyclic patch's faces.
-  Vec2 patch_force(int patch) const;
+  Vec3 patch_force(int patch) const;
   // The sum of the forces out of cell c through all its faces, where every face of it is
   // internal, cyclic or empty (else NaN): zero at convergence.
-  Vec2 cell_imbalance(int c) const;
-  // Each cell's stress as its face forces give it: the virial (1 / V) sum over its faces
-  // of (x_f - x_c) F_f, symmetrised (xx, yy, xy; zz 0), on a mesh whose faces are all
-  // internal, cyclic or empty (else GeometryError). Balanced cells make it exact in the
-  // sum: the cells' virials add up, area-weighted, to the forces through the sides, so a
-  // phase's area mean of it is a mean stress that agrees with the cell's exactly.
+  Vec3 cell_imbalance(int c) const;
+  // Each cell's stress as its face forces give it (2D cases): the virial (1 / V) sum over
+  // its faces of (x_f - x_c) F_f, symmetrised (xx, yy, xy; zz 0), on a mesh whose faces
+  // are all internal, cyclic or empty (else GeometryError). Balanced cells make it exact
+  // in the sum: the cells' virials add up, area-weighted, to the forces through the sides,
+  // so a phase's area mean of it is a mean stress that agrees with the cell's exactly.
   std::vector<StressState> virial_stress() const;
 
  private:
+  // What both constructors share: the cells' centres (metres) and volumes (cubic
+  // metres), their phases.
+  DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, const std::vector<int>& phase, const FoamOptions& o,
+                   std::vector<Vec3> centre, std::vector<double> volume, FieldValues D, FieldValues grad_D,
+                   FieldValues sigma);
   struct Neighbour {
     int cell = -1;
-    Vec2 shift{};  // added to the neighbour's centre (metres)
-    std::array<double, 2> jump{};  // D seen across the face = D of the neighbour - jump
+    Vec3 shift{};  // added to the neighbour's centre (metres)
+    Vec3 jump{};   // D seen across the face = D of the neighbour - jump
   };
   Neighbour neighbour(int f) const;
 
   const PolyMesh& pm_;
   double scale_, thickness_;
-  std::vector<Vec2> centre_;          // cell centres, metres
+  int dimensions_;
+  std::vector<Vec3> centre_;          // cell centres, metres
   std::vector<double> gamma_;         // 2 mu + lambda per cell
   std::vector<double> volume_;        // cubic metres
   bool harmonic_;
   FieldValues D_, grad_, sigma_;
   std::vector<int> patch_of_face_;    // boundary faces: their patch; internal: -1
-  std::vector<std::array<double, 2>> jump_;  // per patch
+  std::vector<Vec3> jump_;            // per patch
 };
 
 // The force through a plain patch from sigma's face values written there.
-Vec2 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
+Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
                          const FieldValues& sigma_on_patch);
 
 // The index of patch `name` in pm.patches; -1 when there is none.

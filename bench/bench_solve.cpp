@@ -42,7 +42,7 @@ Json solve_case(const Case& c, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const PolyMesh pm = write_foam_case(dir, e, o);
   const auto start = std::chrono::steady_clock::now();
-  Json row{{"cells", m.mesh.triangles.size()}, {"stiffness_contrast", stiffness_contrast(e, o)}};
+  Json row{{"cells", m.mesh.triangles.size()}, {"stiffness_contrast", stiffness_contrast(e.phases, o)}};
   try {
     const Homogenised h = solve_and_homogenise(dir, e, pm, o);
     row["corrections"] = h.run.corrections;

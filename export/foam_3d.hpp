@@ -1,9 +1,10 @@
 // OpenFOAM output of 3D grain meshes: the tetrahedra are the cells (no extrusion), with
 // phase (and grain) cellZones, grain-boundary and phase-interface faceZones, and the box's
-// six sides as patches or as three cyclic pairs. The case and its solve are to follow
-// (issue 24); the polyMesh is written by write_polymesh (foam.hpp).
+// six sides as patches or as three cyclic pairs; the case around it is the 2D one's
+// (write_case_files, foam.hpp), solved by the same solidDisplacementFoam in 3D.
 #pragma once
 
+#include <filesystem>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -28,6 +29,8 @@ struct ExportMesh3 {
 
 // A 3D grain mesh with its tessellation's box and phases.
 ExportMesh3 grain_export_mesh_3d(const Tessellation3& t, const GrainMesh3& m);
+// What the case and its solve need of it (foam.hpp): the phases, the box, periodicity.
+FoamCell foam_cell(const ExportMesh3& m);
 
 // The patches of the box's sides, low then high along x, y, z.
 inline constexpr const char* kSideNames3[6] = {"left", "right", "bottom", "top", "back", "front"};
@@ -41,5 +44,13 @@ inline constexpr const char* kSideNames3[6] = {"left", "right", "bottom", "top",
 // ConfigError for export.cyclic on a mesh that is not periodic, GeometryError when a
 // boundary face lies on no side or a cyclic side's faces do not pair.
 PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
+
+// Writes the complete 3D case into `dir` as write_foam_case does a 2D one: the polyMesh,
+// 0/D (under the mixed load, or a cyclic case's mean strain: all six components), 0/E,
+// 0/nu, the properties (planeStress no), the system dictionaries (the force through
+// right, and top and front when cyclic, logged), Allrun, case.foam. Throws ConfigError
+// for export.plane_stress or load.delta_T (not solved in 3D yet) and as check_case,
+// GeometryError as build_polymesh_3d. Returns the mesh it wrote.
+PolyMesh write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& options);
 
 }  // namespace grainmesh

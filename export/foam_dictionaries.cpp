@@ -18,15 +18,17 @@ namespace {
 // runTimeControl once OpenFOAM's own residual is below the tolerance (case_stop), or at
 // `end_step`. The force through the loaded sides and the range of every displacement
 // component are logged each step, for grainmesh's solve (solve_monitor.hpp).
-std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step, double tighter, int start) {
+std::string control_dict(const FoamCell& cell, const FoamOptions& o, int end_step, double tighter, int start) {
   const std::string steps = std::to_string(end_step);
-  CaseStop stop = case_stop(m, o);
+  CaseStop stop = case_stop(cell, o);
   stop.tolerance *= tighter;
-  // The force through the loaded sides, each correction: right, and top for a cyclic case
-  // (there from the stress interpolated to the faces: a measure of settling, not the answer).
+  // The force through the loaded sides, each correction: right, and top (and front in 3D)
+  // for a cyclic case (there from the stress interpolated to the faces: a measure of
+  // settling, not the answer).
   std::string range;
-  for (const char* side : {"right", "top"}) {
-    if (std::string(side) == "top" && !o.cyclic) continue;
+  for (const char* side : {"right", "top", "front"}) {
+    if (std::string(side) != "right" && !o.cyclic) continue;
+    if (std::string(side) == "front" && cell.dimensions() == 2) continue;
     range += std::string("    force_") + side + "\n    {\n        type            surfaceFieldValue;\n"
              "        libs            (fieldFunctionObjects);\n        fields          (" + kStressField + ");\n"
              "        operation       areaIntegrate;\n        regionType      patch;\n        name            " + side +
@@ -81,33 +83,41 @@ std::string control_dict(const ExportMesh& m, const FoamOptions& o, int end_step
 
 }  // namespace
 
-void write_decompose_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
-  // The factor pair whose blocks are nearest square.
-  int nx = o.processes, ny = 1;
+void write_decompose_dict(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& o) {
+  // The factors whose blocks are nearest cubic (square in 2D, nz = 1).
+  std::array<int, 3> n{o.processes, 1, 1};
   double best = 1e300;
-  for (int a = 1; a <= o.processes; ++a) {
-    if (o.processes % a != 0) continue;
-    const int b = o.processes / a;
-    const double aspect = (m.cell.width() / a) / (m.cell.height() / b);
-    const double badness = std::abs(std::log(aspect));
-    if (badness < best) best = badness, nx = a, ny = b;
-  }
+  const int depth = cell.dimensions() == 3 ? o.processes : 1;
+  for (int a = 1; a <= o.processes; ++a)
+    for (int c = 1; c <= depth; ++c) {
+      if (o.processes % (a * c) != 0) continue;
+      const int b = o.processes / (a * c);
+      double badness = std::abs(std::log((cell.size.x / a) / (cell.size.y / b)));
+      if (cell.dimensions() == 3)
+        badness += std::abs(std::log((cell.size.y / b) / (cell.size.z / c))) +
+                   std::abs(std::log((cell.size.x / a) / (cell.size.z / c)));
+      if (badness < best) best = badness, n = {a, b, c};
+    }
   std::string cyclic;
   if (o.cyclic)
     cyclic = "\n// Each cyclic face on the processor of its partner: the jump of D is applied there.\n"
              "constraints\n{\n    cyclics\n    {\n        type    preservePatches;\n"
-             "        patches (left right bottom top);\n    }\n}\n";
+             "        patches (left right bottom top" + std::string(cell.dimensions() == 3 ? " back front" : "") +
+             ");\n    }\n}\n";
   write_text(dir / "system/decomposeParDict",
              dictionary_header("system", "decomposeParDict") + "numberOfSubdomains " + std::to_string(o.processes) +
-                 ";\n\n// Blocks of the cell, as near square as the count allows.\nmethod          hierarchical;\n\n"
-                 "coeffs\n{\n    n           (" + std::to_string(nx) + " " + std::to_string(ny) +
-                 " 1);\n    order       xyz;\n}\n" + cyclic);
+                 ";\n\n// Blocks of the cell, as near " + (cell.dimensions() == 3 ? "cubic" : "square") +
+                 " as the count allows.\nmethod          hierarchical;\n\n"
+                 "coeffs\n{\n    n           (" + std::to_string(n[0]) + " " + std::to_string(n[1]) + " " +
+                 std::to_string(n[2]) + ");\n    order       xyz;\n}\n" + cyclic);
 }
 
-std::array<double, 3> cyclic_strain(const ExportMesh& m, const FoamOptions& o) {
-  if (o.strain != std::array<double, 3>{}) return o.strain;
-  return {o.displacement / m.cell.width(), 0.0, 0.0};
+std::array<double, 6> cyclic_strain(const FoamCell& cell, const FoamOptions& o) {
+  if (o.strain != std::array<double, 6>{}) return o.strain;
+  return {o.displacement / cell.size.x};
 }
+
+FoamCell foam_cell(const ExportMesh& m) { return {m.phases, {m.cell.width(), m.cell.height(), 0.0}, m.periodic}; }
 
 std::vector<std::string> foam_environment() {
   const char* project = std::getenv("WM_PROJECT_DIR");
@@ -126,38 +136,45 @@ std::vector<std::string> solver_command(const FoamOptions& o) {
   return {"mpirun", "--oversubscribe", "-np", std::to_string(o.processes), "solidDisplacementFoam", "-parallel"};
 }
 
-CaseStop case_stop(const ExportMesh& m, const FoamOptions& o) {
-  // One material under a load that moves it along one axis only: the other component is
-  // exactly zero and its residual noise. Its error follows the loaded one's (its range
-  // stays about ten times that one's residual, measured), so the loaded one alone at a
-  // hundredth of the tolerance also meets the scale-aware criterion.
+CaseStop case_stop(const FoamCell& cell, const FoamOptions& o) {
+  // One material under a load that moves it along one axis only: the other components are
+  // exactly zero and their residuals noise. Their error follows the loaded one's (their
+  // range stays about ten times that one's residual, measured), so the loaded one alone at
+  // a hundredth of the tolerance also meets the scale-aware criterion.
   bool one_material = true;
-  for (const FoamPhase& p : m.phases)
-    one_material = one_material && p.youngs_modulus == m.phases.front().youngs_modulus &&
-                   p.poisson_ratio == m.phases.front().poisson_ratio;
+  for (const FoamPhase& p : cell.phases)
+    one_material = one_material && p.youngs_modulus == cell.phases.front().youngs_modulus &&
+                   p.poisson_ratio == cell.phases.front().poisson_ratio;
   // A periodic case's effective stress settles later than a mixed one's (measured: at a
   // residual near 1e-7 under a normal strain, lower under shear): its stop a hundred times
   // tighter, so that it rarely needs continuing (analysis/solve.cpp).
   const double tolerance = o.cyclic ? 0.01 * kSolverTolerance : kSolverTolerance;
-  // A temperature change loads both components alike.
+  // A temperature change loads every component alike.
   if (!one_material || o.delta_T != 0.0) return {.alone = -1, .tolerance = tolerance};
   if (!o.cyclic) return o.uniaxial ? CaseStop{} : CaseStop{.alone = 0, .tolerance = 0.01 * tolerance};
-  const std::array<double, 3> e = cyclic_strain(m, o);
-  if (e[2] != 0.0 || (e[0] != 0.0 && e[1] != 0.0)) return {.alone = -1, .tolerance = tolerance};
-  return {.alone = e[0] != 0.0 ? 0 : 1, .tolerance = 0.01 * tolerance};
+  // A cyclic case: one normal strain alone moves the cell along its axis only.
+  const std::array<double, 6> e = cyclic_strain(cell, o);
+  int normal = -1, loaded = 0;
+  for (int k = 0; k < 6; ++k)
+    if (e[k] != 0.0) ++loaded, normal = k;
+  if (loaded != 1 || normal > 2) return {.alone = -1, .tolerance = tolerance};
+  return {.alone = normal, .tolerance = 0.01 * tolerance};
 }
 
-void write_control_dict(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o, int end_step,
+void write_control_dict(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& o, int end_step,
                         double tighter, int start) {
-  write_text(dir / "system/controlDict", control_dict(m, o, end_step, tighter, start));
+  write_text(dir / "system/controlDict", control_dict(cell, o, end_step, tighter, start));
 }
 
-double load_strain(const Box& cell, const std::vector<FoamPhase>& phases, const FoamOptions& o) {
-  if (o.cyclic && o.strain != std::array<double, 3>{})
-    return std::max({std::abs(o.strain[0]), std::abs(o.strain[1]), std::abs(o.strain[2])});
-  if (o.traction == 0.0) return std::abs(o.displacement) / cell.width();
+double load_strain(const FoamCell& cell, const FoamOptions& o) {
+  if (o.cyclic && o.strain != std::array<double, 6>{}) {
+    double largest = 0.0;
+    for (double e : o.strain) largest = std::max(largest, std::abs(e));
+    return largest;
+  }
+  if (o.traction == 0.0) return std::abs(o.displacement) / cell.size.x;
   double softest = 1e300;
-  for (const FoamPhase& p : phases) softest = std::min(softest, p.youngs_modulus);
+  for (const FoamPhase& p : cell.phases) softest = std::min(softest, p.youngs_modulus);
   return std::abs(o.traction) / softest;
 }
 
@@ -173,13 +190,12 @@ std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases) {
   return out;
 }
 
-std::vector<std::string> check_load(const Box& cell, bool periodic, const std::vector<FoamPhase>& phases,
-                                    const FoamOptions& o) {
+std::vector<std::string> check_load(const FoamCell& cell, const FoamOptions& o) {
   if (!(o.convert_to_meters > 0.0) || !std::isfinite(o.convert_to_meters))
     throw ConfigError("export.convert_to_meters: must be positive, got " + to_text(o.convert_to_meters));
   if (!(o.thickness >= 0.0) || !std::isfinite(o.thickness))
     throw ConfigError("export.thickness: must be positive (or 0 for the mean edge length), got " + to_text(o.thickness));
-  if (o.cyclic && !periodic)
+  if (o.cyclic && !cell.periodic)
     throw ConfigError("export.cyclic: the mesh is not periodic (opposite sides do not match); cyclic patches need a "
                       "periodic mesh, such as grainmesh mesh makes of a periodic tessellation");
   if (o.cyclic && (o.traction != 0.0 || o.uniaxial))
@@ -188,7 +204,7 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
                       "bottom/top pair keeps the mean transverse strain zero");
   // A cell below a nanometre is a unit slip (lengths in metres read as micrometres):
   // continuum elasticity means nothing there.
-  const double size = std::max(cell.width(), cell.height()), metres = size * o.convert_to_meters;
+  const double size = std::max({cell.size.x, cell.size.y, cell.size.z}), metres = size * o.convert_to_meters;
   const std::string in_metres = to_text(size) + " mesh units across, times export.convert_to_meters = " +
                                 to_text(o.convert_to_meters) + ": " + to_text(metres) + " m";
   if (metres < 1e-9)
@@ -197,9 +213,9 @@ std::vector<std::string> check_load(const Box& cell, bool periodic, const std::v
   // Linear elasticity is a small-strain theory: a mean strain above 1 % is a slip too.
   if (o.traction == 0.0 && o.displacement == 0.0 && o.delta_T == 0.0)
     throw ConfigError("load.displacement: is 0, which loads nothing");
-  const double strain = load_strain(cell, phases, o);
+  const double strain = load_strain(cell, o);
   if (strain > 0.01 && o.traction == 0.0 && o.delta_T == 0.0)  // a thermal case's strain is the phases' own
-    throw ConfigError("load.displacement: " + to_text(o.displacement) + " over a cell " + to_text(cell.width()) +
+    throw ConfigError("load.displacement: " + to_text(o.displacement) + " over a cell " + to_text(cell.size.x) +
                       " wide is a mean strain of " + to_text(strain, 3) +
                       ", above 1 % (linear elasticity is for small strains): give it in the mesh's units, like the cell");
   if (strain > 0.01)

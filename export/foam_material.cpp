@@ -26,9 +26,9 @@ std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& o) {
   return out;
 }
 
-double stiffness_contrast(const ExportMesh& m, const FoamOptions& o) {
+double stiffness_contrast(const std::vector<FoamPhase>& phases, const FoamOptions& o) {
   double stiff_min = 1e300, stiff_max = 0.0;
-  for (const FoamPhase& p : m.phases) {
+  for (const FoamPhase& p : phases) {
     const double stiffness = lame(p, o.plane_stress).gamma();
     stiff_min = std::min(stiff_min, stiffness);
     stiff_max = std::max(stiff_max, stiffness);
@@ -36,9 +36,10 @@ double stiffness_contrast(const ExportMesh& m, const FoamOptions& o) {
   return stiff_max / stiff_min;
 }
 
-bool harmonic_stiffness(const ExportMesh& m, const FoamOptions& o) {
+bool harmonic_stiffness(const FoamCell& cell, const FoamOptions& o) {
   return o.interpolation == FoamOptions::Interpolation::harmonic ||
-         (o.interpolation == FoamOptions::Interpolation::automatic && stiffness_contrast(m, o) <= 3.0);
+         (o.interpolation == FoamOptions::Interpolation::automatic && cell.dimensions() == 2 &&
+          stiffness_contrast(cell.phases, o) <= 3.0);
 }
 
 }  // namespace grainmesh

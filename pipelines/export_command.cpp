@@ -115,7 +115,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
     c.fail("export.cells", "is triangles, but " + mesh_file.string() + " holds polygonal cells: set polygons to export them as they are");
   const ExportMesh m = o.cells == FoamOptions::Cells::polygons && triangles ? polygon_cells(read) : read;
   Warnings warnings;
-  for (const std::string& w : check_load(m.cell, m.periodic, m.phases, o)) warnings.add(w);
+  for (const std::string& w : check_load(foam_cell(m), o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();
   StagedOutput staged(out, "export");
   write_foam_case(staged.dir(), m, o);

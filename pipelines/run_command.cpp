@@ -68,7 +68,7 @@ RunPlan read_run_plan(const Config& c, bool solve, Warnings& warnings) {
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   const TessellationOptions& to = plan.tess_job.options;
   for (const std::string& w :
-       check_load(Box{{0.0, 0.0}, {to.width, to.height}}, to.periodic, foam_phases(to.phases), plan.foam))
+       check_load(FoamCell{foam_phases(to.phases), {to.width, to.height, 0.0}, to.periodic}, plan.foam))
     warnings.add(w);
   return plan;
 }

@@ -328,7 +328,7 @@ TEST_CASE("the export refuses a mesh without one grain and one phase per triangl
     ExportMesh short_labels = e;
     (grain ? short_labels.grain : short_labels.phase).pop_back();
     CHECK_THROWS_WITH(write_foam_case(dir.path() / "x", short_labels, {}),
-                      Catch::Contains("the mesh needs a grain and a phase per triangle"));
+                      Catch::Contains("the mesh needs a grain and a phase per cell"));
   }
   CHECK_FALSE(fs::exists(dir.path() / "x"));
 }
@@ -341,20 +341,20 @@ TEST_CASE("the displacement starts from the field a uniform cell takes under the
   const ExportMesh e = grain_export_mesh(t, m);
   // The default load (right moved in x, symmetry elsewhere) and a periodic mixed strain.
   const FoamOptions mixed{};
-  const FoamOptions cyclic{.cyclic = true, .strain = {1e-3, -4e-4, 2.5e-4}};
+  const FoamOptions cyclic{.cyclic = true, .strain = {1e-3, -4e-4, 0.0, 0.0, 0.0, 2.5e-4}};
   FoamOptions binary = cyclic;  // read back from raw doubles
   binary.binary = true;
   for (const FoamOptions& o : {mixed, cyclic, binary}) {
     test::ScratchDir dir("initial");
     const PolyMesh pm = write_foam_case(dir.path(), e, o);
     const FieldValues D = read_cell_field(dir / "0/D", "vector", static_cast<std::size_t>(pm.cells));
-    const std::array<double, 3> strain =
-        o.cyclic ? cyclic_strain(e, o) : std::array<double, 3>{o.displacement / e.cell.width(), 0.0, 0.0};
+    const std::array<double, 6> strain =
+        o.cyclic ? cyclic_strain(foam_cell(e), o) : std::array<double, 6>{o.displacement / e.cell.width()};
     if (o.cyclic) CHECK(strain == o.strain);
     double worst = 0.0;
     for (int k = 0; k < pm.cells; ++k) {
       const Vec2 c = cell_centroid(e.mesh, k) - e.cell.lo;
-      const Vec2 expected{strain[0] * c.x + strain[2] * c.y, strain[2] * c.x + strain[1] * c.y};
+      const Vec2 expected{strain[0] * c.x + strain[5] * c.y, strain[5] * c.x + strain[1] * c.y};
       worst = std::max({worst, std::abs(D[k][0] - expected.x * o.convert_to_meters),
                         std::abs(D[k][1] - expected.y * o.convert_to_meters), std::abs(D[k][2])});
     }
@@ -371,7 +371,7 @@ TEST_CASE("a thermal case carries the temperature change and each cell's alpha, 
   e.phases[0].alpha = 5e-6;
   e.phases[1].alpha = 14e-6;
   test::ScratchDir dir("thermal-case");
-  const FoamOptions o{.cyclic = true, .strain = {-1e-3, -1e-3, 0.0}, .delta_T = -700.0};
+  const FoamOptions o{.cyclic = true, .strain = {-1e-3, -1e-3, 0.0, 0.0, 0.0, 0.0}, .delta_T = -700.0};
   const PolyMesh pm = write_foam_case(dir.path(), e, o);
   const std::size_t cells = static_cast<std::size_t>(pm.cells);
   const FieldValues alpha = read_cell_field(dir / "0/alpha", "scalar", cells);

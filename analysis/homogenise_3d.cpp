@@ -1,0 +1,141 @@
+#include "analysis/homogenise_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/traction.hpp"
+#include "common/errors.hpp"
+#include "common/side_by_side.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// Voigt index of the tensor component (i, j).
+constexpr int kVoigt[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
+
+// The mean stress of a solved case from the forces through right, top and front: row i of
+// the stress is the force through the side normal to axis i over its area; the shears
+// from the two sides that carry each, averaged (equal in the continuum, nearly so here).
+Voigt6 mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
+                   const PolyMesh& pm, const FoamOptions& o) {
+  const DiscreteTraction traction(pm, m, o, fields.displacement,
+                                  read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(pm.cells)),
+                                  fields.stress);
+  const double s2 = o.convert_to_meters * o.convert_to_meters;
+  const Vec3 box = m.box;
+  const std::array<Vec3, 3> row{traction.patch_force(patch_index(pm, "right")) / (box.y * box.z * s2),
+                                traction.patch_force(patch_index(pm, "top")) / (box.x * box.z * s2),
+                                traction.patch_force(patch_index(pm, "front")) / (box.x * box.y * s2)};
+  Voigt6 s{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) s[kVoigt[i][j]] += (i == j ? 1.0 : 0.5) * row[i][j];
+  return s;
+}
+
+// The volume average of the cell stresses (OpenFOAM's order xx xy xz yy yz zz).
+Voigt6 volume_average(const CaseFields& fields, const ExportMesh3& m) {
+  Voigt6 s{};
+  double volume = 0.0;
+  for (std::size_t k = 0; k < m.mesh.tets.size(); ++k) {
+    const auto& t = m.mesh.tets[k];
+    const auto& p = m.mesh.points;
+    const double v = tet_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
+    const double* c = fields.stress[k];
+    const Voigt6 cell{c[0], c[3], c[5], c[4], c[2], c[1]};
+    for (int i = 0; i < 6; ++i) s[i] += v * cell[i];
+    volume += v;
+  }
+  for (double& x : s) x /= volume;
+  return s;
+}
+
+}  // namespace
+
+std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOptions& o) {
+  const double e = load_strain(foam_cell(m), o);
+  std::vector<LoadCase3> cases;
+  const char* names[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+  for (int k = 0; k < 6; ++k) {
+    LoadCase3 c{names[k], {}};
+    c.strain[static_cast<std::size_t>(k)] = k < 3 ? e : 0.5 * e;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c) {
+  FoamOptions out = o;
+  out.cyclic = true;
+  out.strain = c.strain;
+  return out;
+}
+
+PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+                                       const PolyMesh& pm, const FoamOptions& o, int parallel,
+                                       const Deadline& deadline,
+                                       const std::vector<std::filesystem::path>& cases_shown_as) {
+  const std::vector<LoadCase3> loads = periodic_load_cases_3d(m, o);
+  if (case_dirs.size() != loads.size())
+    throw GeometryError("solve_periodic_3d: a case directory per load case is needed");
+  PeriodicHomogenised3 h;
+  h.cases.resize(loads.size());
+  const std::size_t cells = static_cast<std::size_t>(pm.cells);
+  // The shear cases first: they take longest.
+  side_by_side({3, 4, 5, 0, 1, 2}, parallel, [&](int k) {
+    LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
+    r.load = loads[static_cast<std::size_t>(k)];
+    const FoamOptions ok = load_case_options_3d(o, r.load);
+    const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
+    r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
+    r.fields = read_case_fields(r.run.result_dir, cells);
+    r.stress = mean_stress(r.run.result_dir, r.fields, m, pm, ok);
+    r.volume_average = volume_average(r.fields, m);
+  });
+  for (int k = 0; k < 6; ++k) {
+    const LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
+    const double e = k < 3 ? r.load.strain[k] : 2.0 * r.load.strain[k];  // engineering
+    for (int i = 0; i < 6; ++i) {
+      h.stiffness[i][k] = r.stress[i] / e;
+      h.volume_average_stiffness[i][k] = r.volume_average[i] / e;
+    }
+  }
+  return h;
+}
+
+Stiffness6 symmetric_part(const Stiffness6& c) {
+  Stiffness6 s{};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) s[i][j] = 0.5 * (c[i][j] + c[j][i]);
+  return s;
+}
+
+double symmetry_error(const Stiffness6& c) {
+  double largest = 0.0, asymmetry = 0.0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      largest = std::max(largest, std::abs(c[i][j]));
+      asymmetry = std::max(asymmetry, std::abs(c[i][j] - c[j][i]));
+    }
+  return largest > 0.0 ? asymmetry / largest : 0.0;
+}
+
+EngineeringConstants3 engineering_constants_3d(const Stiffness6& c) {
+  const Stiffness6 s = inverse(c);
+  // The tensor's own Reuss averages, from its compliance.
+  const double K_R = 1.0 / (s[0][0] + s[1][1] + s[2][2] + 2 * (s[0][1] + s[0][2] + s[1][2]));
+  const double G_R =
+      15.0 / (4 * (s[0][0] + s[1][1] + s[2][2]) - 4 * (s[0][1] + s[0][2] + s[1][2]) + 3 * (s[3][3] + s[4][4] + s[5][5]));
+  return {.E_x = 1 / s[0][0],
+          .E_y = 1 / s[1][1],
+          .E_z = 1 / s[2][2],
+          .G_yz = 1 / s[3][3],
+          .G_xz = 1 / s[4][4],
+          .G_xy = 1 / s[5][5],
+          .nu_xy = -s[1][0] / s[0][0],
+          .nu_xz = -s[2][0] / s[0][0],
+          .nu_yz = -s[2][1] / s[1][1],
+          .universal_anisotropy = 5 * shear_modulus_3d(c) / G_R + bulk_modulus_3d(c) / K_R - 6};
+}
+
+}  // namespace grainmesh

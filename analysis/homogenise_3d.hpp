@@ -1,0 +1,72 @@
+// Homogenisation of a periodic 3D cell: six load cases, each a macroscopic strain imposed
+// as the jump of the displacement across the three cyclic pairs, solved by
+// solidDisplacementFoam; the mean stress of each from the forces through right, top and
+// front (traction.hpp: exact for the discrete solution, unlike the volume average of the
+// cell stresses, kept beside it); the 6 x 6 effective stiffness column by column.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/bounds_3d.hpp"
+#include "analysis/foam_fields.hpp"
+#include "analysis/solve.hpp"
+#include "common/deadline.hpp"
+#include "export/foam_3d.hpp"
+
+namespace grainmesh {
+
+// A symmetric tensor in Voigt order: xx, yy, zz, yz, xz, xy (strains as tensor components).
+using Voigt6 = std::array<double, 6>;
+
+// The six load cases of `m` under `o`: a mean strain e = load_strain (displacement / width)
+// in xx, yy, zz, and engineering shears e in yz, xz, xy (tensor components e / 2).
+struct LoadCase3 {
+  std::string name;  // xx, yy, zz, yz, xz, xy: also the case directory's suffix
+  Voigt6 strain{};
+};
+std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOptions& o);
+// The options a load case's case is written and solved with: `o`'s, cyclic, its strain.
+FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c);
+
+struct LoadCaseResult3 {
+  LoadCase3 load;
+  Voigt6 stress{};          // from the forces through right, top and front over their areas (Pa)
+  Voigt6 volume_average{};  // the volume average of the cell stresses
+  SolveRun run;
+  CaseFields fields;
+};
+
+struct PeriodicHomogenised3 {
+  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases_3d
+  Stiffness6 stiffness{};              // column j from load case j (per engineering strain), as solved
+  Stiffness6 volume_average_stiffness{};
+};
+
+// Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
+// periodic_load_cases_3d(m, o), each with load_case_options_3d; `pm` the mesh, the same
+// for all), up to `parallel` at a time, and assembles the stiffness. A failing case throws
+// SolveError naming it (the first in order when several fail).
+PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+                                       const PolyMesh& pm, const FoamOptions& o, int parallel,
+                                       const Deadline& deadline = {},
+                                       const std::vector<std::filesystem::path>& cases_shown_as = {});
+
+// The stiffness made symmetric, each Cij the mean of Cij and Cji (of the two load cases
+// that give it), and how far it was from symmetric: max |Cij - Cji| / max |Cij|.
+Stiffness6 symmetric_part(const Stiffness6& c);
+double symmetry_error(const Stiffness6& c);
+
+// Engineering constants of a 3D stiffness from its compliance S = C^-1: E_i = 1 / S_ii,
+// G_yz = 1 / S44, G_xz = 1 / S55, G_xy = 1 / S66, nu_ij = -S_ji / S_ii; and the universal
+// anisotropy index A^U = 5 G_V / G_R + K_V / K_R - 6 of the tensor's own Voigt (C) and
+// Reuss (S) averages, 0 exactly when isotropic (Ranganathan and Ostoja-Starzewski, 2008).
+struct EngineeringConstants3 {
+  double E_x, E_y, E_z, G_yz, G_xz, G_xy, nu_xy, nu_xz, nu_yz;
+  double universal_anisotropy;
+};
+EngineeringConstants3 engineering_constants_3d(const Stiffness6& c);
+
+}  // namespace grainmesh
