@@ -134,18 +134,36 @@ std::vector<double> displacement_length(const CaseFields& f) {
   return out;
 }
 
-std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir) {
-  std::filesystem::path best;
-  double latest = 0.0;
+namespace {
+
+// The case's time directories (names that are numbers) with their times.
+std::vector<std::pair<double, std::filesystem::path>> time_dirs(const std::filesystem::path& case_dir) {
+  std::vector<std::pair<double, std::filesystem::path>> out;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(case_dir, ec)) {
     if (!entry.is_directory()) continue;
     const std::string name = entry.path().filename().string();
     char* end = nullptr;
     const double t = std::strtod(name.c_str(), &end);
-    if (end == name.c_str() || *end != '\0' || !(t > latest)) continue;
+    if (end != name.c_str() && *end == '\0') out.emplace_back(t, entry.path());
+  }
+  return out;
+}
+
+}  // namespace
+
+void remove_times_after(const std::filesystem::path& case_dir, double time) {
+  for (const auto& [t, dir] : time_dirs(case_dir))
+    if (t > time) std::filesystem::remove_all(dir);
+}
+
+std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir) {
+  std::filesystem::path best;
+  double latest = 0.0;
+  for (const auto& [t, dir] : time_dirs(case_dir)) {
+    if (!(t > latest)) continue;
     latest = t;
-    best = entry.path();
+    best = dir;
   }
   if (best.empty()) throw SolveError(case_dir.string() + ": the solver wrote no result (no time directory after 0)");
   return best;

@@ -52,5 +52,7 @@ std::vector<double> displacement_length(const CaseFields& f);
 // The case's latest time directory: where the solver wrote its fields. Throws SolveError
 // when there is none.
 std::filesystem::path latest_time_dir(const std::filesystem::path& case_dir);
+// Removes the case's time directories later than `time`.
+void remove_times_after(const std::filesystem::path& case_dir, double time);
 
 }  // namespace grainmesh

@@ -110,7 +110,12 @@ Followed run_until_converged(const SolveJob& job, const FoamCell& cell, const Fo
     if (f.monitor.state() == SolveMonitor::State::case_stuck) {
       // Converged by the measure, but OpenFOAM's own residual of a component near zero is
       // noise: solved again to exactly where the measure was met (the same corrections, one
-      // process, so the same numbers), and written there.
+      // process, so the same numbers), and written there. What the stopped run may have
+      // begun to write (its own stop can fire as it is stopped) is removed first: a later,
+      // half-written time would be taken for the result.
+      remove_times_after(job.parallel ? job.case_dir / "processor0" : job.case_dir, start);
+      for (int p = 1; job.parallel && p < o.processes; ++p)
+        remove_times_after(job.case_dir / ("processor" + std::to_string(p)), start);
       write_control_dict(job.case_dir, cell, o, start + f.monitor.converged_at(), tighter, start);
       f.monitor = SolveMonitor(watch);
       f.status = solve(f.monitor);

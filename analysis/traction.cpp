@@ -74,6 +74,7 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, con
       scale_(o.convert_to_meters),
       thickness_(pm.thickness),
       dimensions_(cell.dimensions()),
+      compact_(compact_normal_stress(cell)),
       centre_(std::move(centre)),
       volume_(std::move(volume)),
       harmonic_(harmonic_stiffness(cell, o)),
@@ -150,9 +151,15 @@ Vec3 DiscreteTraction::face_force(int f) const {
   // Tensors as OpenFOAM orders them: grad(D)_ij = d D_j / d x_i, at index 3 i + j;
   // sigma symmetric: xx xy xz yy yz zz.
   static constexpr int kSymmetric[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+  Vec3 F;
+  if (!compact_) {
+    for (int j = 0; j < dimensions_; ++j)
+      for (int i = 0; i < dimensions_; ++i)
+        F[j] += g.S[i] * (w * sigma_[P][kSymmetric[i][j]] + (1 - w) * sigma_[N][kSymmetric[i][j]]);
+    return F;
+  }
   auto grad = [&](int c, int i, int j) { return grad_[c][3 * i + j]; };
   auto X = [&](int c, int i, int j) { return sigma_[c][kSymmetric[i][j]] - gamma_[c] * grad(c, i, j); };
-  Vec3 F;
   for (int j = 0; j < dimensions_; ++j) {
     double sn = delta * (D_[N][j] - nb.jump[j] - D_[P][j]);
     for (int i = 0; i < dimensions_; ++i) sn += k[i] * (w * grad(P, i, j) + (1 - w) * grad(N, i, j));

@@ -1,8 +1,9 @@
 // The force a solved case carries through its faces, as solidDisplacementFoam's own
-// discrete equation has it (compactNormalStress): on a face between cells P and N,
+// discrete equation has it. In the compact form (2D cases) on a face between cells P and N
 //   F = gamma_f |S| snGrad(D) + S . X_f,   X = sigma - gamma grad(D),  gamma = 2 mu + lambda,
 // gamma_f interpolated as the case says (harmonic or linear), snGrad with OpenFOAM's
-// non-orthogonal correction from the interpolated gradient, X_f linear. At convergence
+// non-orthogonal correction from the interpolated gradient, X_f linear; in the plain form
+// (3D cases, compact_normal_stress) F = S . sigma_f, sigma_f linear. At convergence
 // the forces on every cell's faces add up to zero, so the force through a patch is the
 // load the cell carries, and over the cell's section it is the mean stress exactly -
 // unlike the area average of cell stresses, which mixes the phases next to interfaces.
@@ -64,6 +65,7 @@ class DiscreteTraction {
   const PolyMesh& pm_;
   double scale_, thickness_;
   int dimensions_;
+  bool compact_;
   std::vector<Vec3> centre_;          // cell centres, metres
   std::vector<double> gamma_;         // 2 mu + lambda per cell
   std::vector<double> volume_;        // cubic metres

@@ -35,7 +35,8 @@ void check_conformity(const Tessellation3& t, const GrainMesh3& m) {
     for (int v : tet)
       if (v < 0 || v >= static_cast<int>(p.size())) fail("tetrahedron " + std::to_string(k) + " has a point id out of range");
     const double v = tet_volume(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]);
-    if (!(v > 0.0)) fail("tetrahedron " + std::to_string(k) + " has volume " + to_text(v));
+    if (!(radius_ratio(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) > 0.0) || !(v > 0.0))
+      fail("tetrahedron " + std::to_string(k) + " is flat or turned (volume " + to_text(v) + ")");
     if (m.grain[k] != t.regions[m.region[k]].grain) fail("tetrahedron " + std::to_string(k) + " is not in its region's grain");
     volume[m.grain[k]] += v;
     for (const Key& f : {key(tet[0], tet[1], tet[2]), key(tet[0], tet[1], tet[3]), key(tet[0], tet[2], tet[3]),

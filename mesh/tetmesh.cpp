@@ -12,7 +12,11 @@ double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const Vec3 u = b - a, v = c - a, w = d - a;
   const double six_v = std::abs(dot(w, cross(u, v)));
   const double area = norm(cross(u, v)) + norm(cross(u, w)) + norm(cross(v, w)) + norm(cross(c - b, d - b));  // x 2
-  if (!(six_v > 0.0)) return 0.0;
+  // Flat to rounding (a volume below 1e-12 of the longest edge's cube): 0, not the ratio of
+  // two rounding errors (four points on a circle gave infinity).
+  const double longest = std::sqrt(std::max({dot(u, u), dot(v, v), dot(w, w), dot(c - b, c - b), dot(d - b, d - b),
+                                             dot(d - c, d - c)}));
+  if (!(six_v > 6e-12 * longest * longest * longest)) return 0.0;
   const double r_in = six_v / area;  // 3 V / (sum of face areas), with both factors of 2 cancelling
   // Circumcentre relative to a: (|u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v)) / (2 u . (v x w)).
   const Vec3 num = dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u) + dot(w, w) * cross(u, v);

@@ -10,6 +10,7 @@
 #include "analysis/traction.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "helpers.hpp"
+#include "pipelines/laminate.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 using namespace grainmesh;
@@ -66,9 +67,11 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   const PeriodicHomogenised3 h = solve_six(e, o, dir.path(), pm);
   const Stiffness6 exact = isotropic_stiffness_3d(carbide);
   INFO("face forces:\n" << show(h.stiffness) << "volume averages:\n" << show(h.volume_average_stiffness));
+  // solidDisplacementFoam's plain form with least-squares gradients: a uniform strain is
+  // its exact solution, so the face forces give the isotropic tensor to rounding.
+  CHECK(relative_difference(h.stiffness, exact) < 1e-9);
   // The jumps impose the mean strain exactly: over a periodic cell the volume mean of the
-  // cells' Gauss gradients is the jump's, whatever the field, so on one material the mean
-  // cell stress is the isotropic tensor times the imposed strain, to rounding.
+  // cell stresses is the tensor times the imposed strain whatever the field.
   CHECK(relative_difference(h.volume_average_stiffness, exact) < 1e-9);
   // The face forces are the solver's own: every cell balanced at convergence (the shear
   // case, where all three components move).
@@ -81,9 +84,86 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   for (int f = 0; f < pm.internal_faces(); ++f) largest = std::max(largest, norm(traction.face_force(f)));
   for (int c = 0; c < pm.cells; ++c) worst = std::max(worst, norm(traction.cell_imbalance(c)));
   CHECK(worst < 1e-6 * largest);
-  // What they give is solidDisplacementFoam's answer on tetrahedra: measured 3.0 % from the
-  // exact tensor and 1.3 % from symmetric on this cell (issue 24 asks 0.1 %: not met, see
-  // README); held here so that it does not get worse.
-  CHECK(relative_difference(h.stiffness, exact) < 0.05);
-  CHECK(symmetry_error(h.stiffness) < 0.02);
+}
+
+namespace {
+
+// A laminate of ten slabs normal to x (seeds in a row), three of them soft, in a
+// periodic cell 1 x 0.3 x 0.3 meshed at h = 0.04 (about 11k tetrahedra), solved.
+struct Laminate3 {
+  PeriodicHomogenised3 h;
+  Stiffness6 exact;
+};
+Laminate3 laminate_cell(double ratio) {
+  Tessellation3Options to;
+  to.width = 1.0;
+  to.height = to.depth = 0.3;
+  to.grains = 10;
+  for (int i = 0; i < 10; ++i) to.seeds.push_back({(i + 0.5) / 10, 0.15, 0.15});
+  to.min_edge = 0.0;  // no short edges to collapse: the slabs' faces stay planes of the box
+  to.phases = {Phase{"hard", 0.0, true, 600e9, 0.22, {}}};
+  Rng rng(1);
+  const Tessellation3 t = tessellate_3d(to, rng);
+  ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = 0.04}));
+  const test::Material hard{600e9, 0.22}, soft{600e9 / ratio, 0.3};
+  e.phases = {FoamPhase{"hard", hard.E, hard.nu}, FoamPhase{"soft", soft.E, soft.nu}};
+  // Soft: three neighbouring slabs clear of the box's sides (where the window cuts one).
+  double soft_volume = 0.0;
+  for (std::size_t k = 0; k < e.phase.size(); ++k) {
+    const double x = t.grains[e.grain[k]].seed.x;
+    e.phase[k] = x > 0.62 && x < 0.98 ? 1 : 0;
+    const auto& v = e.mesh.tets[k];
+    const auto& p = e.mesh.points;
+    if (e.phase[k] == 1) soft_volume += tet_volume(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
+  }
+  REQUIRE(std::abs(soft_volume / (t.width * t.height * t.depth) - 0.3) < 1e-9);
+  test::ScratchDir dir("laminate3d");
+  PolyMesh pm;
+  return {solve_six(e, {.displacement = 1e-3}, dir.path(), pm), test::laminate_3d(hard, soft, 0.3)};
+}
+
+// The nine orthotropic components' relative errors, and the largest of the others over C11.
+struct LaminateErrors {
+  std::array<double, 9> component;  // C11 C22 C33 C12 C13 C23 C44 C55 C66
+  double others;
+};
+LaminateErrors laminate_errors(const Stiffness6& c, const Stiffness6& exact) {
+  constexpr int kAt[9][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}, {3, 3}, {4, 4}, {5, 5}};
+  LaminateErrors out{};
+  for (int k = 0; k < 9; ++k) {
+    const auto [i, j] = kAt[k];
+    out.component[k] = std::abs(c[i][j] / exact[i][j] - 1);
+  }
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      if (exact[i][j] == 0.0) out.others = std::max(out.others, std::abs(c[i][j]) / exact[0][0]);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("3D homogenisation: a laminate of stiffness ratio 3 gives the exact layered tensor within 1 %",
+          "[homogenise3d][solve]") {
+  const Laminate3 l = laminate_cell(3.0);
+  INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
+  const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
+  // Measured: C55 and C66 +0.59 %, the others within 0.03 %.
+  for (double e : err.component) CHECK(e < 0.01);
+  CHECK(err.others < 1e-3);
+  CHECK(symmetry_error(l.h.stiffness) < 1e-3);
+}
+
+TEST_CASE("3D homogenisation: a laminate of stiffness ratio 20 at the same mesh, the error in the shears across",
+          "[homogenise3d][solve]") {
+  const Laminate3 l = laminate_cell(20.0);
+  INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
+  const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
+  // Measured: C11 +0.96 %, C12 = C13 +0.80 %, C55 and C66 +3.4 %, the others within
+  // 0.05 %: the error of the cells next to the interfaces, first order in their size
+  // (C55 +1.1 % at h = 0.025 on a two-slab cell). Issue 24 asks 1 % for all nine: not met
+  // by the shears across at this mesh; held here so that it does not get worse.
+  for (int k : {0, 1, 2, 3, 4, 5, 6}) CHECK(err.component[k] < 0.01);
+  for (int k : {7, 8}) CHECK(err.component[k] < 0.04);
+  CHECK(err.others < 2e-3);
+  CHECK(symmetry_error(l.h.stiffness) < 2e-3);
 }

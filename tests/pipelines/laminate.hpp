@@ -27,6 +27,23 @@ inline std::array<double, 4> laminate(const Material& hard, const Material& soft
           l_M / inv_M, 1 / mean([](const Material& m) { return 1 / m.mu(); })};
 }
 
+// The exact stiffness of a 3D laminate of two isotropic phases with layers normal to x,
+// `soft` of the volume soft (Backus): C11 = 1/<1/M>, C12 = C13 = <l/M>/<1/M>, C22 = C33 =
+// <M - l^2/M> + <l/M>^2/<1/M>, C23 = <l - l^2/M> + <l/M>^2/<1/M>, C44 = <mu> (shear in the
+// layers), C55 = C66 = 1/<1/mu> (across them); M = l + 2 mu. Voigt order xx yy zz yz xz xy.
+inline std::array<std::array<double, 6>, 6> laminate_3d(const Material& hard, const Material& soft, double f) {
+  auto mean = [&](auto g) { return (1 - f) * g(hard) + f * g(soft); };
+  const double inv_M = mean([](const Material& m) { return 1 / m.M(); });
+  const double l_M = mean([](const Material& m) { return m.lambda() / m.M(); });
+  const double C11 = 1 / inv_M, C12 = l_M / inv_M;
+  const double C22 = mean([](const Material& m) { return m.M() - m.lambda() * m.lambda() / m.M(); }) + l_M * l_M / inv_M;
+  const double C23 = mean([](const Material& m) { return m.lambda() - m.lambda() * m.lambda() / m.M(); }) + l_M * l_M / inv_M;
+  const double C44 = mean([](const Material& m) { return m.mu(); });
+  const double C55 = 1 / mean([](const Material& m) { return 1 / m.mu(); });
+  return {{{C11, C12, C12, 0, 0, 0}, {C12, C22, C23, 0, 0, 0}, {C12, C23, C22, 0, 0, 0},
+           {0, 0, 0, C44, 0, 0}, {0, 0, 0, 0, C55, 0}, {0, 0, 0, 0, 0, C55}}};
+}
+
 // A periodic cell of ten strips (seeds in a row: layers normal to x; in a column: normal
 // to y), three of them soft; each phase's alpha when it has one.
 // The mesh is refined along the grain boundaries (`boundary_size`): solidDisplacementFoam's
