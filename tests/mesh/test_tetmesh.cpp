@@ -27,6 +27,11 @@ TEST_CASE("tetrahedron volume, radius ratio and dihedral angles are exact on kno
   for (int k : {3, 4, 5}) REQUIRE(angles[k] * deg == Approx(std::acos(1.0 / std::sqrt(3.0)) * deg));
   // Flat: no volume, radius ratio 0.
   REQUIRE(radius_ratio(o, x, y, Vec3{1, 1, 0}) == 0.0);
+  // Flat to rounding, its corners on one circle (a rectangle a 3D mesh once held at the
+  // box's edge: volume 2e-21 from rounding, the circumsphere 0 / 0): 0, not infinity.
+  const Vec3 p0{0.95, 0.0, 0.1875}, p1{1.0, 0.0375, 0.15}, p2{1.0, 0.0, 0.1875}, p3{0.95, 0.0375, 0.15};
+  REQUIRE(radius_ratio(p0, p1, p2, p3) == 0.0);
+  REQUIRE(radius_ratio(p0, p1, p3, p2) == 0.0);
   // The quality summary of a mesh of the two.
   const TetMesh m{{a, b, c, d, o, x, y, z}, {{0, 1, 2, 3}, {4, 5, 6, 7}}};
   const TetQuality q = measure_quality(m);
