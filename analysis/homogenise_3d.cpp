@@ -17,11 +17,9 @@ constexpr int kVoigt[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
 // The mean stress of a solved case from the forces through right, top and front: row i of
 // the stress is the force through the side normal to axis i over its area; the shears
 // from the two sides that carry each, averaged (equal in the continuum, nearly so here).
-Voigt6 mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
-                   const PolyMesh& pm, const FoamOptions& o) {
-  const DiscreteTraction traction(pm, m, o, fields.displacement,
-                                  read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(pm.cells)),
-                                  fields.stress);
+Voigt6 mean_stress(const CaseFields& fields, const ExportMesh3& m, const PolyMesh& pm, const FoamOptions& o) {
+  // The plain form's face force is S . sigma_f: no gradient needed (nor written).
+  const DiscreteTraction traction(pm, m, o, fields.displacement, FieldValues{}, fields.stress);
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec3 box = m.box;
   const std::array<Vec3, 3> row{traction.patch_force(patch_index(pm, "right")) / (box.y * box.z * s2),
@@ -89,7 +87,7 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
     r.fields = read_case_fields(r.run.result_dir, cells);
-    r.stress = mean_stress(r.run.result_dir, r.fields, m, pm, ok);
+    r.stress = mean_stress(r.fields, m, pm, ok);
     r.volume_average = volume_average(r.fields, m);
   });
   for (int k = 0; k < 6; ++k) {

@@ -116,7 +116,7 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh3& m, con
   for (int c = 0; c < pm.cells; ++c) {
     const std::array<int, 4>& t = m.mesh.tets[static_cast<std::size_t>(c)];
     const auto& p = m.mesh.points;
-    centre_[c] = (0.25 * scale_) * (p[t[0]] + p[t[1]] + p[t[2]] + p[t[3]]);
+    centre_[c] = scale_ * tet_centroid(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
     volume_[c] = tet_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) * scale_ * scale_ * scale_;
   }
 }

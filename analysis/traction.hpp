@@ -29,6 +29,7 @@ class DiscreteTraction {
  public:
   // The case's mesh (`pm`, built from `m` with `o`), its solved cell fields, and each
   // cyclic patch's jump in D (metres; the low patch's, the high one has its negative).
+  // grad(D) only in the compact form (2D cases); the plain form's force needs sigma alone.
   DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
   // The same for a 3D case (write_foam_case_3d).

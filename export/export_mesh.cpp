@@ -49,4 +49,6 @@ ExportMesh export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::C
   return cells == FoamOptions::Cells::polygons ? dual_cells(m.mesh, frame(t, m)) : grain_export_mesh(t, m);
 }
 
+FoamCell foam_cell(const ExportMesh& m) { return {m.phases, {m.cell.width(), m.cell.height(), 0.0}, m.periodic}; }
+
 }  // namespace grainmesh

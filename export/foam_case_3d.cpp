@@ -18,7 +18,7 @@ PolyMesh write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3&
   for (std::size_t t = 0; t < centroid.size(); ++t) {
     const std::array<int, 4>& v = m.mesh.tets[t];
     const std::vector<Vec3>& p = m.mesh.points;
-    centroid[t] = 0.25 * (p[v[0]] + p[v[1]] + p[v[2]] + p[v[3]]);
+    centroid[t] = tet_centroid(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
   }
   write_case_files(dir, cell, m.phase, centroid, pm, o);
   return pm;

@@ -73,7 +73,7 @@ std::string control_dict(const FoamCell& cell, const FoamOptions& o, int end_ste
          "    // when runTimeControl stops the run, where the solver itself writes no sigma.\n"
          "    stress\n    {\n        type            writeObjects;\n        libs            (utilityFunctionObjects);\n"
          "        objects         (" + std::string(kStressField) + ");\n        writeOption     anyWrite;\n        writeControl    writeTime;\n    }\n" +
-         (o.cyclic ? "    // grad(D) where the fields are written: with D and sigmaD it gives the force through the\n"
+         (o.cyclic && compact_normal_stress(cell) ? "    // grad(D) where the fields are written: with D and sigmaD it gives the force through the\n"
                      "    // cyclic faces, where OpenFOAM writes no face values (grainmesh's homogenisation).\n"
                      "    gradient\n    {\n        type            grad;\n        libs            (fieldFunctionObjects);\n"
                      "        field           D;\n        executeControl  writeTime;\n        writeControl    writeTime;\n    }\n"
@@ -116,8 +116,6 @@ std::array<double, 6> cyclic_strain(const FoamCell& cell, const FoamOptions& o) 
   if (o.strain != std::array<double, 6>{}) return o.strain;
   return {o.displacement / cell.size.x};
 }
-
-FoamCell foam_cell(const ExportMesh& m) { return {m.phases, {m.cell.width(), m.cell.height(), 0.0}, m.periodic}; }
 
 std::vector<std::string> foam_environment() {
   const char* project = std::getenv("WM_PROJECT_DIR");

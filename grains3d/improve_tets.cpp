@@ -384,7 +384,7 @@ int Improver::insert_points() {
   for (const auto& [worst, t0] : poor) {
     if (q_[t0] == kDead || static_cast<std::size_t>(t0) >= first_new) continue;
     const Tet& k0 = tets_[t0];
-    const Vec3 at0 = 0.25 * (points_[k0[0]] + points_[k0[1]] + points_[k0[2]] + points_[k0[3]]);
+    const Vec3 at0 = tet_centroid(points_[k0[0]], points_[k0[1]], points_[k0[2]], points_[k0[3]]);
     std::vector<int> cavity{t0};
     bool stale = false;
     for (std::size_t c = 0; c < cavity.size() && !stale && cavity.size() <= kMaxCavity; ++c)

@@ -16,6 +16,8 @@ struct TetMesh {
 // Signed volume of tetrahedron abcd: > 0 when d lies on the side abc's right-hand normal
 // points to (abc turning clockwise seen from outside the tetrahedron).
 double tet_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// Its centroid, the corners' mean (OpenFOAM's cell centre of a tetrahedron too).
+inline Vec3 tet_centroid(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return 0.25 * (a + b + c + d); }
 // Radius ratio 3 r_in / r_circ: 1 for the regular tetrahedron, 0 for a flat one (also one
 // flat only to rounding: volume below 1e-12 of the longest edge's cube).
 double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
