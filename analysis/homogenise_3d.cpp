@@ -17,9 +17,15 @@ constexpr int kVoigt[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
 // The mean stress of a solved case from the forces through right, top and front: row i of
 // the stress is the force through the side normal to axis i over its area; the shears
 // from the two sides that carry each, averaged (equal in the continuum, nearly so here).
-Voigt6 mean_stress(const CaseFields& fields, const ExportMesh3& m, const PolyMesh& pm, const FoamOptions& o) {
+Voigt6 mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
+                   const FoamMesh3& fm, const FoamOptions& o) {
+  const FoamCell cell = foam_cell(m);
   // The plain form's face force is S . sigma_f: no gradient needed (nor written).
-  const DiscreteTraction traction(pm, m, o, fields.displacement, FieldValues{}, fields.stress);
+  const FieldValues grad = compact_normal_stress(cell, o)
+                               ? read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(fm.mesh.cells))
+                               : FieldValues{};
+  const DiscreteTraction traction(fm, cell, o, fields.displacement, grad, fields.stress);
+  const PolyMesh& pm = fm.mesh;
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec3 box = m.box;
   const std::array<Vec3, 3> row{traction.patch_force(patch_index(pm, "right")) / (box.y * box.z * s2),
@@ -32,13 +38,11 @@ Voigt6 mean_stress(const CaseFields& fields, const ExportMesh3& m, const PolyMes
 }
 
 // The volume average of the cell stresses (OpenFOAM's order xx xy xz yy yz zz).
-Voigt6 volume_average(const CaseFields& fields, const ExportMesh3& m) {
+Voigt6 volume_average(const CaseFields& fields, const FoamMesh3& fm) {
   Voigt6 s{};
   double volume = 0.0;
-  for (std::size_t k = 0; k < m.mesh.tets.size(); ++k) {
-    const auto& t = m.mesh.tets[k];
-    const auto& p = m.mesh.points;
-    const double v = tet_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
+  for (std::size_t k = 0; k < fm.volume.size(); ++k) {
+    const double v = fm.volume[k];
     const double* c = fields.stress[k];
     const Voigt6 cell{c[0], c[3], c[5], c[4], c[2], c[1]};
     for (int i = 0; i < 6; ++i) s[i] += v * cell[i];
@@ -70,7 +74,7 @@ FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c) {
 }
 
 PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
-                                       const PolyMesh& pm, const FoamOptions& o, int parallel,
+                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
                                        const Deadline& deadline,
                                        const std::vector<std::filesystem::path>& cases_shown_as) {
   const std::vector<LoadCase3> loads = periodic_load_cases_3d(m, o);
@@ -78,7 +82,7 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     throw GeometryError("solve_periodic_3d: a case directory per load case is needed");
   PeriodicHomogenised3 h;
   h.cases.resize(loads.size());
-  const std::size_t cells = static_cast<std::size_t>(pm.cells);
+  const std::size_t cells = static_cast<std::size_t>(fm.mesh.cells);
   // The shear cases first: they take longest.
   side_by_side({3, 4, 5, 0, 1, 2}, parallel, [&](int k) {
     LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
@@ -87,8 +91,8 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
     r.fields = read_case_fields(r.run.result_dir, cells);
-    r.stress = mean_stress(r.fields, m, pm, ok);
-    r.volume_average = volume_average(r.fields, m);
+    r.stress = mean_stress(r.run.result_dir, r.fields, m, fm, ok);
+    r.volume_average = volume_average(r.fields, fm);
   });
   for (int k = 0; k < 6; ++k) {
     const LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];

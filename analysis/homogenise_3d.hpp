@@ -46,11 +46,11 @@ struct PeriodicHomogenised3 {
 };
 
 // Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
-// periodic_load_cases_3d(m, o), each with load_case_options_3d; `pm` the mesh, the same
-// for all), up to `parallel` at a time, and assembles the stiffness. A failing case throws
-// SolveError naming it (the first in order when several fail).
+// periodic_load_cases_3d(m, o), each with load_case_options_3d; `fm` the mesh it wrote,
+// the same for all), up to `parallel` at a time, and assembles the stiffness. A failing
+// case throws SolveError naming it (the first in order when several fail).
 PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
-                                       const PolyMesh& pm, const FoamOptions& o, int parallel,
+                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
                                        const Deadline& deadline = {},
                                        const std::vector<std::filesystem::path>& cases_shown_as = {});
 

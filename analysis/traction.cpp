@@ -19,10 +19,9 @@ std::array<Vec2, 2> face_edge(const PolyMesh& pm, int f) {
   return e;
 }
 
-// The face's area vector (metres squared), out of the cell centred at `owner_centre`
-// (metres), and its centre: a 2D case's side face from its edge (z 0, as the cell
-// centres), a 3D face as OpenFOAM has it (a triangle's own; a polygon's from the
-// triangles about its points' mean, centres weighted by area).
+// The face's area vector (metres squared) out of its owner, and its centre: a 2D case's
+// side face from its edge (z 0, as the cell centres; out of the owner centred at
+// `owner_centre`, metres), a 3D face as OpenFOAM has it (foam_face).
 struct FaceGeometry {
   Vec3 S, centre;
   double area;
@@ -33,29 +32,13 @@ FaceGeometry face_geometry(const PolyMesh& pm, int f, double scale, double thick
     const auto [a, b] = face_edge(pm, f);
     centre = Vec3{0.5 * scale * (a.x + b.x), 0.5 * scale * (a.y + b.y), 0.0};
     S = thickness * scale * scale * Vec3{b.y - a.y, a.x - b.x, 0.0};  // thickness and edge in metres
+    if (dot(S, centre - owner_centre) < 0.0) S = -S;
   } else {
-    const int first = pm.face_start[f], n = pm.face_start[f + 1] - first;
-    auto point = [&](int k) { return scale * pm.points3d[pm.face_points[first + k % n]]; };
-    if (n == 3) {
-      centre = (point(0) + point(1) + point(2)) / 3.0;
-      S = 0.5 * cross(point(1) - point(0), point(2) - point(0));
-    } else {
-      Vec3 mean;
-      for (int k = 0; k < n; ++k) mean += point(k);
-      mean = mean / n;
-      Vec3 sum_c;
-      double sum_a = 0.0;
-      for (int k = 0; k < n; ++k) {
-        const Vec3 t = cross(point(k + 1) - point(k), mean - point(k));
-        const double a = norm(t);
-        S += 0.5 * t;
-        sum_c += a * (point(k) + point(k + 1) + mean);
-        sum_a += a;
-      }
-      centre = sum_c / (3.0 * sum_a);
-    }
+    // Turning out of the owner by construction (a polyhedron need not be convex).
+    const FoamFace face = foam_face(pm, f);
+    centre = scale * face.centre;
+    S = scale * scale * face.area;
   }
-  if (dot(S, centre - owner_centre) < 0.0) S = -S;
   return {S, centre, norm(S)};
 }
 
@@ -74,7 +57,7 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, con
       scale_(o.convert_to_meters),
       thickness_(pm.thickness),
       dimensions_(cell.dimensions()),
-      compact_(compact_normal_stress(cell)),
+      compact_(compact_normal_stress(cell, o)),
       centre_(std::move(centre)),
       volume_(std::move(volume)),
       harmonic_(harmonic_stiffness(cell, o)),
@@ -108,17 +91,12 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, cons
   }
 }
 
-DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh3& m, const FoamOptions& o, FieldValues D,
+DiscreteTraction::DiscreteTraction(const FoamMesh3& m, const FoamCell& cell, const FoamOptions& o, FieldValues D,
                                    FieldValues grad_D, FieldValues sigma)
-    : DiscreteTraction(pm, foam_cell(m), m.phase, o, {}, {}, std::move(D), std::move(grad_D), std::move(sigma)) {
-  centre_.resize(pm.cells);
-  volume_.resize(pm.cells);
-  for (int c = 0; c < pm.cells; ++c) {
-    const std::array<int, 4>& t = m.mesh.tets[static_cast<std::size_t>(c)];
-    const auto& p = m.mesh.points;
-    centre_[c] = scale_ * tet_centroid(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
-    volume_[c] = tet_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) * scale_ * scale_ * scale_;
-  }
+    : DiscreteTraction(m.mesh, cell, m.phase, o, {}, {}, std::move(D), std::move(grad_D), std::move(sigma)) {
+  const double s = scale_;
+  for (const Vec3 c : m.centre) centre_.push_back(s * c);
+  for (const double v : m.volume) volume_.push_back(v * s * s * s);
 }
 
 DiscreteTraction::Neighbour DiscreteTraction::neighbour(int f) const {

@@ -1,9 +1,9 @@
 // The force a solved case carries through its faces, as solidDisplacementFoam's own
-// discrete equation has it. In the compact form (2D cases) on a face between cells P and N
+// discrete equation has it. In the compact form (2D cases, 3D polyhedra) on a face between cells P and N
 //   F = gamma_f |S| snGrad(D) + S . X_f,   X = sigma - gamma grad(D),  gamma = 2 mu + lambda,
 // gamma_f interpolated as the case says (harmonic or linear), snGrad with OpenFOAM's
 // non-orthogonal correction from the interpolated gradient, X_f linear; in the plain form
-// (3D cases, compact_normal_stress) F = S . sigma_f, sigma_f linear. At convergence
+// (3D tetrahedra, compact_normal_stress) F = S . sigma_f, sigma_f linear. At convergence
 // the forces on every cell's faces add up to zero, so the force through a patch is the
 // load the cell carries, and over the cell's section it is the mean stress exactly -
 // unlike the area average of cell stresses, which mixes the phases next to interfaces.
@@ -29,11 +29,11 @@ class DiscreteTraction {
  public:
   // The case's mesh (`pm`, built from `m` with `o`), its solved cell fields, and each
   // cyclic patch's jump in D (metres; the low patch's, the high one has its negative).
-  // grad(D) only in the compact form (2D cases); the plain form's force needs sigma alone.
+  // grad(D) only in the compact form; the plain form's force needs sigma alone.
   DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
-  // The same for a 3D case (write_foam_case_3d).
-  DiscreteTraction(const PolyMesh& pm, const ExportMesh3& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
+  // The same for a 3D case's mesh (write_foam_case_3d) in `cell`.
+  DiscreteTraction(const FoamMesh3& m, const FoamCell& cell, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
 
   // The force (N; z zero in 2D) through face f out of its owner: internal and cyclic faces.

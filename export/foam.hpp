@@ -192,10 +192,13 @@ FoamCell foam_cell(const ExportMesh& m);
 double stiffness_contrast(const std::vector<FoamPhase>& phases, const FoamOptions& options);
 bool harmonic_stiffness(const FoamCell& cell, const FoamOptions& options);
 
-// Whether the case solves solidDisplacementFoam's compact form (2D), where the force
-// through a face is gamma_f |S| snGrad(D) + S . (sigma - gamma grad(D))_f, or the plain
-// one (3D), where it is S . sigma_f (analysis/traction.hpp).
-inline bool compact_normal_stress(const FoamCell& cell) { return cell.dimensions() == 2; }
+// Whether the case solves solidDisplacementFoam's compact form (2D, and 3D polyhedra),
+// where the force through a face is gamma_f |S| snGrad(D) + S . (sigma - gamma
+// grad(D))_f, or the plain one (3D tetrahedra), where it is S . sigma_f
+// (analysis/traction.hpp).
+inline bool compact_normal_stress(const FoamCell& cell, const FoamOptions& options) {
+  return cell.dimensions() == 2 || options.cells == FoamOptions::Cells::polygons;
+}
 
 // The phases' elastic constants as the case carries them.
 std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);

@@ -127,11 +127,11 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
   write_text(dir / "system/fvSolution",
              dictionary_header("system", "fvSolution") +
                  "solvers\n{\n    D\n    {\n" +
-                 (compact_normal_stress(cell)
+                 (cell.dimensions() == 2
                       ? "        solver          GAMG;\n        tolerance       1e-12;\n"
                         "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n"
-                      : "        // Not GAMG: a fully periodic cell's system is singular, and on tetrahedra GAMG\n"
-                        "        // blew up on the rounding noise of a component whose solution is zero.\n"
+                      : "        // Not GAMG: a fully periodic cell's system is singular, and in 3D GAMG blew up\n"
+                        "        // on the rounding noise of a component whose solution is zero.\n"
                         "        solver          PCG;\n        preconditioner  DIC;\n        tolerance       1e-12;\n"
                         "        relTol          0.1;\n    }\n") +
                  (thermal ? "    // T is uniform: met at once, never iterated.\n    T\n    {\n        solver          PCG;\n"
@@ -139,13 +139,13 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
                           : "") +
                  "}\n\n"
                  "// One correction per (pseudo-)time step: system/controlDict says when to stop.\n" +
-                 (compact_normal_stress(cell)
+                 (compact_normal_stress(cell, o)
                       ? std::string()
                       : "// The force through a face S . sigma_f (sigma interpolated linearly), the implicit\n"
                         "// Laplacian only a predictor that cancels at convergence: the compact form diverges on\n"
                         "// tetrahedra with least-squares gradients, and with Gauss ones is not exact for a\n"
                         "// uniform strain (one material: C44 7 % low at 11k tetrahedra).\n") +
-                 "stressAnalysis\n{\n    compactNormalStress " + (compact_normal_stress(cell) ? "yes" : "no") +
+                 "stressAnalysis\n{\n    compactNormalStress " + (compact_normal_stress(cell, o) ? "yes" : "no") +
                  ";\n    nCorrectors     1;\n    D               " +
                  number_text(kSolverTolerance) + ";\n}\n");
 }

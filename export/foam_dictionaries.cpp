@@ -73,7 +73,7 @@ std::string control_dict(const FoamCell& cell, const FoamOptions& o, int end_ste
          "    // when runTimeControl stops the run, where the solver itself writes no sigma.\n"
          "    stress\n    {\n        type            writeObjects;\n        libs            (utilityFunctionObjects);\n"
          "        objects         (" + std::string(kStressField) + ");\n        writeOption     anyWrite;\n        writeControl    writeTime;\n    }\n" +
-         (o.cyclic && compact_normal_stress(cell) ? "    // grad(D) where the fields are written: with D and sigmaD it gives the force through the\n"
+         (o.cyclic && compact_normal_stress(cell, o) ? "    // grad(D) where the fields are written: with D and sigmaD it gives the force through the\n"
                      "    // cyclic faces, where OpenFOAM writes no face values (grainmesh's homogenisation).\n"
                      "    gradient\n    {\n        type            grad;\n        libs            (fieldFunctionObjects);\n"
                      "        field           D;\n        executeControl  writeTime;\n        writeControl    writeTime;\n    }\n"

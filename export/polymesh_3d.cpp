@@ -67,6 +67,24 @@ std::vector<BoundaryFace> image_faces(const std::vector<BoundaryFace>& low, cons
 
 }  // namespace
 
+PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
+  PolyMesh::Patch p;
+  p.name = kSideNames3[s];
+  const int axis = s / 2;
+  if (o.cyclic) {
+    p.type = "cyclic";
+    p.neighbour_patch = kSideNames3[s ^ 1];
+    Vec3 shift{};
+    shift[axis] = box[axis];
+    p.separation = s % 2 == 0 ? shift : -1.0 * shift;
+  } else if (s == 1 || (o.uniaxial && (s == 3 || s == 5))) {
+    p.type = "patch";
+  } else {
+    p.type = "symmetryPlane";
+  }
+  return p;
+}
+
 ExportMesh3 grain_export_mesh_3d(const Tessellation3& t, const GrainMesh3& m) {
   return {.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases), .box = t.size(),
           .periodic = t.periodic, .pairs = m.pairs};
@@ -122,22 +140,9 @@ PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], m.pairs.axis[a], a);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
-    PolyMesh::Patch p;
-    p.name = kSideNames3[s];
+    PolyMesh::Patch p = side_patch_3d(s, m.box, o);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
-    const int axis = s / 2;
-    if (o.cyclic) {
-      p.type = "cyclic";
-      p.neighbour_patch = kSideNames3[s ^ 1];
-      Vec3 shift{};
-      shift[axis] = m.box[axis];
-      p.separation = s % 2 == 0 ? shift : -1.0 * shift;
-    } else if (s == 1 || (o.uniaxial && (s == 3 || s == 5))) {
-      p.type = "patch";
-    } else {
-      p.type = "symmetryPlane";
-    }
     for (const BoundaryFace& f : sides[s]) add_face(pm, f.points, f.owner);
     pm.patches.push_back(p);
   }

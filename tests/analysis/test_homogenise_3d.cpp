@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "analysis/bounds_3d.hpp"
 #include "analysis/homogenise_3d.hpp"
 #include "analysis/traction.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
@@ -19,14 +20,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // Writes the six load cases of `e` under `o` into `dir` and solves them, two at a time.
-PeriodicHomogenised3 solve_six(const ExportMesh3& e, const FoamOptions& o, const fs::path& dir, PolyMesh& pm) {
+PeriodicHomogenised3 solve_six(const ExportMesh3& e, const FoamOptions& o, const fs::path& dir, FoamMesh3& fm) {
   std::vector<fs::path> dirs;
   for (const LoadCase3& c : periodic_load_cases_3d(e, o)) {
     dirs.push_back(dir / ("case_" + c.name));
     fs::create_directories(dirs.back());
-    pm = write_foam_case_3d(dirs.back(), e, load_case_options_3d(o, c));
+    fm = write_foam_case_3d(dirs.back(), e, load_case_options_3d(o, c));
   }
-  return solve_periodic_3d(dirs, e, pm, o, 2);
+  return solve_periodic_3d(dirs, e, fm, o, 2);
 }
 
 // The largest difference of two tensors over the largest entry of the second.
@@ -63,8 +64,9 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)}));
   const FoamOptions o{.displacement = 1e-3 * t.width};
   test::ScratchDir dir("one3d");
-  PolyMesh pm;
-  const PeriodicHomogenised3 h = solve_six(e, o, dir.path(), pm);
+  FoamMesh3 fm;
+  const PeriodicHomogenised3 h = solve_six(e, o, dir.path(), fm);
+  const PolyMesh& pm = fm.mesh;
   const Stiffness6 exact = isotropic_stiffness_3d(carbide);
   INFO("face forces:\n" << show(h.stiffness) << "volume averages:\n" << show(h.volume_average_stiffness));
   // solidDisplacementFoam's plain form with least-squares gradients: a uniform strain is
@@ -76,7 +78,7 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   // The face forces are the solver's own: every cell balanced at convergence (the shear
   // case, where all three components move).
   const LoadCaseResult3& shear = h.cases[5];
-  const DiscreteTraction traction(pm, e, load_case_options_3d(o, shear.load), shear.fields.displacement,
+  const DiscreteTraction traction(fm, foam_cell(e), load_case_options_3d(o, shear.load), shear.fields.displacement,
                                   FieldValues{}, shear.fields.stress);
   double largest = 0.0, worst = 0.0;
   for (int f = 0; f < pm.internal_faces(); ++f) largest = std::max(largest, norm(traction.face_force(f)));
@@ -87,12 +89,13 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
 namespace {
 
 // A laminate of ten slabs normal to x (seeds in a row), three of them soft, in a
-// periodic cell 1 x 0.3 x 0.3 meshed at h = 0.04 (about 11k tetrahedra), solved.
+// periodic cell 1 x 0.3 x 0.3 meshed at h = 0.04 (about 11k tetrahedra), solved on the
+// tetrahedra or on their dual.
 struct Laminate3 {
   PeriodicHomogenised3 h;
   Stiffness6 exact;
 };
-Laminate3 laminate_cell(double ratio) {
+Laminate3 laminate_cell(double ratio, FoamOptions::Cells cells = FoamOptions::Cells::triangles) {
   Tessellation3Options to;
   to.width = 1.0;
   to.height = to.depth = 0.3;
@@ -116,8 +119,10 @@ Laminate3 laminate_cell(double ratio) {
   }
   REQUIRE(std::abs(soft_volume / (t.width * t.height * t.depth) - 0.3) < 1e-9);
   test::ScratchDir dir("laminate3d");
-  PolyMesh pm;
-  return {solve_six(e, {.displacement = 1e-3}, dir.path(), pm), test::laminate_3d(hard, soft, 0.3)};
+  FoamMesh3 fm;
+  FoamOptions o{.displacement = 1e-3};
+  o.cells = cells;
+  return {solve_six(e, o, dir.path(), fm), test::laminate_3d(hard, soft, 0.3)};
 }
 
 // The nine orthotropic components' relative errors, and the largest of the others over C11.
@@ -164,6 +169,105 @@ TEST_CASE("3D homogenisation: a laminate of stiffness ratio 20 at the same mesh,
   for (int k : {7, 8}) CHECK(err.component[k] < 0.04);
   CHECK(err.others < 2e-3);
   CHECK(symmetry_error(l.h.stiffness) < 2e-3);
+}
+
+TEST_CASE("3D homogenisation on the dual: one material's isotropic tensor, every cell balanced",
+          "[homogenise3d][dual3d][solve]") {
+  Tessellation3Options to;
+  to.grains = 12;
+  to.lloyd_iterations = 2;
+  const FoamPhase carbide{"WC", 700e9, 0.24};
+  to.phases = {Phase{"WC", 0.0, true, carbide.youngs_modulus, carbide.poisson_ratio, {}}};
+  Rng rng(5);
+  const Tessellation3 t = tessellate_3d(to, rng);
+  const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)}));
+  FoamOptions o{.displacement = 1e-3 * t.width};
+  o.cells = FoamOptions::Cells::polygons;
+  test::ScratchDir dir("one3d_dual");
+  FoamMesh3 fm;
+  const PeriodicHomogenised3 h = solve_six(e, o, dir.path(), fm);
+  const Stiffness6 exact = isotropic_stiffness_3d(carbide);
+  INFO("face forces:\n" << show(h.stiffness));
+  // The compact form with least-squares gradients on polyhedra: a uniform strain is its
+  // exact solution.
+  CHECK(relative_difference(h.stiffness, exact) < 1e-9);
+  CHECK(relative_difference(h.volume_average_stiffness, exact) < 1e-9);
+  // Converged in tens of corrections (the tetrahedra's plain form takes hundreds).
+  for (const LoadCaseResult3& c : h.cases) CHECK(c.run.corrections < 100);
+  const LoadCaseResult3& shear = h.cases[5];
+  const PolyMesh& pm = fm.mesh;
+  const DiscreteTraction traction(
+      fm, foam_cell(e), load_case_options_3d(o, shear.load), shear.fields.displacement,
+      read_cell_field(shear.run.result_dir / kGradientField, "tensor", static_cast<std::size_t>(pm.cells)),
+      shear.fields.stress);
+  double largest = 0.0, worst = 0.0;
+  for (int f = 0; f < pm.internal_faces(); ++f) largest = std::max(largest, norm(traction.face_force(f)));
+  for (int c = 0; c < pm.cells; ++c) worst = std::max(worst, norm(traction.cell_imbalance(c)));
+  CHECK(worst < 1e-6 * largest);
+}
+
+TEST_CASE("3D homogenisation on the dual: laminates of ratio 3 and 20, the error across the layers",
+          "[homogenise3d][dual3d][solve]") {
+  for (const double ratio : {3.0, 20.0}) {
+    CAPTURE(ratio);
+    const Laminate3 l = laminate_cell(ratio, FoamOptions::Cells::polygons);
+    INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
+    const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
+    // Measured (h = 0.04): ratio 3: C11 0.15 %, C12 0.09 %, C55 = C66 2.85 %, the rest
+    // within 0.08 %, symmetric to 1.5e-3; ratio 20: C11 1.30 %, C12 1.09 %, C23 0.48 %,
+    // C55 = C66 14.9 %, symmetric to 5.2e-3. The normal components across are held by
+    // the interface weighting (without it ratio 20's C11 was +6.0 %); the shears across
+    // are not (issue 24 asks 1 %): the cells' least-squares gradients next to an
+    // interface mix the two phases' strains. Held here so that they do not get worse.
+    const double normal = ratio == 3.0 ? 0.005 : 0.02, shear = ratio == 3.0 ? 0.035 : 0.16;
+    for (int k : {0, 1, 2, 3, 4, 5, 6}) CHECK(err.component[k] < normal);
+    for (int k : {7, 8}) CHECK(err.component[k] < shear);
+    CHECK(err.others < 2e-3);
+    CHECK(symmetry_error(l.h.stiffness) < (ratio == 3.0 ? 2e-3 : 7e-3));
+  }
+}
+
+TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, between Voigt and Reuss, bulk within "
+          "Hashin-Shtrikman",
+          "[homogenise3d][dual3d][solve]") {
+  Tessellation3Options to;
+  to.grains = 100;
+  to.lloyd_iterations = 2;
+  const FoamPhase wc{"WC", 700e9, 0.24}, co{"Co", 211e9, 0.31};
+  to.phases = {Phase{"WC", 0.0, true, wc.youngs_modulus, wc.poisson_ratio, {}},
+               Phase{"Co", 0.2, false, co.youngs_modulus, co.poisson_ratio, {}}};
+  Rng rng(5);
+  const Tessellation3 t = tessellate_3d(to, rng);
+  const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
+  FoamOptions o{.displacement = 1e-3 * t.width};
+  o.cells = FoamOptions::Cells::polygons;
+  test::ScratchDir dir("wcco3d_dual");
+  FoamMesh3 fm;
+  const PeriodicHomogenised3 h = solve_six(e, o, dir.path(), fm);
+  std::vector<double> fraction(2, 0.0);
+  double volume = 0.0;
+  for (std::size_t c = 0; c < fm.volume.size(); ++c) {
+    fraction[fm.phase[c]] += fm.volume[c];
+    volume += fm.volume[c];
+  }
+  for (double& f : fraction) f /= volume;
+  const TensorBounds3 b = tensor_bounds_3d(e.phases, fraction);
+  const Stiffness6 C = symmetric_part(h.stiffness);
+  INFO(show(h.stiffness) << "Co " << fraction[1] << ", K " << bulk_modulus_3d(C) << " in [" << *b.bulk_lower << ", "
+                         << *b.bulk_upper << "], G " << shear_modulus_3d(C) << " in [" << *b.shear_lower << ", "
+                         << *b.shear_upper << "]");
+  // Measured (8,439 cells): symmetric to 3.3e-4; K 376.7 GPa in [363.8, 377.9]; G 228.4
+  // GPa above the upper bound 226.2 by 1.0 %, falling with refinement (227.5, 226.8,
+  // 226.2 at 400, 800, 1600 tetrahedra per grain): the shears' error at the interfaces
+  // (see the laminates). Issue 24 asks G within the bounds at this cell: not met at this
+  // mesh; held within 1.5 % of the bound so that it does not get worse.
+  CHECK(symmetry_error(h.stiffness) < 1e-3);
+  CHECK(semidefinite_order(C, b.voigt));
+  CHECK(semidefinite_order(b.reuss, C));
+  CHECK(bulk_modulus_3d(C) > *b.bulk_lower);
+  CHECK(bulk_modulus_3d(C) < *b.bulk_upper);
+  CHECK(shear_modulus_3d(C) > *b.shear_lower);
+  CHECK(shear_modulus_3d(C) < 1.015 * *b.shear_upper);
 }
 
 TEST_CASE("3D engineering constants: the isotropic tensor's own, and the universal anisotropy index of a cubic one",

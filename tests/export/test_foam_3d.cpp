@@ -68,6 +68,46 @@ TEST_CASE("3D polyMesh: checkMesh passes a periodic two-phase cell with six patc
   }
 }
 
+TEST_CASE("3D polyMesh of the dual: checkMesh passes the polyhedra split at grain boundaries, with patches and cyclic",
+          "[export][openfoam][mesh3d][dual3d]") {
+  test::ScratchDir dir("foam3d_dual");
+  const ExportMesh3 e = cell_3d(true);
+  double box_volume = e.box.x * e.box.y * e.box.z;
+  for (const bool cyclic : {false, true}) {
+    CAPTURE(cyclic);
+    FoamOptions o;
+    o.cyclic = cyclic;
+    o.grain_zones = true;
+    o.cells = FoamOptions::Cells::polygons;
+    const FoamMesh3 d = foam_mesh_3d(e, o);
+    const PolyMesh& pm = d.mesh;
+    // A cell per point and grain around it: at least one per point, more on grain
+    // boundaries; every cell's volume positive, all of them the box's, and each grain's
+    // cells exactly its tetrahedra's volume.
+    REQUIRE(pm.cells >= static_cast<int>(e.mesh.points.size()));
+    REQUIRE(d.volume.size() == static_cast<std::size_t>(pm.cells));
+    double total = 0.0;
+    std::vector<double> grain_volume(20, 0.0), tet_grain_volume(20, 0.0);
+    for (int c = 0; c < pm.cells; ++c) {
+      CHECK(d.volume[c] > 0.0);
+      total += d.volume[c];
+      grain_volume[d.grain[c]] += d.volume[c];
+    }
+    for (std::size_t k = 0; k < e.mesh.tets.size(); ++k) {
+      const auto& v = e.mesh.tets[k];
+      const auto& p = e.mesh.points;
+      tet_grain_volume[e.grain[k]] += tet_volume(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
+    }
+    CHECK(total == Approx(box_volume).epsilon(1e-9));
+    for (int g = 0; g < 20; ++g) CHECK(grain_volume[g] == Approx(tet_grain_volume[g]).epsilon(1e-9));
+    for (int a = 0; a < 3; ++a) REQUIRE(pm.patches[2 * a].size == pm.patches[2 * a + 1].size);
+    const fs::path c = dir / (cyclic ? "cyclic" : "patches");
+    write_mesh_case(c, pm, o);
+    const auto zones = test::check_mesh_ok(c, e.phases, d.phase);
+    CHECK(zones.size() == e.phases.size() + 20);
+  }
+}
+
 TEST_CASE("3D polyMesh: cyclic pairs need a periodic mesh", "[export][mesh3d]") {
   FoamOptions o;
   o.cyclic = true;
