@@ -105,6 +105,27 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
   return h;
 }
 
+Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& m, const FoamMesh3& fm,
+                      const FoamOptions& o, const Deadline& deadline, const std::filesystem::path& case_shown_as) {
+  Mixed3 r;
+  r.run = run_solver(case_dir, foam_cell(m), o, deadline, case_shown_as);
+  r.fields = read_case_fields(r.run.result_dir, static_cast<std::size_t>(fm.mesh.cells));
+  const PolyMesh& pm = fm.mesh;
+  const PolyMesh::Patch& right = pm.patches[static_cast<std::size_t>(patch_index(pm, "right"))];
+  const FieldValues sigma = read_patch_field(r.run.result_dir / kStressField, "symmTensor", "right",
+                                             static_cast<std::size_t>(right.size));
+  // S . sigma_f's x component (sigma: xx xy xz yy yz zz), in metres squared and pascals.
+  double force = 0.0;
+  for (int k = 0; k < right.size; ++k) {
+    const Vec3 S = (o.convert_to_meters * o.convert_to_meters) * foam_face(pm, right.start + k).area;
+    force += S.x * sigma[k][0] + S.y * sigma[k][1] + S.z * sigma[k][2];
+  }
+  r.sigma_xx = force / (m.box.y * m.box.z * o.convert_to_meters * o.convert_to_meters);
+  r.strain_xx = load_strain(foam_cell(m), o);
+  r.modulus = r.sigma_xx / r.strain_xx;
+  return r;
+}
+
 Stiffness6 symmetric_part(const Stiffness6& c) {
   Stiffness6 s{};
   for (int i = 0; i < 6; ++i)

@@ -54,6 +54,20 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
                                        const Deadline& deadline = {},
                                        const std::vector<std::filesystem::path>& cases_shown_as = {});
 
+// The thesis' mixed load in 3D (write_foam_case_3d without cyclic: right pulled by
+// load.displacement, symmetry planes on the other sides, so the cell is held from
+// straining sideways): solved, the mean stress through right from the force there (sigma's
+// face values, S . sigma_f), the strain displacement / width, their ratio the modulus
+// under uniaxial strain (C11 of an isotropic cell). Errors as run_solver.
+struct Mixed3 {
+  SolveRun run;
+  CaseFields fields;
+  double sigma_xx = 0.0, strain_xx = 0.0, modulus = 0.0;
+};
+Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& m, const FoamMesh3& fm,
+                      const FoamOptions& o, const Deadline& deadline = {},
+                      const std::filesystem::path& case_shown_as = {});
+
 // The stiffness made symmetric, each Cij the mean of Cij and Cji (of the two load cases
 // that give it), and how far it was from symmetric: max |Cij - Cji| / max |Cij|.
 Stiffness6 symmetric_part(const Stiffness6& c);

@@ -17,17 +17,6 @@ namespace grainmesh {
 
 std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
 
-namespace {
-
-// A solved load case: its name in the report, its recovered cell stresses, its loaded
-// component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero).
-struct StressedCase {
-  std::string name;
-  const std::vector<StressState>* cell_stress;
-  int loaded;
-  const std::vector<StressState>* balanced = nullptr;  // the virial stresses, for the means (periodic)
-};
-
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
   return {{"corrections", r.corrections},
           {"final_residual", r.final_residual},
@@ -40,8 +29,6 @@ Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
             {"reconstructPar", r.reconstruct_seconds}}}};
 }
 
-
-// A bound broken by `value`, as a warning (nothing when it holds, to rounding).
 constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
 std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
                                    bool above) {
@@ -50,6 +37,20 @@ std::optional<std::string> outside(const std::string& what, double value, double
          to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(value / bound - 1.0), 2) + " %";
 }
 
+Json distribution_json(const Distribution& d) {
+  return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
+}
+
+namespace {
+
+// A solved load case: its name in the report, its recovered cell stresses, its loaded
+// component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero).
+struct StressedCase {
+  std::string name;
+  const std::vector<StressState>* cell_stress;
+  int loaded;
+  const std::vector<StressState>* balanced = nullptr;  // the virial stresses, for the means (periodic)
+};
 
 std::vector<double> achieved_fractions(const Tessellation& t) {
   std::vector<double> fractions;
@@ -57,11 +58,6 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
   return fractions;
 }
 
-
-
-Json distribution_json(const Distribution& d) {
-  return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
-}
 
 
 // `stresses` {CASE: {PHASE: {area_fraction, mean {xx, yy, zz, xy}, von_mises,

@@ -4,10 +4,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/homogenise.hpp"
+#include "analysis/phase_statistics.hpp"
+#include "analysis/solve.hpp"
 #include "common/deadline.hpp"
 #include "export/foam.hpp"
 #include "grains/grain_mesh.hpp"
@@ -25,6 +28,16 @@ struct Answer {
 
 // The case directory of a periodic load case: case_xx, case_yy, case_xy.
 std::string periodic_case_dir(const LoadCase& c);
+
+// A solve in report.json: corrections, residuals, the result's time directory (relative
+// to `dir`), OpenFOAM's steps' seconds.
+Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
+// A bound broken by `value` (above it when `above`), as a warning; nothing when it holds,
+// to rounding.
+std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
+                                   bool above);
+// A distribution in report.json: mean, std, p50, p90, p99, max.
+Json distribution_json(const Distribution& d);
 
 // What the answers are computed from and written beside: the run's staging directory
 // `dir` (cases in it), its tessellation and exported mesh, the export's options,

@@ -4,7 +4,10 @@
 
 #include <cstdio>
 
+#include "common/errors.hpp"
 #include "common/memory.hpp"
+#include "pipelines/answer_3d.hpp"
+#include "pipelines/export_command.hpp"
 #include "pipelines/mesh_3d_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
@@ -16,15 +19,82 @@
 
 namespace grainmesh {
 
+namespace {
+
+// The export, load and solve keys a 3D run takes (beside the tessellation's and the mesh's).
+const std::vector<std::string>& case_keys_3d() {
+  static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
+                                             "export.cells", "load.displacement", "load.uniaxial",
+                                             "homogenise.boundary", "solve.processes", "output.pictures"};
+  return keys;
+}
+
+// Why a 2D key is refused on 3D cells.
+std::string refused_3d(const std::string& key) {
+  if (key == "export.thickness" || key == "load.plane_stress") return "a 3D cell has no plane to extrude or hold";
+  if (key == "export.cyclic") return "homogenise.boundary = periodic makes the cyclic pairs";
+  if (key == "export.stiffness_interpolation") return "3D cases interpolate the stiffness linearly (harmonic diverges)";
+  if (key == "load.traction") return "3D cases are loaded by load.displacement";
+  if (key == "load.delta_T") return "the thermal load is not solved on 3D cells yet (2D only)";
+  return "not available for 3D cells (domain.depth is set)";
+}
+
+// The case options of a 3D run: export.cells is polyhedra (the tetrahedra's dual, the
+// default: its solves converge) or tetrahedra; periodic homogenisation makes the case
+// cyclic.
+FoamOptions read_foam_options_3d(const Config& c) {
+  std::vector<std::string> keys = export_config_keys();
+  std::erase(keys, std::string("export.cells"));
+  FoamOptions o = read_foam_options(c.subset(keys));
+  const std::string cells = c.has("export.cells") ? c.text("export.cells") : "polyhedra";
+  if (cells != "polyhedra" && cells != "tetrahedra")
+    c.fail("export.cells", "must be polyhedra or tetrahedra on 3D cells, got '" + cells + "'");
+  o.cells = cells == "polyhedra" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
+  const long long processes = c.integer("solve.processes", 1);
+  if (processes < 1 || processes > 1024) c.fail("solve.processes", "must be a count from 1 to 1024, got " + c.text("solve.processes"));
+  o.processes = static_cast<int>(processes);
+  if (read_boundary(c) == Boundary::periodic) {
+    if (!c.flag("domain.periodic", false))
+      c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+    if (c.has("load.uniaxial"))
+      c.fail("load.uniaxial", "not with homogenise.boundary = periodic, whose load cases are macroscopic strains");
+    o.cyclic = true;
+  }
+  return o;
+}
+
+// The cases of the run in `dir`: the mixed load in case/, the six periodic load cases each
+// in case_NAME/. Returns their directory names and the mesh they were written on.
+std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const ExportMesh3& e, const FoamOptions& o,
+                                        Boundary boundary, FoamMesh3& fm) {
+  std::vector<std::string> names;
+  if (boundary == Boundary::mixed) {
+    names.push_back("case");
+    std::filesystem::create_directories(dir / "case");
+    fm = write_foam_case_3d(dir / "case", e, o);
+    return names;
+  }
+  for (const LoadCase3& lc : periodic_load_cases_3d(e, o)) {
+    names.push_back(periodic_case_dir_3d(lc));
+    std::filesystem::create_directories(dir / names.back());
+    fm = write_foam_case_3d(dir / names.back(), e, load_case_options_3d(o, lc));
+  }
+  return names;
+}
+
+}  // namespace
+
 void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
-  constexpr const char* kNotYet = "3D cells are not exported to OpenFOAM yet: grainmesh run tessellates and meshes them";
-  if (solve) c.fail("domain.depth", std::string("--solve: ") + kNotYet);
-  // A 3D run's keys: the tessellation's and the mesh's.
+  // A 3D run's keys: the tessellation's, the mesh's and the case's.
   std::vector<std::string> keys = tessellate_config_keys();
   keys.insert(keys.end(), mesh_config_keys().begin(), mesh_config_keys().end());
+  keys.insert(keys.end(), case_keys_3d().begin(), case_keys_3d().end());
   const Config taken = c.subset(keys);
   for (const auto& [key, value] : c.entries())
-    if (!taken.has(key)) c.fail(key, std::string("not available for 3D cells (domain.depth is set): ") + kNotYet);
+    if (!taken.has(key)) c.fail(key, refused_3d(key));
+  FoamOptions foam = read_foam_options_3d(c);
+  const Boundary boundary = read_boundary(c);
+  read_pictures(c);
   check_output_replaceable(out, "run");
   const Config tess_config = c.subset(tessellate_config_keys());
   const Tessellate3Job tess_job = read_tessellate_3d_job(tess_config);
@@ -37,6 +107,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   stage.show("tessellating");
   const Tessellation3 t = run_tessellate_3d_job(tess_job, tess_config, warnings);
   seconds["tessellate"] = since(clock);
+  for (const std::string& w : check_load(FoamCell{foam_phases(t.phases), t.size(), t.periodic}, foam)) warnings.add(w);
 
   clock = Clock::now();
   Mesh3Job mesh_job = read_mesh_3d_job(c.subset(mesh_config_keys()), t);
@@ -44,13 +115,52 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   stage.show("meshing " + std::to_string(t.regions.size()) + " regions");
   const GrainMesh3 m = run_mesh_3d_job(t, mesh_job);
   seconds["mesh"] = since(clock);
-  stage.end();
 
   StagedOutput staged(out, "run");
+  const std::filesystem::path dir = staged.dir();
   Json report{{"config", c.source()}, {"config_fingerprint", config_fingerprint(c)}};
-  report.update(write_tessellation_3d_files(staged.dir(), t, tess_job));
-  report.update(write_mesh_3d_files(staged.dir(), t, m, mesh_job, warnings));  // its grains and section_z: the same
-  write_text_file(staged.dir() / "config.ini", config_ini(c));
+  report.update(write_tessellation_3d_files(dir, t, tess_job));
+  report.update(write_mesh_3d_files(dir, t, m, mesh_job, warnings));  // its grains and section_z: the same
+
+  clock = Clock::now();
+  stage.show("exporting");
+  const ExportMesh3 e = grain_export_mesh_3d(t, m);
+  if (!c.has("export.format") && e.mesh.tets.size() > kBinaryCaseAboveCells) foam.binary = true;
+  FoamMesh3 fm;
+  const std::vector<std::string> case_dirs = write_cases_3d(dir, e, foam, boundary, fm);
+  seconds["export"] = since(clock);
+  write_text_file(dir / "config.ini", config_ini(c));
+  report["case"] = case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs);
+  report["case_format"] = foam.binary ? "binary" : "ascii";
+  report["case_cells"] = {{"shape", foam.cells == FoamOptions::Cells::polygons ? "polyhedra" : "tetrahedra"},
+                          {"cells", fm.mesh.cells},
+                          {"faces", fm.mesh.faces()}};
+  report["solved"] = solve;
+
+  if (solve) {
+    clock = Clock::now();
+    stage.show("solving with solidDisplacementFoam (" + std::to_string(case_dirs.size()) + " case" +
+               (case_dirs.size() > 1 ? "s" : "") + ")");
+    std::vector<std::string> solve_warnings;
+    const SolveInput3 in{dir, staged, t, e, fm, foam, tess_job.options.deadline};
+    try {
+      Answer answer = boundary == Boundary::mixed ? homogenise_mixed_3d(in, solve_warnings)
+                                                  : homogenise_periodic_3d(in, solve_warnings);
+      report["effective"] = std::move(answer.effective);
+      report["effective"]["processes"] = foam.processes;
+      report["stresses"] = std::move(answer.stresses);
+    } catch (const SolveError& err) {
+      // Kept for a look: the cases with the solver's logs, as OUT.failed.
+      stage.end();
+      report["failed"] = err.what();
+      write_report(staged, report, warnings);
+      staged.keep_as_failed();
+      throw;
+    }
+    for (const std::string& w : solve_warnings) warnings.add(w);
+    seconds["solve"] = since(clock);
+  }
+  stage.end();
   seconds["total"] = since(start);
   report["seconds"] = seconds;
   add_time_limit(report, tess_job.options.deadline);
@@ -60,9 +170,27 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   if (!summary) return;
   print_tessellation_3d_summary(t, seconds["tessellate"].get<double>());
   print_mesh_3d_summary(report["mesh"], m.seconds);
+  std::printf("  cases: %s (%d %s cells)\n", case_dirs.size() == 1 ? "case/" : "case_xx/ ... case_xy/ (six load cases)",
+              fm.mesh.cells, foam.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
+  if (solve && boundary == Boundary::mixed) {
+    const Json& eff = report["effective"];
+    std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
+    if (eff.contains("voigt")) std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
+    std::printf(", %d corrections\n", eff["corrections"].get<int>());
+  } else if (solve) {
+    const Json& eff = report["effective"];
+    const Json& C = eff["stiffness"];
+    std::printf("  solved: C11 %.4g, C22 %.4g, C33 %.4g, C12 %.4g, C44 %.4g Pa; K %.4g, G %.4g Pa; symmetric to %.1e "
+                "(6 load cases, at most %d corrections)\n",
+                C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
+                C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
+                eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
+  }
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
-              "config.ini, report.json}\n",
-              out.string().c_str(), tess_job.section * t.depth);
+              "%s, config.ini, report.json}\n",
+              out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/");
+  if (!warnings.all().empty())
+    std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
 }
 
 }  // namespace grainmesh

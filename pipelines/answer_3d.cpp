@@ -1,0 +1,140 @@
+#include "pipelines/answer_3d.hpp"
+
+#include <algorithm>
+#include <thread>
+
+#include "analysis/bounds_3d.hpp"
+#include "analysis/phase_statistics_3d.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+constexpr const char* kVoigtNames[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+
+// The phases' volume fractions as the mesh's cells have them.
+std::vector<double> volume_fractions(const FoamMesh3& fm, std::size_t phases) {
+  std::vector<double> f(phases, 0.0);
+  double total = 0.0;
+  for (std::size_t c = 0; c < fm.volume.size(); ++c) {
+    f[static_cast<std::size_t>(fm.phase[c])] += fm.volume[c];
+    total += fm.volume[c];
+  }
+  for (double& x : f) x /= total;
+  return f;
+}
+
+// {PHASE: {volume_fraction, mean {xx ... xy}, von_mises, hydrostatic}}, Pa.
+Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in) {
+  Json out;
+  const std::vector<PhaseStresses3> ps =
+      phase_stresses_3d(fields.stress, in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    Json mean;
+    for (int i = 0; i < 6; ++i) mean[kVoigtNames[i]] = ps[p].mean[static_cast<std::size_t>(i)];
+    out[in.e.phases[p].name] = {{"volume_fraction", ps[p].volume_fraction},
+                                {"mean", mean},
+                                {"von_mises", distribution_json(ps[p].von_mises)},
+                                {"hydrostatic", distribution_json(ps[p].hydrostatic)}};
+  }
+  return out;
+}
+
+// Cij for 1 <= i <= j <= 6.
+Json stiffness_json(const Stiffness6& c) {
+  Json out;
+  for (int i = 0; i < 6; ++i)
+    for (int j = i; j < 6; ++j) {
+      const char name[4] = {'C', static_cast<char>('1' + i), static_cast<char>('1' + j), '\0'};
+      out[name] = c[i][j];
+    }
+  return out;
+}
+
+}  // namespace
+
+std::string periodic_case_dir_3d(const LoadCase3& c) { return "case_" + c.name; }
+
+Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
+  const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
+  Answer answer;
+  answer.stresses["mixed"] = phase_stresses_json(h.fields, in);
+  Json& effective = answer.effective;
+  effective = solve_json(h.run, in.dir);
+  effective["boundary"] = "mixed";
+  effective["modulus"] = h.modulus;
+  effective["sigma_xx"] = h.sigma_xx;
+  effective["strain_xx"] = h.strain_xx;
+  if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways
+  // Uniaxial strain: between the Reuss and Voigt tensors' C11 for every microstructure.
+  const TensorBounds3 b = tensor_bounds_3d(in.e.phases, volume_fractions(in.fm, in.e.phases.size()));
+  effective["voigt"] = b.voigt[0][0];
+  effective["reuss"] = b.reuss[0][0];
+  const auto above = outside("effective.modulus", h.modulus, b.voigt[0][0], "the Voigt bound", true);
+  const auto below = outside("effective.modulus", h.modulus, b.reuss[0][0], "the Reuss bound", false);
+  effective["inside_bounds"]["voigt_reuss"] = !above && !below;
+  for (const auto& w : {above, below})
+    if (w) warnings.push_back(*w + ": check the solve (see README, 3D cells)");
+  return answer;
+}
+
+Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
+  std::vector<std::filesystem::path> dirs, shown;
+  for (const LoadCase3& c : periodic_load_cases_3d(in.e, in.foam)) {
+    dirs.push_back(in.dir / periodic_case_dir_3d(c));
+    shown.push_back(in.staged.failed_dir() / periodic_case_dir_3d(c));
+  }
+  // The load cases side by side, as many as the cores take with each case's processes.
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int parallel = std::max(1, cores / std::max(1, in.foam.processes));
+  const PeriodicHomogenised3 h = solve_periodic_3d(dirs, in.e, in.fm, in.foam, parallel, in.deadline, shown);
+  Answer answer;
+  Json& effective = answer.effective;
+  effective["boundary"] = "periodic";
+  effective["strain"] = load_strain(foam_cell(in.e), in.foam);  // each case's (engineering) strain
+  int corrections = 0;
+  for (const LoadCaseResult3& r : h.cases) {
+    effective["load_cases"][r.load.name] = solve_json(r.run, in.dir);
+    corrections = std::max(corrections, r.run.corrections);
+    answer.stresses[r.load.name] = phase_stresses_json(r.fields, in);
+  }
+  effective["corrections"] = corrections;
+  const Stiffness6 C = symmetric_part(h.stiffness);
+  effective["stiffness"] = stiffness_json(C);
+  effective["symmetry_error"] = symmetry_error(h.stiffness);
+  const EngineeringConstants3 k = engineering_constants_3d(C);
+  effective["engineering"] = {{"E_x", k.E_x},     {"E_y", k.E_y},     {"E_z", k.E_z},     {"G_yz", k.G_yz},
+                              {"G_xz", k.G_xz},   {"G_xy", k.G_xy},   {"nu_xy", k.nu_xy}, {"nu_xz", k.nu_xz},
+                              {"nu_yz", k.nu_yz}, {"universal_anisotropy", k.universal_anisotropy}};
+  effective["bulk_modulus"] = bulk_modulus_3d(C);
+  effective["shear_modulus"] = shear_modulus_3d(C);
+  const std::vector<double> fractions = volume_fractions(in.fm, in.e.phases.size());
+  effective["volume_fractions"] = fractions;
+  const TensorBounds3 b = tensor_bounds_3d(in.e.phases, fractions);
+  effective["voigt"] = stiffness_json(b.voigt);
+  effective["reuss"] = stiffness_json(b.reuss);
+  const bool voigt_reuss = semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt);
+  effective["inside_bounds"]["voigt_reuss"] = voigt_reuss;
+  if (!voigt_reuss)
+    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
+                       "order): check the solve (see README, 3D cells)");
+  if (b.bulk_upper) {
+    effective["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower}, {"bulk_upper", *b.bulk_upper},
+                                     {"shear_lower", *b.shear_lower}, {"shear_upper", *b.shear_upper}};
+    const double K = bulk_modulus_3d(C), G = shear_modulus_3d(C);
+    bool inside = true;
+    for (const auto& w : {outside("effective.bulk_modulus", K, *b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
+                          outside("effective.bulk_modulus", K, *b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
+                          outside("effective.shear_modulus", G, *b.shear_upper, "the Hashin-Shtrikman upper bound", true),
+                          outside("effective.shear_modulus", G, *b.shear_lower, "the Hashin-Shtrikman lower bound", false)})
+      if (w) {
+        inside = false;
+        warnings.push_back(*w + " (a finite cell is not isotropic, and the 3D cells' shears across phase interfaces "
+                                "are first order in the mesh size; see README, 3D cells)");
+      }
+    effective["inside_bounds"]["hashin_shtrikman"] = inside;
+  }
+  return answer;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,42 @@
+// A 3D solve's answer as report.json gives it (answer.hpp's for 2D): the mixed load's
+// modulus, or the periodic cell's 6 x 6 stiffness with its symmetry, engineering
+// constants and bounds (a broken bound a warning), and the phases' stress statistics.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/homogenise_3d.hpp"
+#include "pipelines/answer.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+// What a 3D solve works on: the run's staging directory `dir` (the cases in it), the
+// exported mesh and the mesh its cases were written on, the export's options, the run's
+// time limit.
+struct SolveInput3 {
+  const std::filesystem::path& dir;
+  const StagedOutput& staged;
+  const Tessellation3& t;
+  const ExportMesh3& e;
+  const FoamMesh3& fm;
+  const FoamOptions& foam;
+  const Deadline& deadline;
+};
+
+// The case directories of the periodic load cases: case_xx ... case_xy.
+std::string periodic_case_dir_3d(const LoadCase3& c);
+
+// The mixed load's answer (case/): effective.modulus (under uniaxial strain), with the
+// Voigt and Reuss tensors' C11 around it and the phases' stresses.
+Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings);
+
+// The six periodic load cases' answer (case_NAME/): effective.stiffness (Cij, i <= j, each
+// the mean of Cij and Cji), effective.symmetry_error, the engineering constants, the
+// Voigt and Reuss tensors and the Hashin-Shtrikman bounds on bulk and shear modulus, and
+// the phases' stresses per load case.
+Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings);
+
+}  // namespace grainmesh
