@@ -43,6 +43,7 @@ struct FoamMesh3 {
   std::vector<int> grain, phase;  // per cell
   std::vector<Vec3> centre;       // mesh units
   std::vector<double> volume;     // mesh units cubed
+  std::vector<int> corner_cell;   // #4T: the cell holding each tetrahedron's corner k (at 4 t + k)
 };
 
 // The patch of the box's side s (0 left ... 5 front) under `options`: cyclic (with its

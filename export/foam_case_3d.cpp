@@ -9,8 +9,9 @@ FoamCell foam_cell(const ExportMesh3& m) { return {m.phases, m.box, m.periodic};
 
 FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
   if (o.cells == FoamOptions::Cells::polygons) return build_dual_polymesh_3d(m, o);
-  FoamMesh3 out{.mesh = build_polymesh_3d(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}};
+  FoamMesh3 out{.mesh = build_polymesh_3d(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
   // A tetrahedron's own: OpenFOAM's pyramids give its centroid and volume.
+  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) out.corner_cell.insert(out.corner_cell.end(), 4, static_cast<int>(t));
   for (const std::array<int, 4>& v : m.mesh.tets) {
     const std::vector<Vec3>& p = m.mesh.points;
     out.centre.push_back(tet_centroid(p[v[0]], p[v[1]], p[v[2]], p[v[3]]));

@@ -259,7 +259,8 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     out.grain.push_back(m.grain[c / 4]);
     out.phase.push_back(m.phase[c / 4]);
   }
-  std::vector<int> cell(corners);
+  std::vector<int>& cell = out.corner_cell;
+  cell.resize(corners);
   for (std::size_t c = 0; c < corners; ++c) cell[c] = cell_of_root[sets.find_set(static_cast<int>(c))];
 
   // The pieces: two per tetrahedron edge (between its ends' cells), two per corner of a

@@ -115,6 +115,7 @@ Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const s
     s.cells.add_cell(ring);
     s.grain.push_back(grain[k]);
     s.phase.push_back(phase[k]);
+    s.tet.push_back(static_cast<int>(k));
   }
   return s;
 }

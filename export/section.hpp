@@ -18,11 +18,12 @@ struct Section {
   CellMesh cells;
   std::vector<int> grain;  // #cells
   std::vector<int> phase;  // #cells
+  std::vector<int> tet;    // #cells: the tetrahedron cut (mesh_section only)
 };
 Section tessellation_section(const Tessellation3& t, double z);
 
 // The section z = `z` of a tetrahedral mesh: a triangle or quadrilateral per tetrahedron
-// the plane passes through, with that tetrahedron's grain and phase.
+// the plane passes through, with that tetrahedron's grain and phase (and index).
 Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z);
 
 }  // namespace grainmesh

@@ -1,10 +1,15 @@
 #include "pipelines/answer_3d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
+#include <tuple>
 
 #include "analysis/bounds_3d.hpp"
 #include "analysis/phase_statistics_3d.hpp"
+#include "common/format.hpp"
+#include "export/picture.hpp"
+#include "export/section.hpp"
 
 namespace grainmesh {
 
@@ -51,6 +56,32 @@ Json stiffness_json(const Stiffness6& c) {
   return out;
 }
 
+// The section z = in.section_z of the solved fields: each tetrahedron cut shows the mean
+// of its corners' cells (one cell each on tetrahedra), sigma_xx and von Mises in MPa.
+void write_section_pictures(const SolveInput3& in, const CaseFields& fields) {
+  if (in.picture_width == 0) return;
+  const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
+  std::vector<double> xx, mises;
+  for (const int t : s.tet) {
+    double sum_xx = 0.0, sum_mises = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const double* c = fields.stress[static_cast<std::size_t>(in.fm.corner_cell[4 * static_cast<std::size_t>(t) + k])];
+      const double sxx = c[0], sxy = c[1], sxz = c[2], syy = c[3], syz = c[4], szz = c[5];
+      sum_xx += sxx;
+      sum_mises += std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                             3.0 * (sxy * sxy + syz * syz + sxz * sxz));
+    }
+    xx.push_back(0.25e-6 * sum_xx);
+    mises.push_back(0.25e-6 * sum_mises);
+  }
+  const std::string at = ", z = " + to_text(in.section_z, 3) + (in.unit.empty() ? "" : " " + in.unit);
+  for (const auto& [name, field, title] : {std::tuple{"stress_xx.png", &xx, "sigma_xx (MPa)"},
+                                           std::tuple{"von_mises.png", &mises, "von Mises (MPa)"}})
+    write_mesh_png(in.dir / name, s.cells,
+                   {.width_px = in.picture_width, .fill_by = {}, .outline_by = s.grain, .view = {}, .field = *field,
+                    .field_name = title + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
+}
+
 }  // namespace
 
 std::string periodic_case_dir_3d(const LoadCase3& c) { return "case_" + c.name; }
@@ -59,6 +90,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
   Answer answer;
   answer.stresses["mixed"] = phase_stresses_json(h.fields, in);
+  write_section_pictures(in, h.fields);
   Json& effective = answer.effective;
   effective = solve_json(h.run, in.dir);
   effective["boundary"] = "mixed";
@@ -99,6 +131,7 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
     answer.stresses[r.load.name] = phase_stresses_json(r.fields, in);
   }
   effective["corrections"] = corrections;
+  write_section_pictures(in, h.cases[0].fields);
   const Stiffness6 C = symmetric_part(h.stiffness);
   effective["stiffness"] = stiffness_json(C);
   effective["symmetry_error"] = symmetry_error(h.stiffness);

@@ -24,19 +24,23 @@ struct SolveInput3 {
   const FoamMesh3& fm;
   const FoamOptions& foam;
   const Deadline& deadline;
+  int picture_width = 0;   // the stress sections' (0: none)
+  double section_z = 0.0;  // their plane, mesh units
+  std::string unit{};      // their scale bar's length unit
 };
 
 // The case directories of the periodic load cases: case_xx ... case_xy.
 std::string periodic_case_dir_3d(const LoadCase3& c);
 
 // The mixed load's answer (case/): effective.modulus (under uniaxial strain), with the
-// Voigt and Reuss tensors' C11 around it and the phases' stresses.
+// Voigt and Reuss tensors' C11 around it and the phases' stresses; pictures of the
+// section z = section_z: stress_xx.png and von_mises.png.
 Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings);
 
 // The six periodic load cases' answer (case_NAME/): effective.stiffness (Cij, i <= j, each
 // the mean of Cij and Cji), effective.symmetry_error, the engineering constants, the
 // Voigt and Reuss tensors and the Hashin-Shtrikman bounds on bulk and shear modulus, and
-// the phases' stresses per load case.
+// the phases' stresses per load case; the xx case's section pictures as the mixed load's.
 Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings);
 
 }  // namespace grainmesh

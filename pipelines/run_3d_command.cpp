@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/memory.hpp"
+#include "export/picture.hpp"
 #include "pipelines/answer_3d.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_3d_command.hpp"
@@ -142,7 +143,9 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
     stage.show("solving with solidDisplacementFoam (" + std::to_string(case_dirs.size()) + " case" +
                (case_dirs.size() > 1 ? "s" : "") + ")");
     std::vector<std::string> solve_warnings;
-    const SolveInput3 in{dir, staged, t, e, fm, foam, tess_job.options.deadline};
+    const SolveInput3 in{dir,  staged, t, e, fm, foam, tess_job.options.deadline,
+                         read_pictures(c) == Pictures::none ? 0 : mesh_job.picture_width, mesh_job.section * t.depth,
+                         length_unit_name(foam.convert_to_meters)};
     try {
       Answer answer = boundary == Boundary::mixed ? homogenise_mixed_3d(in, solve_warnings)
                                                   : homogenise_periodic_3d(in, solve_warnings);

@@ -36,6 +36,8 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   const auto report = solved_report(dir / "p", {"homogenise.boundary=periodic"});
   CHECK(report["solved"].get<bool>());
   CHECK(report["case_cells"]["shape"] == "polyhedra");
+  // The xx case's stresses on the section z = output.section x depth.
+  for (const char* f : {"stress_xx.png", "von_mises.png"}) CHECK(fs::file_size(dir / "p" / f) > 10000);
   const auto& eff = report["effective"];
   CHECK(eff["boundary"] == "periodic");
   for (const char* c : {"xx", "yy", "zz", "yz", "xz", "xy"}) {
