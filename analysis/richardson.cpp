@@ -6,12 +6,12 @@
 
 namespace grainmesh {
 
-RichardsonEstimate richardson(const std::vector<double>& f, const std::vector<double>& cells) {
+RichardsonEstimate richardson(const std::vector<double>& f, const std::vector<double>& cells, int dimensions) {
   const std::size_t n = f.size();
   if (n < 3 || cells.size() != n) throw GeometryError("Richardson extrapolation needs three levels or more");
   const double f1 = f[n - 3], f2 = f[n - 2], f3 = f[n - 1];
-  // h ~ 1 / sqrt(cells): the ratio of one level's h to the next.
-  const double r = std::pow(cells[n - 1] / cells[n - 3], 0.25);
+  // h ~ cells^(-1 / dimensions): the ratio of one level's h to the next.
+  const double r = std::pow(cells[n - 1] / cells[n - 3], 0.5 / dimensions);
   RichardsonEstimate e;
   e.limit = f3;
   const double e21 = f2 - f1, e32 = f3 - f2;

@@ -27,14 +27,25 @@ constexpr double kWithin = 1e-3;
 // The quantities a level's report gives: the mixed modulus (and the biased area average
 // beside it), or the periodic tensor's components.
 std::vector<std::pair<std::string, double>> quantities(const Json& effective) {
+  if (effective.at("boundary") == "mixed" && !effective.contains("volume_average"))  // 3D: the force's alone
+    return {{"modulus", effective.at("modulus").get<double>()}};
   if (effective.at("boundary") == "mixed")
     return {{"modulus", effective.at("modulus").get<double>()},
             {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};
   std::vector<std::pair<std::string, double>> q;
-  for (const char* c : {"C11", "C22", "C12", "C21", "C66"})
+  const bool three = effective.at("stiffness").contains("C33");
+  for (const char* c : three ? std::vector<const char*>{"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}
+                             : std::vector<const char*>{"C11", "C22", "C12", "C21", "C66"})
     q.emplace_back(c, effective.at("stiffness").at(c).get<double>());
   return q;
 }
+
+// The key the study's levels set: triangles per grain, or tetrahedra per grain in 3D.
+std::string level_key(const Config& c) {
+  return c.has("domain.depth") ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
+}
+// The column of the levels' elements per grain in convergence.csv and the report.
+const char* per_grain_name(int dimensions) { return dimensions == 3 ? "tets_per_grain" : "triangles_per_grain"; }
 
 // The study's checks: its levels, and no key that fixes an element size.
 void check_study(const Config& c, const ConvergeOptions& o) {
@@ -46,8 +57,8 @@ void check_study(const Config& c, const ConvergeOptions& o) {
   for (const auto& [key, value] : c.entries())
     if (key == "mesh.size" || key == "mesh.h" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
-      c.fail(key, "fixes an element size, which would not follow the study's levels (mesh.triangles_per_grain); "
-                  "remove it to study convergence");
+      c.fail(key, "fixes an element size, which would not follow the study's levels (" + level_key(c) +
+                      "); remove it to study convergence");
 }
 
 // The runs of the study's levels: each quantity's value per level, the levels' cells,
@@ -56,6 +67,7 @@ struct Levels {
   std::vector<std::string> names;
   std::vector<std::vector<double>> values;  // [quantity][level]
   std::vector<double> cells, tpg, seconds;
+  int dimensions = 2;
   Json json = Json::array();
 };
 
@@ -67,11 +79,13 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
   std::vector<std::vector<double>>& values = l.values;
   std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
   Json& levels = l.json;
+  l.dimensions = c.has("domain.depth") ? 3 : 2;
   for (int k = 0; k < o.levels; ++k) {
     const int n = o.start << k;
     const std::string name = "tpg-" + std::to_string(n);
-    const Config level = Config::from_text(ini, c.source(), {"mesh.triangles_per_grain=" + std::to_string(n)});
-    std::fprintf(stderr, "grainmesh converge: level %d of %d: %d triangles per grain\n", k + 1, o.levels, n);
+    const Config level = Config::from_text(ini, c.source(), {level_key(c) + "=" + std::to_string(n)});
+    std::fprintf(stderr, "grainmesh converge: level %d of %d: %d %s per grain\n", k + 1, o.levels, n,
+                 l.dimensions == 3 ? "tetrahedra" : "triangles");
     try {
       run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
     } catch (const SolveError& e) {
@@ -97,7 +111,8 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
     cells.push_back(solved.at("cells").get<double>());
     tpg.push_back(n);
     seconds.push_back(report.at("seconds").at("total").get<double>());
-    levels.push_back({{"triangles_per_grain", n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
+    levels.push_back(
+        {{per_grain_name(l.dimensions), n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
   }
 
   return l;
@@ -119,7 +134,7 @@ Study study_of(const Levels& l) {
   std::vector<RichardsonEstimate>& estimates = st.estimates;
   std::vector<std::optional<int>>& within = st.within;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    estimates.push_back(richardson(values[i], cells));
+    estimates.push_back(richardson(values[i], cells, l.dimensions));
     within.push_back(first_within(values[i], estimates.back().limit, kWithin));
     Json s{{"values", values[i]},
            {"limit", estimates.back().limit},
@@ -142,7 +157,7 @@ std::string convergence_csv(const Levels& l, const Study& st) {
   const std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
   const std::vector<RichardsonEstimate>& estimates = st.estimates;
   const std::vector<std::optional<int>>& within = st.within;
-  std::string csv = "level,triangles_per_grain,cells,seconds";
+  std::string csv = std::string("level,") + per_grain_name(l.dimensions) + ",cells,seconds";
   for (const std::string& n : names) csv.append(",").append(n);
   csv += "\n";
   for (std::size_t k = 0; k < tpg.size(); ++k) {
@@ -218,12 +233,13 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
                    "is the finest value (add levels)");
   write_report(staged, report, warnings);
   staged.commit();
-  std::printf("grainmesh converge: %d levels (%d to %d triangles per grain) in %s\n", o.levels, o.start,
-              o.start << (o.levels - 1), out.string().c_str());
+  const char* elements = l.dimensions == 3 ? "tetrahedra" : "triangles";
+  std::printf("grainmesh converge: %d levels (%d to %d %s per grain) in %s\n", o.levels, o.start,
+              o.start << (o.levels - 1), elements, out.string().c_str());
   for (std::size_t i = 0; i < names.size(); ++i)
-    std::printf("  %s: limit %.6g (order %s), within 0.1 %% from %s triangles per grain\n", names[i].c_str(),
+    std::printf("  %s: limit %.6g (order %s), within 0.1 %% from %s %s per grain\n", names[i].c_str(),
                 estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
-                within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none");
+                within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none", elements);
 }
 
 }  // namespace grainmesh

@@ -85,7 +85,7 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
 
 }  // namespace
 
-void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
+void check_run_3d_config(const Config& c) {
   // A 3D run's keys: the tessellation's, the mesh's and the case's.
   std::vector<std::string> keys = tessellate_config_keys();
   keys.insert(keys.end(), mesh_config_keys().begin(), mesh_config_keys().end());
@@ -93,9 +93,15 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   const Config taken = c.subset(keys);
   for (const auto& [key, value] : c.entries())
     if (!taken.has(key)) c.fail(key, refused_3d(key));
+  read_foam_options_3d(c);
+  read_pictures(c);
+  read_tessellate_3d_job(c.subset(tessellate_config_keys()));
+}
+
+void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
+  check_run_3d_config(c);
   FoamOptions foam = read_foam_options_3d(c);
   const Boundary boundary = read_boundary(c);
-  read_pictures(c);
   check_output_replaceable(out, "run");
   const Config tess_config = c.subset(tessellate_config_keys());
   const Tessellate3Job tess_job = read_tessellate_3d_job(tess_config);

@@ -8,6 +8,7 @@
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
+#include "pipelines/run_3d_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
 namespace grainmesh {
@@ -105,6 +106,7 @@ FoamOptions read_run_foam_options(const Config& c) {
 
 void check_run_config(const Config& c) {
   c.check_keys(run_config_keys());
+  if (c.has("domain.depth")) return check_run_3d_config(c);
   read_pictures(c);
   read_tessellate_job(c.subset(tessellate_config_keys()));
   read_run_foam_options(c);

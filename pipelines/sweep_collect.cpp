@@ -31,11 +31,20 @@ constexpr double kT975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.
                             2.074, 2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
 
 // The periodic tensor's components and engineering constants, summarised when any run
-// has them: (group in effective, name).
-const std::vector<std::pair<std::string, std::string>> kTensor{
-    {"stiffness", "C11"},  {"stiffness", "C22"},  {"stiffness", "C12"},    {"stiffness", "C21"},
-    {"stiffness", "C66"},  {"stiffness", "C16"},  {"stiffness", "C26"},    {"engineering", "E_x"},
-    {"engineering", "E_y"}, {"engineering", "nu_xy"}, {"engineering", "nu_yx"}, {"engineering", "G_xy"}};
+// has them: (group in effective, name), of a 2D or a 3D cell.
+using TensorQuantities = std::vector<std::pair<std::string, std::string>>;
+const TensorQuantities& tensor_quantities(int dimensions) {
+  static const TensorQuantities two{
+      {"stiffness", "C11"},  {"stiffness", "C22"},  {"stiffness", "C12"},    {"stiffness", "C21"},
+      {"stiffness", "C66"},  {"stiffness", "C16"},  {"stiffness", "C26"},    {"engineering", "E_x"},
+      {"engineering", "E_y"}, {"engineering", "nu_xy"}, {"engineering", "nu_yx"}, {"engineering", "G_xy"}};
+  static const TensorQuantities three{
+      {"stiffness", "C11"},   {"stiffness", "C22"},   {"stiffness", "C33"},   {"stiffness", "C12"},
+      {"stiffness", "C13"},   {"stiffness", "C23"},   {"stiffness", "C44"},   {"stiffness", "C55"},
+      {"stiffness", "C66"},   {"engineering", "E_x"}, {"engineering", "E_y"}, {"engineering", "E_z"},
+      {"engineering", "G_xy"}, {"engineering", "nu_xy"}, {"engineering", "universal_anisotropy"}};
+  return dimensions == 3 ? three : two;
+}
 
 // Mean, standard deviation and the half-width of the 95 % confidence interval of the mean.
 std::array<double, 3> summary_stats(const std::vector<double>& v) {
@@ -59,6 +68,7 @@ struct CollectedPlan {
   int realisations = 1;
   std::map<std::string, std::string> fingerprint;  // by run name: a run of another config is not counted
   bool solve = false;
+  int dimensions = 2;
   Json points;
 };
 
@@ -76,6 +86,7 @@ CollectedPlan read_collected_plan(const std::filesystem::path& dir) {
     throw IoError((dir / "plan.json").string() + ": no list of runs (an older grainmesh wrote it); run the sweep again");
   for (const Json& r : listed) out.fingerprint[r.at("name").get<std::string>()] = r.at("fingerprint").get<std::string>();
   out.solve = plan.value("solve", false);
+  out.dimensions = plan.value("dimensions", 2);
   out.points = plan.at("points");
   return out;
 }
@@ -89,7 +100,7 @@ struct LeftOut {
 struct PointRuns {
   int found = 0;
   std::vector<double> modulus;
-  std::vector<std::vector<double>> tensor = std::vector<std::vector<double>>(kTensor.size());
+  std::vector<std::vector<double>> tensor;  // per tensor_quantities
   // Per-run numbers summarised per point, by column name: the WC-Co descriptors (e.g.
   // contiguity_WC), the phase stresses (e.g. mixed_WC_mean_xx, mixed_WC_von_mises_p99,
   // thermal_Co_mean_yy) and the thermal expansion (thermal_expansion_a11).
@@ -99,7 +110,8 @@ struct PointRuns {
 };
 
 // One done run's report into `pr`; `names` gets each extra column's name the first time.
-void add_run(const Json& j, const std::string& x_phase, PointRuns& pr, std::vector<std::string>& names) {
+void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& tensor, PointRuns& pr,
+             std::vector<std::string>& names) {
   auto add = [&](const std::string& name, const Json& value) {
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     if (value.is_number()) pr.extras[name].push_back(value.get<double>());
@@ -107,17 +119,20 @@ void add_run(const Json& j, const std::string& x_phase, PointRuns& pr, std::vect
   ++pr.found;
   pr.cells += j["mesh"]["cells"].get<double>();
   pr.q_min = std::min(pr.q_min, j["mesh"]["q_min"].get<double>());
-  for (const Json& phase : j["phases"])
+  // A 2D run's phases in its report's top level, a 3D run's in its statistics.
+  for (const Json& phase : j.contains("phases") ? j["phases"] : j["statistics"]["phases"])
     if (!x_phase.empty() && phase["name"] == x_phase) pr.achieved.push_back(phase["achieved_fraction"].get<double>());
   if (j.contains("statistics"))
-    for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
-      for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
+    for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})  // 3D cells: contiguity alone
+      if (j["statistics"].contains(key))
+        for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
   if (j.contains("stresses"))
     for (const auto& [load, phases] : j["stresses"].items()) {
       // The loaded component; both in-plane normal ones of the thermal residual.
-      const std::vector<std::string> components =
-          load == "thermal" ? std::vector<std::string>{"xx", "yy"}
-                            : std::vector<std::string>{load == "yy" ? "yy" : load == "xy" ? "xy" : "xx"};
+      const bool component = load.size() == 2 && load.find_first_not_of("xyz") == std::string::npos;
+      const std::vector<std::string> components = load == "thermal" ? std::vector<std::string>{"xx", "yy"}
+                                                  : component       ? std::vector<std::string>{load}
+                                                                    : std::vector<std::string>{"xx"};
       for (const auto& [phase, s] : phases.items()) {
         for (const std::string& component : components) add(load + "_" + phase + "_mean_" + component, s["mean"][component]);
         add(load + "_" + phase + "_von_mises_p99", s["von_mises"]["p99"]);
@@ -128,7 +143,7 @@ void add_run(const Json& j, const std::string& x_phase, PointRuns& pr, std::vect
   if (e.contains("thermal_expansion"))
     for (const char* a : {"a11", "a22", "a12"}) add(std::string("thermal_expansion_") + a, e["thermal_expansion"][a]);
   if (e.contains("stiffness")) {
-    for (std::size_t q = 0; q < kTensor.size(); ++q) pr.tensor[q].push_back(e[kTensor[q].first][kTensor[q].second].get<double>());
+    for (std::size_t q = 0; q < tensor.size(); ++q) pr.tensor[q].push_back(e[tensor[q].first][tensor[q].second].get<double>());
     return;
   }
   pr.modulus.push_back(e["modulus"].get<double>());
@@ -144,6 +159,8 @@ void add_run(const Json& j, const std::string& x_phase, PointRuns& pr, std::vect
 PointRuns read_point_runs(const std::filesystem::path& dir, const CollectedPlan& plan, std::size_t p,
                           const std::string& x_phase, std::vector<std::string>& names, LeftOut& left_out) {
   PointRuns pr;
+  const TensorQuantities& tensor = tensor_quantities(plan.dimensions);
+  pr.tensor.resize(tensor.size());
   for (int r = 0; r < plan.realisations; ++r) {
     const std::string name = run_name(p, r);
     const auto fp = plan.fingerprint.find(name);
@@ -156,7 +173,7 @@ PointRuns read_point_runs(const std::filesystem::path& dir, const CollectedPlan&
           .push_back(name);
       continue;
     }
-    add_run(read_json(dir / name / "report.json"), x_phase, pr, names);
+    add_run(read_json(dir / name / "report.json"), x_phase, tensor, pr, names);
   }
   return pr;
 }
@@ -240,17 +257,17 @@ CsvRow csv_row(const PointRuns& pr, const std::vector<std::string>& keys, const 
 }
 
 std::string summary_csv(const std::vector<CsvRow>& rows, const std::vector<std::string>& keys,
-                        const std::vector<std::string>& extra_names, bool any_tensor) {
+                        const std::vector<std::string>& extra_names, const TensorQuantities* tensor) {
   std::string csv;
   for (const auto& k : keys) csv += k + ",";
   csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min";
   // Without periodic runs the tensor's columns are left out.
-  if (any_tensor)
-    for (const auto& [group, q] : kTensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
+  if (tensor)
+    for (const auto& [group, q] : *tensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
   for (const std::string& name : extra_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
   csv += "\n";
   for (const CsvRow& row : rows) {
-    csv += row.modulus + (any_tensor ? row.tensor : std::string());
+    csv += row.modulus + (tensor ? row.tensor : std::string());
     for (const std::string& name : extra_names) {
       const auto found = row.extras.find(name);
       const std::array<double, 3> v = found != row.extras.end() ? found->second : std::array<double, 3>{NAN, NAN, NAN};
@@ -309,7 +326,8 @@ void collect_sweep(const std::filesystem::path& dir) {
   }
   const std::size_t total = plan.points.size() * static_cast<std::size_t>(plan.realisations);
   warn_left_out(left_out, total, plan.solve, dir);
-  write_text_file(dir / "summary.csv", summary_csv(rows, keys, extra_names, any_tensor));
+  write_text_file(dir / "summary.csv",
+                  summary_csv(rows, keys, extra_names, any_tensor ? &tensor_quantities(plan.dimensions) : nullptr));
   if (!plot.by_series.empty())
     plot.write(dir / "summary.png", x_phase.empty() ? keys[x_key] : "achieved fraction of " + x_phase);
   std::printf("grainmesh sweep --collect: %zu points (%zu of %zu runs) in %s%s\n", rows.size(),

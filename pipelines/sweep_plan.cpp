@@ -68,7 +68,7 @@ void make_runs(const Config& base, const SweepOptions& o, SweepPlan& plan) {
       // The same whichever shard runs it; 53 bits, so a JSON number holds it exactly.
       const std::uint64_t seed = derived_seed(base_seed, static_cast<std::uint64_t>(r), p) >> 11;
       o2.push_back("tessellation.seed=" + std::to_string(seed));
-      o2.push_back("mesh.seed=" + std::to_string(seed));
+      if (!base.has("domain.depth")) o2.push_back("mesh.seed=" + std::to_string(seed));  // 3D meshes draw nothing
       // Runs side by side mesh on one thread each (the mesh is the same either way).
       if (o.jobs > 1 && !base.has("mesh.threads")) o2.push_back("mesh.threads=1");
       plan.runs.push_back({run_name(p, r), p, r, o2, {}});
@@ -88,6 +88,7 @@ SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
   SweepPlan plan;
   read_lists(c, plan);
   const Config base = c.subset(run_config_keys());
+  plan.dimensions = base.has("domain.depth") ? 3 : 2;
   make_runs(base, o, plan);
   const std::vector<std::string>& keys = plan.keys;
   plan.base_text = config_ini(base);
@@ -110,7 +111,7 @@ Json plan_json(const SweepPlan& plan, bool solve) {
   Json runs = Json::array();
   for (const SweepRun& r : plan.runs) runs.push_back({{"name", r.name}, {"fingerprint", r.fingerprint}});
   return Json{{"format", "grainmesh-sweep"}, {"keys", plan.keys},  {"points", plan.point_values},
-              {"realisations", plan.realisations}, {"solve", solve}, {"runs", runs}};
+              {"realisations", plan.realisations}, {"solve", solve}, {"dimensions", plan.dimensions}, {"runs", runs}};
 }
 
 Json read_json(const std::filesystem::path& file) {

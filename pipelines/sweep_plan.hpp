@@ -34,6 +34,7 @@ struct SweepPlan {
   Json point_values = Json::array();              // per point {KEY: value}
   std::string base_text;                          // the base config (config.ini form)
   std::vector<SweepRun> runs;
+  int dimensions = 2;                             // 3 for a 3D base config (domain.depth)
 };
 
 // The plan of a sweep config: every sweep.KEY names a run key (or is sweep.realisations);
@@ -41,8 +42,8 @@ struct SweepPlan {
 // tessellation excepted). Throws ConfigError naming the key or the point.
 SweepPlan make_sweep_plan(const Config& config, const SweepOptions& options);
 
-// plan.json: the format, keys, points, realisations, whether solved, and every run's name
-// and fingerprint.
+// plan.json: the format, keys, points, realisations, whether solved, the cell's
+// dimensions, and every run's name and fingerprint.
 Json plan_json(const SweepPlan& plan, bool solve);
 
 // The name of the run of point `point`, realisation `realisation`: pPPP-rRR.

@@ -181,8 +181,8 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 TessellateJob read_tessellate_job(const Config& c) {
   c.check_keys(tessellate_config_keys());
   if (c.has("domain.depth"))
-    c.fail("domain.depth", "3D cells go through grainmesh tessellate, mesh and run only so far; sweep, converge "
-                           "and export take 2D configs (leave domain.depth out)");
+    c.fail("domain.depth", "3D cells go through grainmesh tessellate, mesh, run, sweep and converge; export takes "
+                           "2D meshes (leave domain.depth out)");
   if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
   TessellateJob job;
   TessellationOptions& o = job.options;
