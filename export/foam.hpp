@@ -277,12 +277,15 @@ PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, 
 // What write_foam_case writes of a 2D or 3D case around its built polyMesh `pm`: 0/D (the
 // solve started from the imposed mean strain at each cell's `centroid`, mesh units from
 // the cell's low corner), 0/E, 0/nu (each cell's `phase`), the properties, the system
-// dictionaries, Allrun and case.foam. `check_case` first: it refuses what the case cannot
+// dictionaries, Allrun and case.foam; the polyMesh's files copied from `polymesh_from`
+// when given (a case of the same mesh written before: formatting them is the most of a
+// case's writing). `check_case` first: it refuses what the case cannot
 // carry (a phase without a usable E, nu or alpha; a cell without a grain or a phase;
 // check_load), throwing ConfigError naming the key.
 void check_case(const FoamCell& cell, const std::vector<int>& grain, const std::vector<int>& phase, std::size_t cells,
                 const FoamOptions& options);
 void write_case_files(const std::filesystem::path& dir, const FoamCell& cell, const std::vector<int>& phase,
-                      const std::vector<Vec3>& centroid, const PolyMesh& pm, const FoamOptions& options);
+                      const std::vector<Vec3>& centroid, const PolyMesh& pm, const FoamOptions& options,
+                      const std::filesystem::path& polymesh_from = {});
 
 }  // namespace grainmesh

@@ -101,5 +101,9 @@ FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& options);
 // for export.plane_stress or load.delta_T (not solved in 3D yet) and as check_case,
 // GeometryError as foam_mesh_3d. Returns the mesh it wrote.
 FoamMesh3 write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& options);
+// The same on a mesh already built (foam_mesh_3d(m, options): a load case's options keep
+// the mesh), its polyMesh's files copied from `polymesh_from` when given.
+void write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamMesh3& mesh,
+                        const FoamOptions& options, const std::filesystem::path& polymesh_from = {});
 
 }  // namespace grainmesh

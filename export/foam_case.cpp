@@ -211,9 +211,14 @@ void check_case(const FoamCell& cell, const std::vector<int>& grain, const std::
 }
 
 void write_case_files(const std::filesystem::path& dir, const FoamCell& cell, const std::vector<int>& phase,
-                      const std::vector<Vec3>& centroid, const PolyMesh& pm, const FoamOptions& o) {
+                      const std::vector<Vec3>& centroid, const PolyMesh& pm, const FoamOptions& o,
+                      const std::filesystem::path& polymesh_from) {
   for (const char* sub : {"constant/polyMesh", "0", "system"}) std::filesystem::create_directories(dir / sub);
-  write_polymesh(dir / "constant/polyMesh", pm, o);
+  if (polymesh_from.empty())
+    write_polymesh(dir / "constant/polyMesh", pm, o);
+  else
+    std::filesystem::copy(polymesh_from, dir / "constant/polyMesh",
+                          std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
   write_material_fields(dir, cell, phase, pm, o);
   write_displacement(dir, cell, centroid, pm, o);
   write_properties(dir, o);

@@ -7,6 +7,18 @@ namespace grainmesh {
 
 FoamCell foam_cell(const ExportMesh3& m) { return {m.phases, m.box, m.periodic}; }
 
+namespace {
+
+// What a 3D case cannot carry, refused by name before anything is written.
+void check_case_3d(const ExportMesh3& m, const FoamOptions& o) {
+  if (o.plane_stress) throw ConfigError("export.plane_stress: a 3D case has no plane to hold; remove the key");
+  if (o.delta_T != 0.0)
+    throw ConfigError("load.delta_T: the thermal load is not yet solved on 3D cells (2D only); remove the key");
+  check_case(foam_cell(m), m.grain, m.phase, m.mesh.tets.size(), o);
+}
+
+}  // namespace
+
 FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
   if (o.cells == FoamOptions::Cells::polygons) return build_dual_polymesh_3d(m, o);
   FoamMesh3 out{.mesh = build_polymesh_3d(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
@@ -21,14 +33,16 @@ FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
 }
 
 FoamMesh3 write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& o) {
-  if (o.plane_stress) throw ConfigError("export.plane_stress: a 3D case has no plane to hold; remove the key");
-  if (o.delta_T != 0.0)
-    throw ConfigError("load.delta_T: the thermal load is not yet solved on 3D cells (2D only); remove the key");
-  const FoamCell cell = foam_cell(m);
-  check_case(cell, m.grain, m.phase, m.mesh.tets.size(), o);
-  const FoamMesh3 fm = foam_mesh_3d(m, o);
-  write_case_files(dir, cell, fm.phase, fm.centre, fm.mesh, o);
+  check_case_3d(m, o);
+  FoamMesh3 fm = foam_mesh_3d(m, o);
+  write_foam_case_3d(dir, m, fm, o);
   return fm;
+}
+
+void write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamMesh3& fm,
+                        const FoamOptions& o, const std::filesystem::path& polymesh_from) {
+  check_case_3d(m, o);
+  write_case_files(dir, foam_cell(m), fm.phase, fm.centre, fm.mesh, o, polymesh_from);
 }
 
 }  // namespace grainmesh

@@ -75,10 +75,16 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
     fm = write_foam_case_3d(dir / "case", e, o);
     return names;
   }
+  // One mesh for the six cases (their options differ in the strain alone), its files
+  // written once and copied.
   for (const LoadCase3& lc : periodic_load_cases_3d(e, o)) {
+    const bool first = names.empty();
     names.push_back(periodic_case_dir_3d(lc));
     std::filesystem::create_directories(dir / names.back());
-    fm = write_foam_case_3d(dir / names.back(), e, load_case_options_3d(o, lc));
+    const FoamOptions case_options = load_case_options_3d(o, lc);
+    if (first) fm = foam_mesh_3d(e, case_options);
+    write_foam_case_3d(dir / names.back(), e, fm, case_options,
+                       first ? std::filesystem::path() : dir / names.front() / "constant" / "polyMesh");
   }
   return names;
 }
