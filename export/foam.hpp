@@ -188,7 +188,7 @@ FoamCell foam_cell(const ExportMesh& m);
 // The ratio of the stiffest phase's 2 mu + lambda to the softest's, and whether the case
 // interpolates the stiffness harmonically (see FoamOptions::interpolation; a 3D case's
 // `auto` is linear: harmonic diverged on tetrahedra, measured on a WC-Co cell at a
-// contrast of 2.8 and on laminates of 3 and 20).
+// contrast of 2.8 and on laminates of 3 and 20, and on their dual on the WC-Co cell).
 double stiffness_contrast(const std::vector<FoamPhase>& phases, const FoamOptions& options);
 bool harmonic_stiffness(const FoamCell& cell, const FoamOptions& options);
 

@@ -1,7 +1,8 @@
-// OpenFOAM output of 3D grain meshes: the tetrahedra are the cells (no extrusion), with
-// phase (and grain) cellZones, grain-boundary and phase-interface faceZones, and the box's
-// six sides as patches or as three cyclic pairs; the case around it is the 2D one's
-// (write_case_files, foam.hpp), solved by the same solidDisplacementFoam in 3D.
+// OpenFOAM output of 3D grain meshes: the tetrahedra or their dual's polyhedra are the
+// cells (no extrusion), with phase (and grain) cellZones, grain-boundary and
+// phase-interface faceZones, and the box's six sides as patches or as three cyclic pairs;
+// the case around it is the 2D one's (write_case_files, foam.hpp), solved by the same
+// solidDisplacementFoam in 3D.
 #pragma once
 
 #include <filesystem>

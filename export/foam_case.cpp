@@ -109,7 +109,7 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
   const std::string stiffness = harmonic
       ? "    // The stiffness interpolated harmonically across faces: exact at phase interfaces.\n"
         "    laplacian(DD,D) Gauss harmonic corrected;\n"
-      : std::string(cell.dimensions() == 3 ? "    // The stiffness interpolated linearly: harmonic diverges on tetrahedra.\n"
+      : std::string(cell.dimensions() == 3 ? "    // The stiffness interpolated linearly: harmonic diverges in 3D.\n"
                                            : "    // The stiffness interpolated linearly: harmonic diverges at this stiffness contrast.\n") +
             "    laplacian(DD,D) Gauss linear corrected;\n";
   write_text(dir / "system/fvSchemes",

@@ -28,6 +28,11 @@ Triangle sorted(Triangle t) {
   return t;
 }
 
+// The corner of tetrahedron t at point v, as 4 t + its index.
+int corner_of(const std::vector<std::array<int, 4>>& T, int t, int v) {
+  return 4 * t + static_cast<int>(std::find(T[t].begin(), T[t].end(), v) - T[t].begin());
+}
+
 // The dual's corners before numbering: the mesh's points, its edges' midpoints, its faces'
 // centroids and its tetrahedra's centroids, one id range after the other.
 class Nodes {
@@ -166,38 +171,40 @@ void chain(std::vector<Piece>::const_iterator begin, std::vector<Piece>::const_i
   }
 }
 
-}  // namespace
-
-FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
-  if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
-  const std::vector<Vec3>& P = m.mesh.points;
-  const std::vector<std::array<int, 4>>& T = m.mesh.tets;
-  const int tets = static_cast<int>(T.size());
-
-  // The mesh's faces, matched in pairs; its edges.
-  std::vector<std::pair<Triangle, int>> faces;  // sorted points, 4 t + k
+// The mesh's faces (sorted points, 4 t + k), sorted so that a shared face's two come
+// together; its edges and its distinct triangles, sorted.
+struct MeshFaces {
+  std::vector<std::pair<Triangle, int>> faces;
   std::vector<std::array<int, 2>> edges;
-  faces.reserve(4 * T.size());
-  edges.reserve(6 * T.size());
-  for (int t = 0; t < tets; ++t) {
-    for (int k = 0; k < 4; ++k) faces.push_back({sorted({T[t][kFace[k][0]], T[t][kFace[k][1]], T[t][kFace[k][2]]}), 4 * t + k});
-    for (const auto& e : kEdge) edges.push_back({std::min(T[t][e[0]], T[t][e[1]]), std::max(T[t][e[0]], T[t][e[1]])});
-  }
-  std::sort(faces.begin(), faces.end());
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   std::vector<Triangle> triangles;
-  for (const auto& f : faces)
-    if (triangles.empty() || triangles.back() != f.first) triangles.push_back(f.first);
-  // Points on a phase interface: with tetrahedra of two phases around them, counting a
-  // periodic point's images' (-1: no phase yet, -2: two).
-  std::vector<int> around(P.size(), -1);
+};
+MeshFaces mesh_faces(const std::vector<std::array<int, 4>>& T) {
+  MeshFaces out;
+  out.faces.reserve(4 * T.size());
+  out.edges.reserve(6 * T.size());
+  for (std::size_t t = 0; t < T.size(); ++t) {
+    for (int k = 0; k < 4; ++k)
+      out.faces.push_back({sorted({T[t][kFace[k][0]], T[t][kFace[k][1]], T[t][kFace[k][2]]}), static_cast<int>(4 * t) + k});
+    for (const auto& e : kEdge) out.edges.push_back({std::min(T[t][e[0]], T[t][e[1]]), std::max(T[t][e[0]], T[t][e[1]])});
+  }
+  std::sort(out.faces.begin(), out.faces.end());
+  std::sort(out.edges.begin(), out.edges.end());
+  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
+  for (const auto& f : out.faces)
+    if (out.triangles.empty() || out.triangles.back() != f.first) out.triangles.push_back(f.first);
+  return out;
+}
+
+// The points on a phase interface: with tetrahedra of two phases around them, counting a
+// periodic point's images'.
+std::vector<char> interface_points(const ExportMesh3& m) {
+  std::vector<int> around(m.mesh.points.size(), -1);  // -1: no phase yet, -2: two
   auto meet = [](int& a, int b) {
     if (a == -1) a = b;
     else if (b != -1 && a != b) a = -2;
   };
-  for (int t = 0; t < tets; ++t)
-    for (int v : T[t]) meet(around[v], m.phase[t]);
+  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t)
+    for (int v : m.mesh.tets[t]) meet(around[v], m.phase[t]);
   if (m.periodic)
     for (int round = 0; round < 3; ++round)  // a corner's images through all three pairs
       for (const auto& axis : m.pairs.axis)
@@ -205,27 +212,52 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
           meet(around[low], around[high]);
           around[high] = around[low];
         }
-  std::vector<char> interface(P.size(), 0);
-  for (std::size_t v = 0; v < P.size(); ++v) interface[v] = around[v] == -2;
-  const Nodes nodes(m.mesh, std::move(interface), std::move(edges), std::move(triangles));
-  std::vector<int> node_phase(static_cast<std::size_t>(nodes.size()), 0);
+  std::vector<char> out(around.size(), 0);
+  for (std::size_t v = 0; v < around.size(); ++v) out[v] = around[v] == -2;
+  return out;
+}
 
-  // The cells: a tetrahedron's corners joined across faces between tetrahedra of one grain.
+// A phase interface point's weight in the means of the corners around it, per phase:
+// its cell in phase p reaches the fraction f_p = sqrt(gamma_p / gamma_max) / 2 of its
+// edges into the phase (1 / (1 + w) = f_p), a half where the phase is the stiffest. The
+// two cells' centres across an interface then lie at distances in the ratio
+// sqrt(gamma_soft / gamma_hard), where the compact form's face force (gamma interpolated
+// linearly, and the rest of the stress) is exact for a laminate's normal and shear
+// strains (given the cells' gradients): measured on a laminate of ratio 20, C11 +6.0 %
+// -> -0.9 %; the shears across are held by the gradients, +14 % -> +13 %.
+std::vector<double> interface_weights(const std::vector<FoamPhase>& phases) {
+  double stiffest = 0.0;
+  for (const FoamPhase& p : phases) stiffest = std::max(stiffest, lame(p, false).gamma());
+  std::vector<double> out;
+  for (const FoamPhase& p : phases) out.push_back(2.0 / std::sqrt(lame(p, false).gamma() / stiffest) - 1.0);
+  return out;
+}
+
+// A triangle between two cells' pieces: face k of tetrahedron t, outward into
+// tetrahedron u (-1 - side on the box).
+struct Between {
+  int t, k, u;
+};
+
+// The dual's cells: a tetrahedron's corners joined across faces between tetrahedra of one
+// grain, numbered in the order of their points, then of their first corner; each cell's
+// grain and phase into `out`, each corner's cell into out.corner_cell. Returns the
+// triangles between cells of one point: grain boundaries and the box's sides.
+std::vector<Between> dual_cells(const ExportMesh3& m, const MeshFaces& mf, FoamMesh3& out) {
+  const std::vector<std::array<int, 4>>& T = m.mesh.tets;
+  const std::vector<Vec3>& P = m.mesh.points;
   const std::size_t corners = 4 * T.size();
   std::vector<int> rank(corners, 0), parent(corners);
   boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
   for (std::size_t c = 0; c < corners; ++c) sets.make_set(static_cast<int>(c));
-  auto corner = [&](int t, int v) { return 4 * t + static_cast<int>(std::find(T[t].begin(), T[t].end(), v) - T[t].begin()); };
-  struct Between {
-    int t, k, u;  // face k of t, outward from t into u (-1 - side on the box)
-  };
-  std::vector<Between> splits;  // grain boundaries and box sides
+  std::vector<Between> splits;
+  const auto& faces = mf.faces;
   for (std::size_t i = 0; i < faces.size();) {
     const int t = faces[i].second / 4, k = faces[i].second % 4;
     if (i + 1 < faces.size() && faces[i + 1].first == faces[i].first) {
       const int u = faces[i + 1].second / 4;
       if (m.grain[t] == m.grain[u])
-        for (int v : faces[i].first) sets.union_set(corner(t, v), corner(u, v));
+        for (int v : faces[i].first) sets.union_set(corner_of(T, t, v), corner_of(T, u, v));
       else
         splits.push_back({t, k, u});
       i += 2;
@@ -241,7 +273,6 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     splits.push_back({t, k, -1 - side});
     ++i;
   }
-  // Cells numbered in the order of their points, then of their first corner.
   std::vector<std::array<int, 3>> order;  // point, first corner, root
   std::vector<int> first(corners, -1);
   for (std::size_t c = 0; c < corners; ++c) {
@@ -252,19 +283,23 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     }
   }
   std::sort(order.begin(), order.end());
-  FoamMesh3 out;
   std::vector<int> cell_of_root(corners, -1);
   for (const auto& [v, c, r] : order) {
     cell_of_root[r] = static_cast<int>(out.grain.size());
     out.grain.push_back(m.grain[c / 4]);
     out.phase.push_back(m.phase[c / 4]);
   }
-  std::vector<int>& cell = out.corner_cell;
-  cell.resize(corners);
-  for (std::size_t c = 0; c < corners; ++c) cell[c] = cell_of_root[sets.find_set(static_cast<int>(c))];
+  out.corner_cell.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) out.corner_cell[c] = cell_of_root[sets.find_set(static_cast<int>(c))];
+  return splits;
+}
 
-  // The pieces: two per tetrahedron edge (between its ends' cells), two per corner of a
-  // grain boundary's or a side's triangle.
+// The dual's faces: two pieces per tetrahedron edge (between its ends' cells), two per
+// corner of a triangle in `splits`, chained. Each node's phase (of a tetrahedron it lies
+// in) into `node_phase`.
+std::vector<DualFace> dual_faces(const ExportMesh3& m, const Nodes& nodes, const std::vector<int>& cell,
+                                 const std::vector<Between>& splits, std::vector<int>& node_phase) {
+  const std::vector<std::array<int, 4>>& T = m.mesh.tets;
   std::vector<Piece> pieces;
   pieces.reserve(12 * T.size() + 6 * splits.size());
   auto add = [&](int a, int b, int part, int apex, int from, int to) {
@@ -274,12 +309,12 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     }
     pieces.push_back({a, b, part, apex, from, to});
   };
-  for (int t = 0; t < tets; ++t)
+  for (std::size_t t = 0; t < T.size(); ++t)
     for (const auto& [i, j, k, l] : kEdge) {
       // Around edge ij from the centroid of face ijk (opposite l) through the tetrahedron's
       // to face ijl's: the normal points from corner i to corner j.
       const int a = cell[4 * t + i], b = cell[4 * t + j];
-      const int apex = nodes.edge(T[t][i], T[t][j]), centre = nodes.tet(t);
+      const int apex = nodes.edge(T[t][i], T[t][j]), centre = nodes.tet(static_cast<int>(t));
       const int fk = nodes.triangle({T[t][i], T[t][j], T[t][k]}), fl = nodes.triangle({T[t][i], T[t][j], T[t][l]});
       add(a, b, -1, apex, fk, centre);
       add(a, b, -1, apex, centre, fl);
@@ -293,7 +328,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
       // Point v's quarter of the triangle, a face of its own (plane, so that grains and
       // the box keep their volumes exactly), turning as the triangle (outward from t).
       const int v = f[q], next = f[(q + 1) % 3], previous = f[(q + 2) % 3];
-      const int a = cell[corner(s.t, v)], b = s.u >= 0 ? cell[corner(s.u, v)] : s.u;
+      const int a = cell[corner_of(T, s.t, v)], b = s.u >= 0 ? cell[corner_of(T, s.u, v)] : s.u;
       const int part = static_cast<int>(3 * k) + q;
       add(a, b, part, nodes.point(v), nodes.edge(v, next), centroid);
       add(a, b, part, nodes.point(v), centroid, nodes.edge(v, previous));
@@ -308,30 +343,63 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     chain(it, end, dual);
     it = end;
   }
+  return dual;
+}
 
-  // A phase interface point's weight in the means of the corners around it, per phase:
-  // its cell in phase p reaches the fraction f_p = sqrt(gamma_p / gamma_max) / 2 of its
-  // edges into the phase (1 / (1 + w) = f_p), a half where the phase is the stiffest. The
-  // two cells' centres across an interface then lie at distances in the ratio
-  // sqrt(gamma_soft / gamma_hard), where the compact form's face force (gamma interpolated
-  // linearly, and the rest of the stress) is exact for a laminate's normal and
-  // shear strains (given the cells' gradients): measured on a laminate of ratio 20, C11
-  // +6.0 % -> -0.9 %; the shears across are held by the gradients, +14 % -> +13 %.
-  std::vector<double> interface_weight(m.phases.size(), 1.0);
-  double stiffest = 0.0;
-  for (const FoamPhase& p : m.phases) stiffest = std::max(stiffest, lame(p, false).gamma());
-  for (std::size_t p = 0; p < m.phases.size(); ++p)
-    interface_weight[p] = 2.0 / std::sqrt(lame(m.phases[p], false).gamma() / stiffest) - 1.0;
-  // The polyMesh: internal faces by owner and neighbour, then the sides'.
+// The high side's faces of axis `a` as the images of the low side's, in their order, each
+// the partner's corners reversed from the image of its first (into `images`, which must
+// have room: pointers into it are returned).
+std::vector<const DualFace*> image_faces(const std::vector<const DualFace*>& low, const std::vector<const DualFace*>& high,
+                                         const Nodes& nodes, const std::vector<std::pair<int, int>>& pairs, int a,
+                                         std::vector<DualFace>& images) {
+  const std::map<int, int> image(pairs.begin(), pairs.end());
+  std::map<std::vector<int>, const DualFace*> by_corners;
+  for (const DualFace* f : high) {
+    std::vector<int> key = f->nodes;
+    std::sort(key.begin(), key.end());
+    by_corners.emplace(key, f);
+  }
+  const std::string unpaired = std::string("export: the dual's faces of ") + kSideNames3[2 * a] + " and " +
+                               kSideNames3[2 * a + 1] + " do not pair (is the mesh periodic?)";
+  if (low.size() != high.size()) throw GeometryError(unpaired);
+  std::vector<const DualFace*> paired;
+  for (const DualFace* f : low) {
+    std::vector<int> turned;
+    for (int n : f->nodes) turned.push_back(nodes.image(n, image));
+    std::vector<int> key = turned;
+    std::sort(key.begin(), key.end());
+    const auto it = by_corners.find(key);
+    if (it == by_corners.end()) throw GeometryError(unpaired);
+    std::reverse(turned.begin() + 1, turned.end());
+    images.push_back({turned, it->second->owner, it->second->neighbour});
+    paired.push_back(&images.back());
+  }
+  return paired;
+}
+
+}  // namespace
+
+FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
+  if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
+  MeshFaces mf = mesh_faces(m.mesh.tets);
+  FoamMesh3 out;
+  const std::vector<Between> splits = dual_cells(m, mf, out);
+  const Nodes nodes(m.mesh, interface_points(m), std::move(mf.edges), std::move(mf.triangles));
+  std::vector<int> node_phase(static_cast<std::size_t>(nodes.size()), 0);
+  const std::vector<DualFace> dual = dual_faces(m, nodes, out.corner_cell, splits, node_phase);
+  const std::vector<double> weight = interface_weights(m.phases);
+
+  // The polyMesh: internal faces by owner and neighbour, then the sides'; points as
+  // their faces first use them.
   PolyMesh& pm = out.mesh;
   pm.cells = static_cast<int>(out.grain.size());
   std::vector<int> point_id(static_cast<std::size_t>(nodes.size()), -1);
-  auto add_face = [&](const std::vector<int>& corners_of, int owner) {
+  auto add_face = [&](const std::vector<int>& corners, int owner) {
     pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
-    for (int n : corners_of) {
+    for (int n : corners) {
       if (point_id[n] < 0) {
         point_id[n] = static_cast<int>(pm.points3d.size());
-        pm.points3d.push_back(nodes.position(n, interface_weight[node_phase[n]]));
+        pm.points3d.push_back(nodes.position(n, weight[node_phase[n]]));
       }
       pm.face_points.push_back(point_id[n]);
     }
@@ -347,35 +415,10 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     add_face(f->nodes, f->owner);
     pm.neighbour.push_back(f->neighbour);
   }
-  std::vector<DualFace> images;  // the high sides' faces as the images of the low sides'
+  std::vector<DualFace> images;
   images.reserve(dual.size());
   if (o.cyclic)
-    for (int a = 0; a < 3; ++a) {
-      const std::map<int, int> image(m.pairs.axis[a].begin(), m.pairs.axis[a].end());
-      std::map<std::vector<int>, const DualFace*> high;
-      for (const DualFace* f : sides[2 * a + 1]) {
-        std::vector<int> key = f->nodes;
-        std::sort(key.begin(), key.end());
-        high.emplace(key, f);
-      }
-      const std::string unpaired = std::string("export: the dual's faces of ") + kSideNames3[2 * a] + " and " +
-                                   kSideNames3[2 * a + 1] + " do not pair (is the mesh periodic?)";
-      if (sides[2 * a].size() != sides[2 * a + 1].size()) throw GeometryError(unpaired);
-      std::vector<const DualFace*> paired;
-      for (const DualFace* f : sides[2 * a]) {
-        std::vector<int> turned;
-        for (int n : f->nodes) turned.push_back(nodes.image(n, image));
-        std::vector<int> key = turned;
-        std::sort(key.begin(), key.end());
-        const auto it = high.find(key);
-        if (it == high.end()) throw GeometryError(unpaired);
-        // The partner's corners reversed, from the image of its first.
-        std::reverse(turned.begin() + 1, turned.end());
-        images.push_back({turned, it->second->owner, it->second->neighbour});
-        paired.push_back(&images.back());
-      }
-      sides[2 * a + 1] = paired;
-    }
+    for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], nodes, m.pairs.axis[a], a, images);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
     PolyMesh::Patch p = side_patch_3d(s, m.box, o);

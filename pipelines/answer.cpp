@@ -37,6 +37,29 @@ std::optional<std::string> outside(const std::string& what, double value, double
          to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(value / bound - 1.0), 2) + " %";
 }
 
+void note_voigt_reuss(bool inside, Json& effective, std::vector<std::string>& warnings, const std::string& see) {
+  effective["inside_bounds"]["voigt_reuss"] = inside;
+  if (!inside)
+    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
+                       "order): check the solve (" + see + ")");
+}
+
+void check_hashin_shtrikman(double K, double G, const ModuliBounds& b, Json& effective, std::vector<std::string>& warnings,
+                            const std::string& why) {
+  effective["hashin_shtrikman"] = {
+      {"bulk_lower", b.bulk_lower}, {"bulk_upper", b.bulk_upper}, {"shear_lower", b.shear_lower}, {"shear_upper", b.shear_upper}};
+  bool inside = true;
+  for (const auto& w : {outside("effective.bulk_modulus", K, b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
+                        outside("effective.bulk_modulus", K, b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
+                        outside("effective.shear_modulus", G, b.shear_upper, "the Hashin-Shtrikman upper bound", true),
+                        outside("effective.shear_modulus", G, b.shear_lower, "the Hashin-Shtrikman lower bound", false)})
+    if (w) {
+      inside = false;
+      warnings.push_back(*w + " (" + why + ")");
+    }
+  effective["inside_bounds"]["hashin_shtrikman"] = inside;
+}
+
 Json distribution_json(const Distribution& d) {
   return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
 }
@@ -130,27 +153,11 @@ Json stiffness_json(const Stiffness& c) {
 void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, Json& effective, std::vector<std::string>& warnings) {
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
-  const bool voigt_reuss = semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt);
-  effective["inside_bounds"]["voigt_reuss"] = voigt_reuss;
-  if (!voigt_reuss)
-    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
-                       "order): check the solve (see README, Homogenisation)");
-  if (b.bulk_upper) {
-    effective["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower}, {"bulk_upper", *b.bulk_upper},
-                                     {"shear_lower", *b.shear_lower}, {"shear_upper", *b.shear_upper}};
-    const std::vector<std::optional<std::string>> broken{
-        outside("effective.bulk_modulus", bulk_modulus(C), *b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
-        outside("effective.bulk_modulus", bulk_modulus(C), *b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
-        outside("effective.shear_modulus", shear_modulus(C), *b.shear_upper, "the Hashin-Shtrikman upper bound", true),
-        outside("effective.shear_modulus", shear_modulus(C), *b.shear_lower, "the Hashin-Shtrikman lower bound", false)};
-    bool inside = true;
-    for (const auto& w : broken)
-      if (w) {
-        inside = false;
-        warnings.push_back(*w + " (a finite cell is not isotropic; see README, Homogenisation)");
-      }
-    effective["inside_bounds"]["hashin_shtrikman"] = inside;
-  }
+  note_voigt_reuss(semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt), effective, warnings,
+                   "see README, Homogenisation");
+  if (b.bulk_upper)
+    check_hashin_shtrikman(bulk_modulus(C), shear_modulus(C), {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper},
+                           effective, warnings, "a finite cell is not isotropic; see README, Homogenisation");
 }
 
 }  // namespace

@@ -36,6 +36,17 @@ Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
 // to rounding.
 std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
                                    bool above);
+// Whether the stiffness lies between the Reuss and Voigt tensors, in `effective`
+// (inside_bounds.voigt_reuss); outside, a warning pointing to `see`.
+void note_voigt_reuss(bool inside, Json& effective, std::vector<std::string>& warnings, const std::string& see);
+// Hashin-Shtrikman's bounds on the bulk and shear moduli K and G beside them in
+// `effective` (hashin_shtrikman, inside_bounds.hashin_shtrikman); a broken one a warning
+// ending in (`why`).
+struct ModuliBounds {
+  double bulk_lower, bulk_upper, shear_lower, shear_upper;
+};
+void check_hashin_shtrikman(double K, double G, const ModuliBounds& bounds, Json& effective,
+                            std::vector<std::string>& warnings, const std::string& why);
 // A distribution in report.json: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d);
 

@@ -106,7 +106,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   const auto below = outside("effective.modulus", h.modulus, b.reuss[0][0], "the Reuss bound", false);
   effective["inside_bounds"]["voigt_reuss"] = !above && !below;
   for (const auto& w : {above, below})
-    if (w) warnings.push_back(*w + ": check the solve (see README, 3D cells)");
+    if (w) warnings.push_back(*w + ": check the solve (see README, 3D cases and solves)");
   return answer;
 }
 
@@ -146,27 +146,13 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   const TensorBounds3 b = tensor_bounds_3d(in.e.phases, fractions);
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
-  const bool voigt_reuss = semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt);
-  effective["inside_bounds"]["voigt_reuss"] = voigt_reuss;
-  if (!voigt_reuss)
-    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
-                       "order): check the solve (see README, 3D cells)");
-  if (b.bulk_upper) {
-    effective["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower}, {"bulk_upper", *b.bulk_upper},
-                                     {"shear_lower", *b.shear_lower}, {"shear_upper", *b.shear_upper}};
-    const double K = bulk_modulus_3d(C), G = shear_modulus_3d(C);
-    bool inside = true;
-    for (const auto& w : {outside("effective.bulk_modulus", K, *b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
-                          outside("effective.bulk_modulus", K, *b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
-                          outside("effective.shear_modulus", G, *b.shear_upper, "the Hashin-Shtrikman upper bound", true),
-                          outside("effective.shear_modulus", G, *b.shear_lower, "the Hashin-Shtrikman lower bound", false)})
-      if (w) {
-        inside = false;
-        warnings.push_back(*w + " (a finite cell is not isotropic, and the 3D cells' shears across phase interfaces "
-                                "are first order in the mesh size; see README, 3D cells)");
-      }
-    effective["inside_bounds"]["hashin_shtrikman"] = inside;
-  }
+  note_voigt_reuss(semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt), effective, warnings,
+                   "see README, 3D cases and solves");
+  if (b.bulk_upper)
+    check_hashin_shtrikman(bulk_modulus_3d(C), shear_modulus_3d(C),
+                           {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper}, effective, warnings,
+                           "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
+                           "order in the mesh size; see README, 3D cases and solves");
   return answer;
 }
 

@@ -89,6 +89,38 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
   return names;
 }
 
+// The run's lines on stdout: what was made and written, and the answer when solved.
+void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3& t, const Tessellate3Job& tess_job,
+                          const GrainMesh3& m, const Json& report, const std::vector<std::string>& case_dirs,
+                          const FoamMesh3& fm, const FoamOptions& foam, Boundary boundary, bool solve,
+                          const Warnings& warnings) {
+  print_tessellation_3d_summary(t, report["seconds"]["tessellate"].get<double>());
+  print_mesh_3d_summary(report["mesh"], m.seconds);
+  std::printf("  cases: %s (%d %s cells)\n", case_dirs.size() == 1 ? "case/" : "case_xx/ ... case_xy/ (six load cases)",
+              fm.mesh.cells, foam.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
+  if (solve && boundary == Boundary::mixed) {
+    const Json& eff = report["effective"];
+    std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
+    if (eff.contains("voigt")) std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
+    std::printf(", %d corrections\n", eff["corrections"].get<int>());
+  } else if (solve) {
+    const Json& eff = report["effective"];
+    const Json& C = eff["stiffness"];
+    std::printf("  solved: C11 %.4g, C22 %.4g, C33 %.4g, C12 %.4g, C44 %.4g Pa; K %.4g, G %.4g Pa; symmetric to %.1e "
+                "(6 load cases, at most %d corrections)\n",
+                C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
+                C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
+                eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
+  }
+  const bool pictures = std::filesystem::exists(out / "stress_xx.png");
+  std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
+              "%s, %sconfig.ini, report.json}\n",
+              out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/",
+              pictures ? "stress_xx.png, von_mises.png, " : "");
+  if (!warnings.all().empty())
+    std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
+}
+
 }  // namespace
 
 void check_run_3d_config(const Config& c) {
@@ -182,30 +214,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
-  if (!summary) return;
-  print_tessellation_3d_summary(t, seconds["tessellate"].get<double>());
-  print_mesh_3d_summary(report["mesh"], m.seconds);
-  std::printf("  cases: %s (%d %s cells)\n", case_dirs.size() == 1 ? "case/" : "case_xx/ ... case_xy/ (six load cases)",
-              fm.mesh.cells, foam.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
-  if (solve && boundary == Boundary::mixed) {
-    const Json& eff = report["effective"];
-    std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
-    if (eff.contains("voigt")) std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
-    std::printf(", %d corrections\n", eff["corrections"].get<int>());
-  } else if (solve) {
-    const Json& eff = report["effective"];
-    const Json& C = eff["stiffness"];
-    std::printf("  solved: C11 %.4g, C22 %.4g, C33 %.4g, C12 %.4g, C44 %.4g Pa; K %.4g, G %.4g Pa; symmetric to %.1e "
-                "(6 load cases, at most %d corrections)\n",
-                C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
-                C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
-                eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
-  }
-  std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
-              "%s, config.ini, report.json}\n",
-              out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/");
-  if (!warnings.all().empty())
-    std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
+  if (summary) print_run_3d_summary(out, t, tess_job, m, report, case_dirs, fm, foam, boundary, solve, warnings);
 }
 
 }  // namespace grainmesh
