@@ -204,7 +204,7 @@ TEST_CASE("3D homogenisation on the dual: laminates of ratio 3 and 20, the error
   }
 }
 
-TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, between Voigt and Reuss, bulk within "
+TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, between Voigt and Reuss, within "
           "Hashin-Shtrikman",
           "[homogenise3d][dual3d][solve]") {
   Tessellation3Options to;
@@ -215,7 +215,15 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
                Phase{"Co", 0.2, false, co.youngs_modulus, co.poisson_ratio, {}}};
   Rng rng(5);
   const Tessellation3 t = tessellate_3d(to, rng);
-  const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
+  // At 3,200 tetrahedra per grain (359k, 78k cells, about a minute); the sanitizer build,
+  // which meshes ten times slower, at 200.
+#ifdef GRAINMESH_SANITIZED
+  constexpr double kTetsPerGrain = 200;
+#else
+  constexpr double kTetsPerGrain = 3200;
+#endif
+  const ExportMesh3 e =
+      grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, kTetsPerGrain)}));
   FoamOptions o{.displacement = 1e-3 * t.width};
   o.cells = FoamOptions::Cells::polygons;
   test::ScratchDir dir("wcco3d_dual");
@@ -233,18 +241,17 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
   INFO(show(h.stiffness) << "Co " << fraction[1] << ", K " << bulk_modulus_3d(C) << " in [" << *b.bulk_lower << ", "
                          << *b.bulk_upper << "], G " << shear_modulus_3d(C) << " in [" << *b.shear_lower << ", "
                          << *b.shear_upper << "]");
-  // Measured (8,439 cells): symmetric to 3.3e-4; K 376.7 GPa in [363.8, 377.9]; G 228.4
-  // GPa above the upper bound 226.2 by 1.0 %, falling with refinement (227.5, 226.8,
-  // 226.2 at 400, 800, 1600 tetrahedra per grain): the shears' error at the interfaces
-  // (see the laminates). Issue 24 asks G within the bounds at this cell: not met at this
-  // mesh; held within 1.5 % of the bound so that it does not get worse.
+  // Measured: symmetric to 7.5e-5; K 375.6 GPa in [363.8, 377.9]; G 225.75 GPa, inside
+  // the upper bound 226.16 by 0.18 %. G converges from above (the shears' error at the
+  // interfaces, see the laminates): 228.4, 227.5, 226.8, 226.2 GPa at 200, 400, 800 and
+  // 1,600 per grain, so the sanitizer build's 200 holds G within 1.5 % of the bound.
   CHECK(symmetry_error(h.stiffness) < 1e-3);
   CHECK(semidefinite_order(C, b.voigt));
   CHECK(semidefinite_order(b.reuss, C));
   CHECK(bulk_modulus_3d(C) > *b.bulk_lower);
   CHECK(bulk_modulus_3d(C) < *b.bulk_upper);
   CHECK(shear_modulus_3d(C) > *b.shear_lower);
-  CHECK(shear_modulus_3d(C) < 1.015 * *b.shear_upper);
+  CHECK(shear_modulus_3d(C) < (kTetsPerGrain >= 3200 ? 1.0 : 1.015) * *b.shear_upper);
 }
 
 TEST_CASE("3D engineering constants: the isotropic tensor's own, and the universal anisotropy index of a cubic one",
