@@ -16,6 +16,11 @@ struct PhaseStresses3 {
   Distribution von_mises, hydrostatic;
 };
 
+// The von Mises stress of a symmetric tensor as OpenFOAM writes it (xx xy xz yy yz zz).
+double von_mises_3d(const double* sigma);
+// Each phase's share of the cells' volume (`phases` of them).
+std::vector<double> phase_volume_fractions(const std::vector<double>& volume, const std::vector<int>& phase, int phases);
+
 // From the cells' stresses (sigma as OpenFOAM writes it: xx xy xz yy yz zz), volumes and
 // phases (`phases` of them).
 std::vector<PhaseStresses3> phase_stresses_3d(const FieldValues& sigma, const std::vector<double>& volume,

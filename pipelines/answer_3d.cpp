@@ -17,18 +17,6 @@ namespace {
 
 constexpr const char* kVoigtNames[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 
-// The phases' volume fractions as the mesh's cells have them.
-std::vector<double> volume_fractions(const FoamMesh3& fm, std::size_t phases) {
-  std::vector<double> f(phases, 0.0);
-  double total = 0.0;
-  for (std::size_t c = 0; c < fm.volume.size(); ++c) {
-    f[static_cast<std::size_t>(fm.phase[c])] += fm.volume[c];
-    total += fm.volume[c];
-  }
-  for (double& x : f) x /= total;
-  return f;
-}
-
 // {PHASE: {volume_fraction, mean {xx ... xy}, von_mises, hydrostatic}}, Pa.
 Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in) {
   Json out;
@@ -66,10 +54,8 @@ void write_section_pictures(const SolveInput3& in, const CaseFields& fields) {
     double sum_xx = 0.0, sum_mises = 0.0;
     for (int k = 0; k < 4; ++k) {
       const double* c = fields.stress[static_cast<std::size_t>(in.fm.corner_cell[4 * static_cast<std::size_t>(t) + k])];
-      const double sxx = c[0], sxy = c[1], sxz = c[2], syy = c[3], syz = c[4], szz = c[5];
-      sum_xx += sxx;
-      sum_mises += std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                             3.0 * (sxy * sxy + syz * syz + sxz * sxz));
+      sum_xx += c[0];
+      sum_mises += von_mises_3d(c);
     }
     xx.push_back(0.25e-6 * sum_xx);
     mises.push_back(0.25e-6 * sum_mises);
@@ -99,7 +85,8 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   effective["strain_xx"] = h.strain_xx;
   if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways
   // Uniaxial strain: between the Reuss and Voigt tensors' C11 for every microstructure.
-  const TensorBounds3 b = tensor_bounds_3d(in.e.phases, volume_fractions(in.fm, in.e.phases.size()));
+  const TensorBounds3 b = tensor_bounds_3d(
+      in.e.phases, phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size())));
   effective["voigt"] = b.voigt[0][0];
   effective["reuss"] = b.reuss[0][0];
   const auto above = outside("effective.modulus", h.modulus, b.voigt[0][0], "the Voigt bound", true);
@@ -141,7 +128,8 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
                               {"nu_yz", k.nu_yz}, {"universal_anisotropy", k.universal_anisotropy}};
   effective["bulk_modulus"] = bulk_modulus_3d(C);
   effective["shear_modulus"] = shear_modulus_3d(C);
-  const std::vector<double> fractions = volume_fractions(in.fm, in.e.phases.size());
+  const std::vector<double> fractions =
+      phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
   effective["volume_fractions"] = fractions;
   const TensorBounds3 b = tensor_bounds_3d(in.e.phases, fractions);
   effective["voigt"] = stiffness_json(b.voigt);

@@ -51,12 +51,9 @@ FoamOptions read_foam_options_3d(const Config& c) {
   if (cells != "polyhedra" && cells != "tetrahedra")
     c.fail("export.cells", "must be polyhedra or tetrahedra on 3D cells, got '" + cells + "'");
   o.cells = cells == "polyhedra" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
-  const long long processes = c.integer("solve.processes", 1);
-  if (processes < 1 || processes > 1024) c.fail("solve.processes", "must be a count from 1 to 1024, got " + c.text("solve.processes"));
-  o.processes = static_cast<int>(processes);
+  o.processes = read_solve_processes(c);
   if (read_boundary(c) == Boundary::periodic) {
-    if (!c.flag("domain.periodic", false))
-      c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+    check_periodic_cell(c);
     if (c.has("load.uniaxial"))
       c.fail("load.uniaxial", "not with homogenise.boundary = periodic, whose load cases are macroscopic strains");
     o.cyclic = true;
@@ -93,7 +90,7 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
 void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3& t, const Tessellate3Job& tess_job,
                           const GrainMesh3& m, const Json& report, const std::vector<std::string>& case_dirs,
                           const FoamMesh3& fm, const FoamOptions& foam, Boundary boundary, bool solve,
-                          const Warnings& warnings) {
+                          bool pictures, const Warnings& warnings) {
   print_tessellation_3d_summary(t, report["seconds"]["tessellate"].get<double>());
   print_mesh_3d_summary(report["mesh"], m.seconds);
   std::printf("  cases: %s (%d %s cells)\n", case_dirs.size() == 1 ? "case/" : "case_xx/ ... case_xy/ (six load cases)",
@@ -112,7 +109,6 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
                 C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
                 eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
   }
-  const bool pictures = std::filesystem::exists(out / "stress_xx.png");
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
               "%s, %sconfig.ini, report.json}\n",
               out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/",
@@ -214,7 +210,9 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
-  if (summary) print_run_3d_summary(out, t, tess_job, m, report, case_dirs, fm, foam, boundary, solve, warnings);
+  if (summary)
+    print_run_3d_summary(out, t, tess_job, m, report, case_dirs, fm, foam, boundary, solve,
+                         solve && read_pictures(c) != Pictures::none, warnings);
 }
 
 }  // namespace grainmesh

@@ -71,11 +71,20 @@ std::string config_fingerprint(const Config& c) {
   return hex;
 }
 
-FoamOptions read_run_foam_options(const Config& c) {
-  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+int read_solve_processes(const Config& c) {
   const long long processes = c.integer("solve.processes", 1);
   if (processes < 1 || processes > 1024) c.fail("solve.processes", "must be a count from 1 to 1024, got " + c.text("solve.processes"));
-  o.processes = static_cast<int>(processes);
+  return static_cast<int>(processes);
+}
+
+void check_periodic_cell(const Config& c) {
+  if (!c.flag("domain.periodic", false))
+    c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+}
+
+FoamOptions read_run_foam_options(const Config& c) {
+  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  o.processes = read_solve_processes(c);
   o.delta_T = c.number("load.delta_T", 0.0);
   if (!std::isfinite(o.delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
   if (o.delta_T != 0.0) {
@@ -92,8 +101,7 @@ FoamOptions read_run_foam_options(const Config& c) {
                              "free to expand on average");
   }
   if (read_boundary(c) != Boundary::periodic) return o;
-  if (!c.flag("domain.periodic", false))
-    c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
+  check_periodic_cell(c);
   for (const char* key : {"load.traction", "load.uniaxial"})
     if (c.has(key))
       c.fail(key, "not with homogenise.boundary = periodic, whose load cases are macroscopic strains (of "

@@ -22,6 +22,11 @@ const std::vector<std::string>& run_own_config_keys();
 enum class Pictures { none, basic, all };
 Pictures read_pictures(const Config& config);
 
+// solve.processes (default 1; 1 to 1024), and the periodic cell homogenise.boundary =
+// periodic needs (domain.periodic): 2D and 3D runs read them alike.
+int read_solve_processes(const Config& config);
+void check_periodic_cell(const Config& config);
+
 // The export's options for a run: with homogenise.boundary = periodic the case is cyclic
 // (refused, naming the key, on a cell that is not periodic or with a traction or
 // uniaxial load).

@@ -92,6 +92,24 @@ TEST_CASE("grainmesh run --solve on a 3D cell under the mixed load, serial and o
   CHECK(two["effective"]["processes"].get<int>() == 2);
   CHECK(two["effective"]["seconds"]["decomposePar"].get<double>() > 0.0);
   CHECK(two["effective"]["modulus"].get<double>() == Approx(eff["modulus"].get<double>()).epsilon(1e-5));
+
+  // One material (Co given WC's constants): held sideways, the cell's modulus is exactly
+  // lambda + 2 mu, and every cell carries the same stress, so each phase's mean, von
+  // Mises spread and hydrostatic stress are the uniaxial strain's own.
+  const auto one_material = solved_report(dir / "uniform", {"phase.Co.E=700e9", "phase.Co.nu=0.24"});
+  const double E = 700e9, nu = 0.24, strain = one_material["effective"]["strain_xx"].get<double>();
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  CHECK(one_material["effective"]["modulus"].get<double>() == Approx(lambda + 2 * mu).epsilon(1e-9));
+  for (const char* phase : {"WC", "Co"}) {
+    CAPTURE(phase);
+    const auto& s = one_material["stresses"]["mixed"][phase];
+    CHECK(s["mean"]["xx"].get<double>() == Approx((lambda + 2 * mu) * strain).epsilon(1e-9));
+    CHECK(s["mean"]["yy"].get<double>() == Approx(lambda * strain).epsilon(1e-9));
+    CHECK(std::abs(s["mean"]["xy"].get<double>()) < 1e-9 * lambda * strain);
+    CHECK(s["von_mises"]["max"].get<double>() == Approx(2 * mu * strain).epsilon(1e-9));
+    CHECK(s["von_mises"]["std"].get<double>() < 1e-9 * mu * strain);
+    CHECK(s["hydrostatic"]["mean"].get<double>() == Approx((lambda + 2 * mu / 3) * strain).epsilon(1e-9));
+  }
 }
 
 TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra per grain, the 3D tensor's columns",
