@@ -117,6 +117,29 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
 }
 
+// The solve and its answer into `report` (effective, stresses), its warnings into
+// `warnings`. A solve that fails keeps the staged output as OUT.failed, its report saying
+// why, and throws.
+void solve_cases_3d(const SolveInput3& in, StagedOutput& staged, Boundary boundary, StageLine& stage, Json& report,
+                    Warnings& warnings) {
+  std::vector<std::string> solve_warnings;
+  try {
+    Answer answer = boundary == Boundary::mixed ? homogenise_mixed_3d(in, solve_warnings)
+                                                : homogenise_periodic_3d(in, solve_warnings);
+    report["effective"] = std::move(answer.effective);
+    report["effective"]["processes"] = in.foam.processes;
+    report["stresses"] = std::move(answer.stresses);
+  } catch (const SolveError& err) {
+    // Kept for a look: the cases with the solver's logs, as OUT.failed.
+    stage.end();
+    report["failed"] = err.what();
+    write_report(staged, report, warnings);
+    staged.keep_as_failed();
+    throw;
+  }
+  for (const std::string& w : solve_warnings) warnings.add(w);
+}
+
 }  // namespace
 
 void check_run_3d_config(const Config& c) {
@@ -182,25 +205,10 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
     clock = Clock::now();
     stage.show("solving with solidDisplacementFoam (" + std::to_string(case_dirs.size()) + " case" +
                (case_dirs.size() > 1 ? "s" : "") + ")");
-    std::vector<std::string> solve_warnings;
     const SolveInput3 in{dir,  staged, t, e, fm, foam, tess_job.options.deadline,
                          read_pictures(c) == Pictures::none ? 0 : mesh_job.picture_width, mesh_job.section * t.depth,
                          length_unit_name(foam.convert_to_meters)};
-    try {
-      Answer answer = boundary == Boundary::mixed ? homogenise_mixed_3d(in, solve_warnings)
-                                                  : homogenise_periodic_3d(in, solve_warnings);
-      report["effective"] = std::move(answer.effective);
-      report["effective"]["processes"] = foam.processes;
-      report["stresses"] = std::move(answer.stresses);
-    } catch (const SolveError& err) {
-      // Kept for a look: the cases with the solver's logs, as OUT.failed.
-      stage.end();
-      report["failed"] = err.what();
-      write_report(staged, report, warnings);
-      staged.keep_as_failed();
-      throw;
-    }
-    for (const std::string& w : solve_warnings) warnings.add(w);
+    solve_cases_3d(in, staged, boundary, stage, report, warnings);
     seconds["solve"] = since(clock);
   }
   stage.end();
