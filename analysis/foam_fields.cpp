@@ -108,14 +108,32 @@ CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t
   return {read_cell_field(result_dir / "D", "vector", cells), read_cell_field(result_dir / kStressField, "symmTensor", cells)};
 }
 
-CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o) {
-  const std::size_t cells = m.mesh.cells();
+CaseFields read_case_fields(const std::filesystem::path& result_dir, const std::vector<FoamPhase>& phases,
+                            const std::vector<int>& cell_phase, const FoamOptions& o) {
+  const std::size_t cells = cell_phase.size();
   CaseFields f = read_case_fields(result_dir, cells);
   if (o.delta_T == 0.0) return f;
-  const std::vector<double> thermal = thermal_stress(m, o);
+  const std::vector<double> thermal = thermal_stress(phases, cell_phase, o);
   for (std::size_t k = 0; k < cells; ++k)
     for (const int diagonal : {0, 3, 5}) f.stress.values[6 * k + static_cast<std::size_t>(diagonal)] -= thermal[k];
   return f;
+}
+
+FieldValues superposed(const std::vector<std::pair<double, const FieldValues*>>& terms) {
+  FieldValues out{.width = terms.front().second->width, .values = std::vector<double>(terms.front().second->values.size(), 0.0)};
+  for (const auto& [weight, field] : terms)
+    for (std::size_t i = 0; i < out.values.size(); ++i) out.values[i] += weight * field->values[i];
+  return out;
+}
+
+CaseFields superposed(const std::vector<std::pair<double, const CaseFields*>>& terms) {
+  CaseFields out;
+  for (FieldValues CaseFields::*field : {&CaseFields::displacement, &CaseFields::stress}) {
+    std::vector<std::pair<double, const FieldValues*>> parts;
+    for (const auto& [weight, fields] : terms) parts.push_back({weight, &(fields->*field)});
+    out.*field = superposed(parts);
+  }
+  return out;
 }
 
 std::vector<StressState> stress_states(const CaseFields& f, bool plane_stress) {

@@ -40,9 +40,14 @@ struct CaseFields {
   FieldValues displacement;  // vector
   FieldValues stress;        // symmTensor: xx xy xz yy yz zz
 };
-CaseFields read_case_fields(const std::filesystem::path& result_dir, const ExportMesh& m, const FoamOptions& o);
+// Each cell's phase in cell_phase (an index into `phases`).
+CaseFields read_case_fields(const std::filesystem::path& result_dir, const std::vector<FoamPhase>& phases,
+                            const std::vector<int>& cell_phase, const FoamOptions& o);
 // The two fields as written, of a case of `cells` cells without a temperature change.
 CaseFields read_case_fields(const std::filesystem::path& result_dir, std::size_t cells);
+// sum_k weight_k fields_k, of cases on one mesh: linear elasticity adds solutions.
+CaseFields superposed(const std::vector<std::pair<double, const CaseFields*>>& terms);
+FieldValues superposed(const std::vector<std::pair<double, const FieldValues*>>& terms);
 
 // The solver's stress of every cell (plane stress: zz zero), and the length of the
 // displacement.

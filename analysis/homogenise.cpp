@@ -77,7 +77,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
                                  const std::filesystem::path& case_shown_as) {
   Homogenised h;
   h.run = run_solver(case_dir, foam_cell(m), o, deadline, case_shown_as);
-  h.fields = read_case_fields(h.run.result_dir, m, o);
+  h.fields = read_case_fields(h.run.result_dir, m.phases, m.phase, o);
   h.cell_stress = recovered_stress(h.fields, m, o);
   // The force through `right`: the load the cell carries. From sigma's face values there,
   // or on a cyclic case, which writes none, from the cell fields.
@@ -114,7 +114,7 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
     const FoamOptions ok = load_case_options(o, r.load);
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
-    r.fields = read_case_fields(r.run.result_dir, m, ok);
+    r.fields = read_case_fields(r.run.result_dir, m.phases, m.phase, ok);
     r.cell_stress = recovered_stress(r.fields, m, ok);
     Balanced balanced = periodic_stress(r.run.result_dir, r.fields, m, pm, ok);
     r.stress = balanced.mean;

@@ -17,14 +17,16 @@ constexpr int kVoigt[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
 // The mean stress of a solved case from the forces through right, top and front: row i of
 // the stress is the force through the side normal to axis i over its area; the shears
 // from the two sides that carry each, averaged (equal in the continuum, nearly so here).
+// Also each cell's virial stress, into r.virial_stress.
 Voigt6 mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
-                   const FoamMesh3& fm, const FoamOptions& o) {
+                   const FoamMesh3& fm, const FoamOptions& o, LoadCaseResult3& r) {
   const FoamCell cell = foam_cell(m);
   // The plain form's face force is S . sigma_f: no gradient needed (nor written).
   const FieldValues grad = compact_normal_stress(cell, o)
                                ? read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(fm.mesh.cells))
                                : FieldValues{};
   const DiscreteTraction traction(fm, cell, o, fields.displacement, grad, fields.stress);
+  r.virial_stress = traction.virial_stress_tensor();
   const PolyMesh& pm = fm.mesh;
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec3 box = m.box;
@@ -63,6 +65,17 @@ std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOp
     c.strain[static_cast<std::size_t>(k)] = k < 3 ? e : 0.5 * e;
     cases.push_back(c);
   }
+  if (o.delta_T == 0.0) return cases;
+  double volume = 0.0, free = 0.0;
+  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
+    const auto& v = m.mesh.tets[t];
+    const std::vector<Vec3>& p = m.mesh.points;
+    const double dv = tet_volume(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
+    volume += dv;
+    free += dv * m.phases[static_cast<std::size_t>(m.phase[t])].alpha;
+  }
+  const double strain = free / volume * o.delta_T;
+  cases.push_back(LoadCase3{"thermal", {strain, strain, strain, 0.0, 0.0, 0.0}, o.delta_T});
   return cases;
 }
 
@@ -70,6 +83,7 @@ FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c) {
   FoamOptions out = o;
   out.cyclic = true;
   out.strain = c.strain;
+  out.delta_T = c.delta_T;
   return out;
 }
 
@@ -82,16 +96,17 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     throw GeometryError("solve_periodic_3d: a case directory per load case is needed");
   PeriodicHomogenised3 h;
   h.cases.resize(loads.size());
-  const std::size_t cells = static_cast<std::size_t>(fm.mesh.cells);
   // The shear cases first: they take longest.
-  side_by_side({3, 4, 5, 0, 1, 2}, parallel, [&](int k) {
+  std::vector<int> order{3, 4, 5, 0, 1, 2};
+  if (loads.size() > 6) order.push_back(6);
+  side_by_side(order, parallel, [&](int k) {
     LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
     r.load = loads[static_cast<std::size_t>(k)];
     const FoamOptions ok = load_case_options_3d(o, r.load);
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
-    r.fields = read_case_fields(r.run.result_dir, cells);
-    r.stress = mean_stress(r.run.result_dir, r.fields, m, fm, ok);
+    r.fields = read_case_fields(r.run.result_dir, m.phases, fm.phase, ok);
+    r.stress = mean_stress(r.run.result_dir, r.fields, m, fm, ok, r);
     r.volume_average = volume_average(r.fields, fm);
   });
   for (int k = 0; k < 6; ++k) {

@@ -22,13 +22,18 @@ namespace grainmesh {
 using Voigt6 = std::array<double, 6>;
 
 // The six load cases of `m` under `o`: a mean strain e = load_strain (displacement / width)
-// in xx, yy, zz, and engineering shears e in yz, xz, xy (tensor components e / 2).
+// in xx, yy, zz, and engineering shears e in yz, xz, xy (tensor components e / 2); with a
+// temperature change (o.delta_T) a seventh, `thermal`: the change at the mean strain the
+// phases would take free, each on its own (the volume mean of alpha delta_T, in xx, yy
+// and zz), which leaves only the phases' mismatch to carry (analysis/thermal_3d.hpp).
 struct LoadCase3 {
-  std::string name;  // xx, yy, zz, yz, xz, xy: also the case directory's suffix
+  std::string name;  // xx, yy, zz, yz, xz, xy, thermal: also the case directory's suffix
   Voigt6 strain{};
+  double delta_T = 0.0;  // K
 };
 std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOptions& o);
-// The options a load case's case is written and solved with: `o`'s, cyclic, its strain.
+// The options a load case's case is written and solved with: `o`'s, cyclic, its strain and
+// temperature change (none in the six mechanical cases).
 FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c);
 
 struct LoadCaseResult3 {
@@ -37,10 +42,11 @@ struct LoadCaseResult3 {
   Voigt6 volume_average{};  // the volume average of the cell stresses
   SolveRun run;
   CaseFields fields;
+  FieldValues virial_stress;  // each cell's from its face forces (DiscreteTraction::virial_stress_tensor)
 };
 
 struct PeriodicHomogenised3 {
-  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases_3d
+  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases_3d (the thermal case last)
   Stiffness6 stiffness{};              // column j from load case j (per engineering strain), as solved
   Stiffness6 volume_average_stiffness{};
 };

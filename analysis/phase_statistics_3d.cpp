@@ -23,14 +23,15 @@ std::vector<double> phase_volume_fractions(const std::vector<double>& volume, co
 }
 
 std::vector<PhaseStresses3> phase_stresses_3d(const FieldValues& sigma, const std::vector<double>& volume,
-                                              const std::vector<int>& phase, int phases) {
+                                              const std::vector<int>& phase, int phases, const FieldValues* balanced) {
   std::vector<PhaseStresses3> out(static_cast<std::size_t>(phases));
   std::vector<std::vector<double>> mises(out.size()), mean(out.size()), weight(out.size());
   const std::vector<double> fraction = phase_volume_fractions(volume, phase, phases);
   for (std::size_t c = 0; c < volume.size(); ++c) {
     const double* s = sigma[c];
     const std::size_t p = static_cast<std::size_t>(phase[c]);
-    const std::array<double, 6> v{s[0], s[3], s[5], s[4], s[2], s[1]};  // xx yy zz yz xz xy
+    const double* m = balanced != nullptr ? (*balanced)[c] : s;
+    const std::array<double, 6> v{m[0], m[3], m[5], m[4], m[2], m[1]};  // xx yy zz yz xz xy
     for (int i = 0; i < 6; ++i) out[p].mean[i] += volume[c] * v[i];
     mises[p].push_back(von_mises_3d(s));
     mean[p].push_back((s[0] + s[3] + s[5]) / 3.0);

@@ -22,8 +22,11 @@ double von_mises_3d(const double* sigma);
 std::vector<double> phase_volume_fractions(const std::vector<double>& volume, const std::vector<int>& phase, int phases);
 
 // From the cells' stresses (sigma as OpenFOAM writes it: xx xy xz yy yz zz), volumes and
-// phases (`phases` of them).
+// phases (`phases` of them). With `balanced` stresses (the face forces' virial,
+// DiscreteTraction::virial_stress_tensor) the mean tensors are theirs: the phases' means
+// then add up, volume-weighted, to the cell's mean stress exactly.
 std::vector<PhaseStresses3> phase_stresses_3d(const FieldValues& sigma, const std::vector<double>& volume,
-                                              const std::vector<int>& phase, int phases);
+                                              const std::vector<int>& phase, int phases,
+                                              const FieldValues* balanced = nullptr);
 
 }  // namespace grainmesh

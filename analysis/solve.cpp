@@ -54,7 +54,7 @@ double run_utility(const SolveJob& job, const std::vector<std::string>& argv) {
 // What the monitor watches for: convergence by grainmesh's measure, a stall, divergence (a
 // thousand times the displacement the load can give), the case's own stop.
 SolveMonitor::Options watch_options(const FoamCell& cell, const FoamOptions& o, const CaseStop& stop) {
-  const double load_scale = std::max(load_strain(cell, o), thermal_strain(cell.phases, o)) *
+  const double load_scale = std::max(load_strain(cell, o), thermal_strain(cell, o)) *
                             std::max({cell.size.x, cell.size.y, cell.size.z});
   return {.tolerance = kSolverTolerance,
           .stall_corrections = 500,

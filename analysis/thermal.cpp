@@ -8,18 +8,6 @@ namespace grainmesh {
 
 namespace {
 
-// sum_k weight_k fields_k.
-CaseFields superposed(const std::vector<std::pair<double, const CaseFields*>>& terms) {
-  CaseFields out = *terms.front().second;
-  for (FieldValues CaseFields::*field : {&CaseFields::displacement, &CaseFields::stress}) {
-    std::vector<double>& sum = (out.*field).values;
-    for (double& v : sum) v *= terms.front().first;
-    for (std::size_t k = 1; k < terms.size(); ++k)
-      for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += terms[k].first * ((*terms[k].second).*field).values[i];
-  }
-  return out;
-}
-
 std::vector<StressState> superposed(const std::vector<std::pair<double, const std::vector<StressState>*>>& terms) {
   std::vector<StressState> out(terms.front().second->size());
   for (const auto& [weight, states] : terms)

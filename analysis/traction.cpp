@@ -169,13 +169,13 @@ Vec3 DiscreteTraction::cell_imbalance(int c) const {
   return sum;
 }
 
-std::vector<StressState> DiscreteTraction::virial_stress() const {
-  if (dimensions_ != 2) throw GeometryError("virial_stress: of a 2D case only");
-  std::vector<StressState> out(static_cast<std::size_t>(pm_.cells));
+FieldValues DiscreteTraction::virial_stress_tensor() const {
+  FieldValues out{.width = 6, .values = std::vector<double>(6 * static_cast<std::size_t>(pm_.cells), 0.0)};
   auto add = [&](int c, Vec3 face_centre, Vec3 F) {
     const Vec3 r = face_centre - centre_[c];
-    StressState& s = out[static_cast<std::size_t>(c)];
-    s.xx += r.x * F.x, s.yy += r.y * F.y, s.xy += 0.5 * (r.x * F.y + r.y * F.x);
+    double* s = out.values.data() + 6 * static_cast<std::size_t>(c);  // xx xy xz yy yz zz
+    s[0] += r.x * F.x, s[3] += r.y * F.y, s[5] += r.z * F.z;
+    s[1] += 0.5 * (r.x * F.y + r.y * F.x), s[2] += 0.5 * (r.x * F.z + r.z * F.x), s[4] += 0.5 * (r.y * F.z + r.z * F.y);
   };
   for (int f = 0; f < pm_.faces(); ++f) {
     const int p = patch_of_face_[f];
@@ -188,10 +188,16 @@ std::vector<StressState> DiscreteTraction::virial_stress() const {
     add(P, centre, F);
     if (p < 0) add(pm_.neighbour[f], centre, -F);  // a cyclic face's partner adds its own
   }
-  for (int c = 0; c < pm_.cells; ++c) {
-    StressState& s = out[static_cast<std::size_t>(c)];
-    s.xx /= volume_[c], s.yy /= volume_[c], s.xy /= volume_[c];
-  }
+  for (int c = 0; c < pm_.cells; ++c)
+    for (int i = 0; i < 6; ++i) out.values[6 * static_cast<std::size_t>(c) + static_cast<std::size_t>(i)] /= volume_[c];
+  return out;
+}
+
+std::vector<StressState> DiscreteTraction::virial_stress() const {
+  if (dimensions_ != 2) throw GeometryError("virial_stress: of a 2D case only");
+  const FieldValues v = virial_stress_tensor();
+  std::vector<StressState> out(v.size());
+  for (std::size_t c = 0; c < out.size(); ++c) out[c] = {.xx = v[c][0], .yy = v[c][3], .zz = 0.0, .xy = v[c][1]};
   return out;
 }
 

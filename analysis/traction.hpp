@@ -49,6 +49,10 @@ class DiscreteTraction {
   // in the sum: the cells' virials add up, area-weighted, to the forces through the sides,
   // so a phase's area mean of it is a mean stress that agrees with the cell's exactly.
   std::vector<StressState> virial_stress() const;
+  // The same in full for a case of either dimension (xx xy xz yy yz zz, as OpenFOAM
+  // writes a symmTensor): each phase's volume mean of it is a mean stress that agrees
+  // with the forces through the sides.
+  FieldValues virial_stress_tensor() const;
 
  private:
   // What both constructors share: the cells' centres (metres) and volumes (cubic

@@ -160,11 +160,12 @@ Lame lame(const FoamPhase& phase, bool plane_stress);
 // stress is C : grad(D) - threeK alpha delta_T I (plane stress: its in-plane part).
 double thermal_stress_per_kelvin(const FoamPhase& phase, bool plane_stress);
 // The in-plane strain a phase takes when free to expand, per kelvin: (1 + nu) alpha under
-// plane strain (held out of plane), alpha under plane stress.
+// plane strain (held out of plane), alpha under plane stress. (In 3D: alpha itself.)
 double free_expansion(const FoamPhase& phase, bool plane_stress);
-// Per cell of `m`: threeK alpha delta_T of its phase (Pa), what the solver's sigmaD
-// leaves out of the stress; all zero without a temperature change.
-std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& options);
+// Per cell (cell_phase, an index into `phases`): threeK alpha delta_T of its phase (Pa),
+// what the solver's sigmaD leaves out of the stress; all zero without a temperature change.
+std::vector<double> thermal_stress(const std::vector<FoamPhase>& phases, const std::vector<int>& cell_phase,
+                                   const FoamOptions& options);
 
 // A grain mesh with its tessellation's cell and phases.
 ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m);
@@ -208,8 +209,8 @@ std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);
 double load_strain(const FoamCell& cell, const FoamOptions& options);
 
 // The largest free thermal strain of a phase under the case's temperature change:
-// |free_expansion delta_T| (0 without one).
-double thermal_strain(const std::vector<FoamPhase>& phases, const FoamOptions& options);
+// |free_expansion delta_T| in 2D, |alpha delta_T| in 3D (0 without one).
+double thermal_strain(const FoamCell& cell, const FoamOptions& options);
 
 // Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
 // on a periodic cell (and with a displacement load), a cell of at least 1 nm in metres, a

@@ -97,10 +97,11 @@ FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& options);
 
 // Writes the complete 3D case into `dir` as write_foam_case does a 2D one: the polyMesh,
 // 0/D (under the mixed load, or a cyclic case's mean strain: all six components), 0/E,
-// 0/nu, the properties (planeStress no), the system dictionaries (the force through
-// right, and top and front when cyclic, logged), Allrun, case.foam. Throws ConfigError
-// for export.plane_stress or load.delta_T (not solved in 3D yet) and as check_case,
-// GeometryError as foam_mesh_3d. Returns the mesh it wrote.
+// 0/nu (and under a temperature change 0/alpha and 0/T), the properties (planeStress
+// no), the system dictionaries (the force through right, and top and front when cyclic,
+// logged), Allrun, case.foam. Throws ConfigError for export.plane_stress and as
+// check_case (a temperature change only on a cyclic case), GeometryError as
+// foam_mesh_3d. Returns the mesh it wrote.
 FoamMesh3 write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& options);
 // The same on a mesh already built (foam_mesh_3d(m, options): a load case's options keep
 // the mesh), its polyMesh's files copied from `polymesh_from` when given.

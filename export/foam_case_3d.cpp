@@ -12,8 +12,6 @@ namespace {
 // What a 3D case cannot carry, refused by name before anything is written.
 void check_case_3d(const ExportMesh3& m, const FoamOptions& o) {
   if (o.plane_stress) throw ConfigError("export.plane_stress: a 3D case has no plane to hold; remove the key");
-  if (o.delta_T != 0.0)
-    throw ConfigError("load.delta_T: the thermal load is not yet solved on 3D cells (2D only); remove the key");
   check_case(foam_cell(m), m.grain, m.phase, m.mesh.tets.size(), o);
 }
 

@@ -176,9 +176,12 @@ double load_strain(const FoamCell& cell, const FoamOptions& o) {
   return std::abs(o.traction) / softest;
 }
 
-double thermal_strain(const std::vector<FoamPhase>& phases, const FoamOptions& o) {
+double thermal_strain(const FoamCell& cell, const FoamOptions& o) {
   double strain = 0.0;
-  for (const FoamPhase& p : phases) strain = std::max(strain, std::abs(free_expansion(p, o.plane_stress) * o.delta_T));
+  for (const FoamPhase& p : cell.phases) {
+    const double free = cell.dimensions() == 3 ? p.alpha : free_expansion(p, o.plane_stress);
+    strain = std::max(strain, std::abs(free * o.delta_T));
+  }
   return strain;
 }
 

@@ -18,11 +18,12 @@ double free_expansion(const FoamPhase& p, bool plane_stress) {
   return plane_stress ? p.alpha : (1 + p.poisson_ratio) * p.alpha;
 }
 
-std::vector<double> thermal_stress(const ExportMesh& m, const FoamOptions& o) {
+std::vector<double> thermal_stress(const std::vector<FoamPhase>& phases, const std::vector<int>& cell_phase,
+                                   const FoamOptions& o) {
   std::vector<double> per_phase;
-  for (const FoamPhase& p : m.phases) per_phase.push_back(thermal_stress_per_kelvin(p, o.plane_stress) * o.delta_T);
-  std::vector<double> out(m.phase.size());
-  for (std::size_t t = 0; t < out.size(); ++t) out[t] = per_phase[static_cast<std::size_t>(m.phase[t])];
+  for (const FoamPhase& p : phases) per_phase.push_back(thermal_stress_per_kelvin(p, o.plane_stress) * o.delta_T);
+  std::vector<double> out(cell_phase.size());
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = per_phase[static_cast<std::size_t>(cell_phase[t])];
   return out;
 }
 

@@ -220,6 +220,12 @@ void draw_colour_bar(cairo_t* c, const Canvas& canvas, const PictureOptions& opt
   const std::string title = options.field_name + "   (ends: 1st and 99th percentile, beyond in the end colours)";
   cairo_set_font_size(c, 13.0);
   cairo_text_extents(c, title.c_str(), &ext);
+  // A title wider than the picture is set smaller rather than cut at its ends.
+  const double room = cairo_image_surface_get_width(cairo_get_target(c)) - 8.0;
+  if (ext.x_advance > room) {
+    cairo_set_font_size(c, 13.0 * room / ext.x_advance);
+    cairo_text_extents(c, title.c_str(), &ext);
+  }
   cairo_move_to(c, 0.5 * (x0 + x1 - ext.x_advance), y0 + 49.0);
   cairo_show_text(c, title.c_str());
 }

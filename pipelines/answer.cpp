@@ -64,6 +64,19 @@ Json distribution_json(const Distribution& d) {
   return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
 }
 
+double levin_difference(const std::vector<double>& expansion, const std::vector<double>& levin,
+                        std::vector<std::string>& warnings, const std::string& advice) {
+  double scale = 0.0, difference = 0.0;
+  for (std::size_t k = 0; k < levin.size(); ++k) {
+    scale = std::max(scale, std::abs(levin[k]));
+    difference = std::max(difference, std::abs(expansion[k] - levin[k]));
+  }
+  if (difference > 0.01 * scale)
+    warnings.push_back("effective.thermal_expansion differs from Levin's exact relation by " +
+                       to_text(100.0 * difference / scale, 2) + " % of its largest component: " + advice);
+  return difference / scale;
+}
+
 namespace {
 
 // A solved load case: its name in the report, its recovered cell stresses, its loaded
@@ -122,17 +135,10 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
   effective["thermal_expansion"] = expansion_json(r.expansion);
   Json thermal{{"delta_T", r.delta_T}};
   if (const auto levin = levin_expansion(e.phases, C, foam.plane_stress)) {
-    double scale = 0.0, difference = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      scale = std::max(scale, std::abs((*levin)[k]));
-      difference = std::max(difference, std::abs(r.expansion[k] - (*levin)[k]));
-    }
     thermal["levin"] = expansion_json(*levin);
-    thermal["levin_difference"] = difference / scale;
-    if (difference > 0.01 * scale)
-      warnings.push_back("effective.thermal_expansion differs from Levin's exact relation by " +
-                         to_text(100.0 * difference / scale, 2) + " % of its largest component: refine the mesh at "
-                         "the interfaces (mesh.boundary_size; see README, Thermal residual stress)");
+    thermal["levin_difference"] =
+        levin_difference({r.expansion.begin(), r.expansion.end()}, {levin->begin(), levin->end()}, warnings,
+                         "refine the mesh at the interfaces (mesh.boundary_size; see README, Thermal residual stress)");
   }
   effective["thermal"] = thermal;
   const Json stresses = phase_stresses_json(

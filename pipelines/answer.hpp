@@ -47,6 +47,10 @@ struct ModuliBounds {
 };
 void check_hashin_shtrikman(double K, double G, const ModuliBounds& bounds, Json& effective,
                             std::vector<std::string>& warnings, const std::string& why);
+// How far an effective expansion lies from Levin's exact relation: the largest difference
+// of a component over Levin's largest; over 1 % a warning ending in (`advice`).
+double levin_difference(const std::vector<double>& expansion, const std::vector<double>& levin,
+                        std::vector<std::string>& warnings, const std::string& advice);
 // A distribution in report.json: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d);
 

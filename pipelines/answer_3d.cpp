@@ -7,6 +7,7 @@
 
 #include "analysis/bounds_3d.hpp"
 #include "analysis/phase_statistics_3d.hpp"
+#include "analysis/thermal_3d.hpp"
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/section.hpp"
@@ -17,11 +18,12 @@ namespace {
 
 constexpr const char* kVoigtNames[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 
-// {PHASE: {volume_fraction, mean {xx ... xy}, von_mises, hydrostatic}}, Pa.
-Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in) {
+// {PHASE: {volume_fraction, mean {xx ... xy}, von_mises, hydrostatic}}, Pa; the means
+// from the virial stresses when given (a periodic case's).
+Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in, const FieldValues* balanced = nullptr) {
   Json out;
   const std::vector<PhaseStresses3> ps =
-      phase_stresses_3d(fields.stress, in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
+      phase_stresses_3d(fields.stress, in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()), balanced);
   for (std::size_t p = 0; p < ps.size(); ++p) {
     Json mean;
     for (int i = 0; i < 6; ++i) mean[kVoigtNames[i]] = ps[p].mean[static_cast<std::size_t>(i)];
@@ -44,9 +46,17 @@ Json stiffness_json(const Stiffness6& c) {
   return out;
 }
 
+// {xx, yy, zz, yz, xz, xy}.
+Json voigt_json(const Voigt6& v) {
+  Json out;
+  for (int i = 0; i < 6; ++i) out[kVoigtNames[i]] = v[static_cast<std::size_t>(i)];
+  return out;
+}
+
 // The section z = in.section_z of the solved fields: each tetrahedron cut shows the mean
-// of its corners' cells (one cell each on tetrahedra), sigma_xx and von Mises in MPa.
-void write_section_pictures(const SolveInput3& in, const CaseFields& fields) {
+// of its corners' cells (one cell each on tetrahedra), sigma_xx and von Mises in MPa, in
+// stress_xx`suffix`.png and von_mises`suffix`.png.
+void write_section_pictures(const SolveInput3& in, const CaseFields& fields, const std::string& suffix = "") {
   if (in.picture_width == 0) return;
   const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
   std::vector<double> xx, mises;
@@ -61,11 +71,30 @@ void write_section_pictures(const SolveInput3& in, const CaseFields& fields) {
     mises.push_back(0.25e-6 * sum_mises);
   }
   const std::string at = ", z = " + to_text(in.section_z, 3) + (in.unit.empty() ? "" : " " + in.unit);
-  for (const auto& [name, field, title] : {std::tuple{"stress_xx.png", &xx, "sigma_xx (MPa)"},
-                                           std::tuple{"von_mises.png", &mises, "von Mises (MPa)"}})
-    write_mesh_png(in.dir / name, s.cells,
+  for (const auto& [name, field, title] : {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)"},
+                                           std::tuple{"von_mises", &mises, "von Mises (MPa)"}})
+    write_mesh_png(in.dir / (std::string(name) + suffix + ".png"), s.cells,
                    {.width_px = in.picture_width, .fill_by = {}, .outline_by = s.grain, .view = {}, .field = *field,
-                    .field_name = title + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
+                    .field_name = (suffix.empty() ? "" : "residual ") + std::string(title) + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
+}
+
+// What a thermal load adds to the answer: effective.thermal_expansion {xx ... xy} (1/K,
+// tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
+// state's phase stresses as stresses.thermal and its section pictures.
+void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness6& C, const SolveInput3& in,
+                           std::vector<std::string>& warnings) {
+  const ThermalResidual3 r = thermal_residual_3d(h, C);
+  answer.effective["thermal_expansion"] = voigt_json(r.expansion);
+  Json thermal{{"delta_T", r.delta_T}};
+  if (const auto levin = levin_expansion_3d(in.e.phases, C)) {
+    thermal["levin"] = voigt_json(*levin);
+    thermal["levin_difference"] =
+        levin_difference({r.expansion.begin(), r.expansion.end()}, {levin->begin(), levin->end()}, warnings,
+                         "refine the mesh (mesh.tets_per_grain; see README, 3D cases and solves)");
+  }
+  answer.effective["thermal"] = thermal;
+  answer.stresses["thermal"] = phase_stresses_json(r.fields, in, &r.virial_stress);
+  write_section_pictures(in, r.fields, "_thermal");
 }
 
 }  // namespace
@@ -115,7 +144,8 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   for (const LoadCaseResult3& r : h.cases) {
     effective["load_cases"][r.load.name] = solve_json(r.run, in.dir);
     corrections = std::max(corrections, r.run.corrections);
-    answer.stresses[r.load.name] = phase_stresses_json(r.fields, in);
+    // The thermal case at its fixed strain is no state of its own: its free state is below.
+    if (r.load.delta_T == 0.0) answer.stresses[r.load.name] = phase_stresses_json(r.fields, in, &r.virial_stress);
   }
   effective["corrections"] = corrections;
   write_section_pictures(in, h.cases[0].fields);
@@ -126,6 +156,7 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   effective["engineering"] = {{"E_x", k.E_x},     {"E_y", k.E_y},     {"E_z", k.E_z},     {"G_yz", k.G_yz},
                               {"G_xz", k.G_xz},   {"G_xy", k.G_xy},   {"nu_xy", k.nu_xy}, {"nu_xz", k.nu_xz},
                               {"nu_yz", k.nu_yz}, {"universal_anisotropy", k.universal_anisotropy}};
+  if (in.foam.delta_T != 0.0) add_thermal_answer_3d(answer, h, C, in, warnings);
   effective["bulk_modulus"] = bulk_modulus_3d(C);
   effective["shear_modulus"] = shear_modulus_3d(C);
   const std::vector<double> fractions =

@@ -29,7 +29,7 @@ struct SolveInput3 {
   std::string unit{};      // their scale bar's length unit
 };
 
-// The case directories of the periodic load cases: case_xx ... case_xy.
+// The case directories of the periodic load cases: case_xx ... case_xy, case_thermal.
 std::string periodic_case_dir_3d(const LoadCase3& c);
 
 // The mixed load's answer (case/): effective.modulus (under uniaxial strain), with the
@@ -41,6 +41,10 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
 // the mean of Cij and Cji), effective.symmetry_error, the engineering constants, the
 // Voigt and Reuss tensors and the Hashin-Shtrikman bounds on bulk and shear modulus, and
 // the phases' stresses per load case; the xx case's section pictures as the mixed load's.
+// Under a temperature change (foam.delta_T) also the thermal case (case_thermal/): the
+// effective thermal expansion tensor with Levin's exact relation beside it (more than 1 %
+// off a warning), the free state's phase stresses (stresses.thermal: the residual stress)
+// and its section pictures (stress_xx_thermal.png, von_mises_thermal.png).
 Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings);
 
 }  // namespace grainmesh

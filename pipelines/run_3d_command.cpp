@@ -25,7 +25,7 @@ namespace {
 // The export, load and solve keys a 3D run takes (beside the tessellation's and the mesh's).
 const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
-                                             "export.cells", "load.displacement", "load.uniaxial",
+                                             "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
                                              "homogenise.boundary", "solve.processes", "output.pictures"};
   return keys;
 }
@@ -36,7 +36,6 @@ std::string refused_3d(const std::string& key) {
   if (key == "export.cyclic") return "homogenise.boundary = periodic makes the cyclic pairs";
   if (key == "export.stiffness_interpolation") return "3D cases interpolate the stiffness linearly (harmonic diverges)";
   if (key == "load.traction") return "3D cases are loaded by load.displacement";
-  if (key == "load.delta_T") return "the thermal load is not solved on 3D cells yet (2D only)";
   return "not available for 3D cells (domain.depth is set)";
 }
 
@@ -52,6 +51,7 @@ FoamOptions read_foam_options_3d(const Config& c) {
     c.fail("export.cells", "must be polyhedra or tetrahedra on 3D cells, got '" + cells + "'");
   o.cells = cells == "polyhedra" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
   o.processes = read_solve_processes(c);
+  o.delta_T = read_delta_T(c);
   if (read_boundary(c) == Boundary::periodic) {
     check_periodic_cell(c);
     if (c.has("load.uniaxial"))
@@ -61,8 +61,8 @@ FoamOptions read_foam_options_3d(const Config& c) {
   return o;
 }
 
-// The cases of the run in `dir`: the mixed load in case/, the six periodic load cases each
-// in case_NAME/. Returns their directory names and the mesh they were written on.
+// The cases of the run in `dir`: the mixed load in case/, the six periodic load cases (and
+// the thermal one) each in case_NAME/. Returns their directory names and the mesh they were written on.
 std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const ExportMesh3& e, const FoamOptions& o,
                                         Boundary boundary, FoamMesh3& fm) {
   std::vector<std::string> names;
@@ -72,8 +72,8 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
     fm = write_foam_case_3d(dir / "case", e, o);
     return names;
   }
-  // One mesh for the six cases (their options differ in the strain alone), its files
-  // written once and copied.
+  // One mesh for the load cases (their options differ in the strain and temperature
+  // alone), its files written once and copied.
   for (const LoadCase3& lc : periodic_load_cases_3d(e, o)) {
     const bool first = names.empty();
     names.push_back(periodic_case_dir_3d(lc));
@@ -93,8 +93,10 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
                           bool pictures, const Warnings& warnings) {
   print_tessellation_3d_summary(t, report["seconds"]["tessellate"].get<double>());
   print_mesh_3d_summary(report["mesh"], m.seconds);
-  std::printf("  cases: %s (%d %s cells)\n", case_dirs.size() == 1 ? "case/" : "case_xx/ ... case_xy/ (six load cases)",
-              fm.mesh.cells, foam.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
+  const char* cases = case_dirs.size() == 1 ? "case/"
+                      : case_dirs.size() == 6 ? "case_xx/ ... case_xy/ (six load cases)"
+                                              : "case_xx/ ... case_xy/, case_thermal/ (seven load cases)";
+  std::printf("  cases: %s (%d %s cells)\n", cases, fm.mesh.cells, foam.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
   if (solve && boundary == Boundary::mixed) {
     const Json& eff = report["effective"];
     std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
@@ -108,11 +110,19 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
                 C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
                 C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
                 eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
+    if (eff.contains("thermal_expansion")) {
+      const Json& a = eff["thermal_expansion"];
+      std::printf("  thermal: free expansion %.4g, %.4g, %.4g 1/K (xx, yy, zz); residual stresses in report.json "
+                  "(stresses.thermal)\n",
+                  a["xx"].get<double>(), a["yy"].get<double>(), a["zz"].get<double>());
+    }
   }
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
               "%s, %sconfig.ini, report.json}\n",
               out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/",
-              pictures ? "stress_xx.png, von_mises.png, " : "");
+              !pictures                        ? ""
+              : foam.delta_T != 0.0 && solve ? "stress_xx.png, von_mises.png, stress_xx_thermal.png, von_mises_thermal.png, "
+                                             : "stress_xx.png, von_mises.png, ");
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
 }

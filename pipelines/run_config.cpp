@@ -82,12 +82,10 @@ void check_periodic_cell(const Config& c) {
     c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
 }
 
-FoamOptions read_run_foam_options(const Config& c) {
-  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
-  o.processes = read_solve_processes(c);
-  o.delta_T = c.number("load.delta_T", 0.0);
-  if (!std::isfinite(o.delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
-  if (o.delta_T != 0.0) {
+double read_delta_T(const Config& c) {
+  const double delta_T = c.number("load.delta_T", 0.0);
+  if (!std::isfinite(delta_T)) c.fail("load.delta_T", "must be a finite number (K), got " + c.text("load.delta_T"));
+  if (delta_T != 0.0) {
     // Every phase's expansion, from the config (the tessellation reads the same keys).
     for (const std::string& name : c.names_in("phase")) {
       const std::string key = "phase." + name + ".alpha";
@@ -100,6 +98,13 @@ FoamOptions read_run_foam_options(const Config& c) {
       c.fail("load.delta_T", "needs homogenise.boundary = periodic: the thermal load is solved on a periodic cell, "
                              "free to expand on average");
   }
+  return delta_T;
+}
+
+FoamOptions read_run_foam_options(const Config& c) {
+  FoamOptions o = read_foam_options(c.subset(export_config_keys()));
+  o.processes = read_solve_processes(c);
+  o.delta_T = read_delta_T(c);
   if (read_boundary(c) != Boundary::periodic) return o;
   check_periodic_cell(c);
   for (const char* key : {"load.traction", "load.uniaxial"})

@@ -26,6 +26,9 @@ Pictures read_pictures(const Config& config);
 // periodic needs (domain.periodic): 2D and 3D runs read them alike.
 int read_solve_processes(const Config& config);
 void check_periodic_cell(const Config& config);
+// load.delta_T (K, default 0): finite; when not zero, every phase's alpha given (>= 0)
+// and homogenise.boundary = periodic. 2D and 3D runs read it alike.
+double read_delta_T(const Config& config);
 
 // The export's options for a run: with homogenise.boundary = periodic the case is cyclic
 // (refused, naming the key, on a cell that is not periodic or with a traction or

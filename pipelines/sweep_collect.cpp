@@ -103,7 +103,7 @@ struct PointRuns {
   std::vector<std::vector<double>> tensor;  // per tensor_quantities
   // Per-run numbers summarised per point, by column name: the WC-Co descriptors (e.g.
   // contiguity_WC), the phase stresses (e.g. mixed_WC_mean_xx, mixed_WC_von_mises_p99,
-  // thermal_Co_mean_yy) and the thermal expansion (thermal_expansion_a11).
+  // thermal_Co_mean_yy) and the thermal expansion (thermal_expansion_a11; in 3D _xx ...).
   std::map<std::string, std::vector<double>> extras;
   double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
   std::vector<double> achieved;  // the swept phase's achieved fraction, per run
@@ -140,8 +140,14 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
     }
   if (!j.contains("effective")) return;
   const Json& e = j["effective"];
-  if (e.contains("thermal_expansion"))
-    for (const char* a : {"a11", "a22", "a12"}) add(std::string("thermal_expansion_") + a, e["thermal_expansion"][a]);
+  if (e.contains("thermal_expansion")) {
+    // A 2D run's in-plane components, a 3D run's six.
+    const Json& a = e["thermal_expansion"];
+    const std::vector<std::string> components =
+        a.contains("a11") ? std::vector<std::string>{"a11", "a22", "a12"}
+                          : std::vector<std::string>{"xx", "yy", "zz", "yz", "xz", "xy"};
+    for (const std::string& c : components) add("thermal_expansion_" + c, a[c]);
+  }
   if (e.contains("stiffness")) {
     for (std::size_t q = 0; q < tensor.size(); ++q) pr.tensor[q].push_back(e[tensor[q].first][tensor[q].second].get<double>());
     return;

@@ -45,7 +45,7 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
     write_control_dict(dir.path(), foam_cell(e), o, kMaxCorrections, 1e-3);
     const SolveRun run = run_solver(dir.path(), foam_cell(e), o);
     // The whole stress: under the temperature change, sigmaD less the thermal stress.
-    CaseFields fields = read_case_fields(run.result_dir, e, o);
+    CaseFields fields = read_case_fields(run.result_dir, e.phases, e.phase, o);
     const DiscreteTraction traction(pm, e, o, std::move(fields.displacement),
                                     read_cell_field(run.result_dir / kGradientField, "tensor",
                                                     static_cast<std::size_t>(pm.cells)),

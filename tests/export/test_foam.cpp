@@ -384,7 +384,7 @@ TEST_CASE("a thermal case carries the temperature change and each cell's alpha, 
   CHECK(thermal.find("thermalStress   yes;") != std::string::npos);
   CHECK(test::read_file(dir / "system/fvSchemes").find("grad((threeKalpha*T)) Gauss linear;") != std::string::npos);
   // The thermal stress the solver's sigmaD leaves out: threeK alpha delta_T per cell.
-  const std::vector<double> s = thermal_stress(e, o);
+  const std::vector<double> s = thermal_stress(e.phases, e.phase, o);
   const FoamPhase& wc = e.phases[0];
   CHECK(s[static_cast<std::size_t>(std::find(e.phase.begin(), e.phase.end(), 0) - e.phase.begin())] ==
         Approx(wc.youngs_modulus / (1 - 2 * wc.poisson_ratio) * wc.alpha * -700.0));

@@ -132,14 +132,16 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   }
   CHECK(test::read_file(dir / "c" / "convergence.csv").rfind("level,tets_per_grain,cells,seconds,C11,C22,C33", 0) == 0);
 
-  // A sweep over the Co fraction, two realisations each, collected: the 3D tensor's
-  // columns, and a stiffer cell with less Co.
+  // A sweep over the Co fraction, two realisations each, cooled, collected: the 3D
+  // tensor's columns and the expansion tensor's, and a stiffer cell with less Co, which
+  // expands less (Co's alpha the larger).
   const fs::path ini = dir / "sweep.ini";
   write_text_file(ini, test::read_file(cfg) +
                             "\n[sweep]\nphase.Co.fraction = 0.1, 0.25\nrealisations = 2\n[homogenise]\nboundary = periodic\n"
                             "[mesh]\ntets_per_grain = 100\n");
   const auto s = run_grainmesh({"sweep", ini.string(), "-o", (dir / "s").string(), "--solve", "--set",
-                                "tessellation.grains=20"});
+                                "tessellation.grains=20", "--set", "load.delta_T=-500", "--set",
+                                "phase.WC.alpha=5.2e-6", "--set", "phase.Co.alpha=13.8e-6"});
   INFO(s.err);
   REQUIRE(s.exit_code == 0);
   REQUIRE(run_grainmesh({"sweep", "--collect", (dir / "s").string()}).exit_code == 0);
@@ -157,7 +159,8 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
     const auto at = std::find(header.begin(), header.end(), name);
     return at == header.end() ? -1 : static_cast<int>(at - header.begin());
   };
-  for (const char* name : {"C33_mean", "C44_mean", "E_z_mean", "universal_anisotropy_mean", "xx_Co_mean_xx_mean"}) {
+  for (const char* name : {"C33_mean", "C44_mean", "E_z_mean", "universal_anisotropy_mean", "xx_Co_mean_xx_mean",
+                           "thermal_Co_mean_xx_mean", "thermal_expansion_zz_mean", "thermal_expansion_xy_mean"}) {
     CAPTURE(name);
     CHECK(column(name) >= 0);
   }
@@ -165,4 +168,6 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   CHECK(rows[1][column("runs")] == "2");
   CHECK(rows[2][column("runs")] == "2");
   CHECK(std::stod(rows[1][column("C11_mean")]) > std::stod(rows[2][column("C11_mean")]));
+  REQUIRE(column("thermal_expansion_xx_mean") >= 0);
+  CHECK(std::stod(rows[1][column("thermal_expansion_xx_mean")]) < std::stod(rows[2][column("thermal_expansion_xx_mean")]));
 }
