@@ -28,6 +28,10 @@ ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffn
   }
   r.fields = superposed(terms);
   r.virial_stress = superposed(virial);
+  terms[1].first += 1.0;
+  virial[1].first += 1.0;
+  r.loaded_fields = superposed(terms);
+  r.loaded_virial_stress = superposed(virial);
   return r;
 }
 

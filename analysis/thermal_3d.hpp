@@ -22,6 +22,9 @@ struct ThermalResidual3 {
   Voigt6 expansion{};    // xx, yy, zz, yz, xz, xy tensor components, 1/K
   CaseFields fields;     // the free state: displacement and the whole stress (the residual stress)
   FieldValues virial_stress;  // and its cells' virial stresses (traction.hpp)
+  // The free state with the xx case added once more: cooled, then pulled (load.displacement).
+  CaseFields loaded_fields;
+  FieldValues loaded_virial_stress;
 };
 
 // From solved periodic cases with a thermal case (periodic_load_cases_3d with delta_T), and

@@ -80,7 +80,8 @@ void write_section_pictures(const SolveInput3& in, const CaseFields& fields, con
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx ... xy} (1/K,
 // tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
-// state's phase stresses as stresses.thermal and its section pictures.
+// state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
+// stresses.thermal_xx) and its section pictures.
 void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness6& C, const SolveInput3& in,
                            std::vector<std::string>& warnings) {
   const ThermalResidual3 r = thermal_residual_3d(h, C);
@@ -94,6 +95,7 @@ void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const 
   }
   answer.effective["thermal"] = thermal;
   answer.stresses["thermal"] = phase_stresses_json(r.fields, in, &r.virial_stress);
+  answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded_fields, in, &r.loaded_virial_stress);
   write_section_pictures(in, r.fields, "_thermal");
 }
 

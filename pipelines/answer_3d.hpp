@@ -43,8 +43,9 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
 // the phases' stresses per load case; the xx case's section pictures as the mixed load's.
 // Under a temperature change (foam.delta_T) also the thermal case (case_thermal/): the
 // effective thermal expansion tensor with Levin's exact relation beside it (more than 1 %
-// off a warning), the free state's phase stresses (stresses.thermal: the residual stress)
-// and its section pictures (stress_xx_thermal.png, von_mises_thermal.png).
+// off a warning), the free state's phase stresses (stresses.thermal: the residual stress;
+// stresses.thermal_xx: cooled, then pulled as the xx case) and its section pictures
+// (stress_xx_thermal.png, von_mises_thermal.png).
 Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings);
 
 }  // namespace grainmesh

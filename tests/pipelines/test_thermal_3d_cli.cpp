@@ -103,7 +103,8 @@ TEST_CASE("a 3D cell of one material cooled: no residual stress, the free expans
   CHECK(r.out.find("thermal: free expansion") != std::string::npos);
 }
 
-TEST_CASE("a 3D WC-Co cell cooled: Levin's relation met, the residual stress's phase means balanced, Co in tension",
+TEST_CASE("a 3D WC-Co cell cooled: Levin's relation met, the residual stress's phase means balanced, Co in tension, "
+          "cooled and then pulled by superposition",
           "[thermal][physics][cli][run3d]") {
   test::ScratchDir dir("thermal3d-wcco");
   const test::Material wc{700e9, 0.24, 5.2e-6}, co{211e9, 0.31, 13.8e-6};
@@ -133,6 +134,13 @@ TEST_CASE("a 3D WC-Co cell cooled: Levin's relation met, the residual stress's p
     INFO(c);
     CHECK(std::abs(f_wc * s["WC"]["mean"][c].get<double>() + f_co * s["Co"]["mean"][c].get<double>()) <= 1e-3 * larger);
   }
+  // Cooled, then pulled: the residual state plus the xx case (linear elasticity adds them).
+  for (const char* phase : {"WC", "Co"})
+    for (const char* c : kVoigt) {
+      INFO(phase << " " << c);
+      const double sum = s[phase]["mean"][c].get<double>() + report["stresses"]["xx"][phase]["mean"][c].get<double>();
+      CHECK(std::abs(report["stresses"]["thermal_xx"][phase]["mean"][c].get<double>() - sum) <= 1e-9 * larger);
+    }
   // Cooled: the binder, which would shrink more, is held in tension, the carbide squeezed.
   CHECK(s["Co"]["hydrostatic"]["mean"].get<double>() > 0.0);
   CHECK(s["WC"]["hydrostatic"]["mean"].get<double>() < 0.0);
