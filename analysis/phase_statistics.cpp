@@ -77,22 +77,29 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states
 
 std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins) {
-  std::vector<double> mises;
-  for (const StressState& s : cell_stress) mises.push_back(von_mises(s));
-  const auto [lo, hi] = std::minmax_element(mises.begin(), mises.end());
-  const double low = mises.empty() ? 0.0 : *lo, width = mises.empty() || *hi == *lo ? 1.0 : (*hi - *lo) / bins;
+  std::vector<double> mises, area;
+  for (std::size_t k = 0; k < cell_stress.size(); ++k) {
+    mises.push_back(von_mises(cell_stress[k]));
+    area.push_back(cell_area(mesh, k));
+  }
+  return phase_histograms(mises, area, phase, phases, bins);
+}
+
+std::vector<std::vector<Vec2>> phase_histograms(const std::vector<double>& values, const std::vector<double>& weights,
+                                                const std::vector<int>& phase, int phases, int bins) {
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const double low = values.empty() ? 0.0 : *lo, width = values.empty() || *hi == *lo ? 1.0 : (*hi - *lo) / bins;
   std::vector<std::vector<double>> share(static_cast<std::size_t>(phases), std::vector<double>(bins, 0.0));
-  std::vector<double> area(static_cast<std::size_t>(phases), 0.0);
-  for (std::size_t k = 0; k < mises.size(); ++k) {
-    const int bin = std::clamp(static_cast<int>((mises[k] - low) / width), 0, bins - 1);
-    const double a = cell_area(mesh, k);
-    share[phase[k]][bin] += a;
-    area[phase[k]] += a;
+  std::vector<double> total(static_cast<std::size_t>(phases), 0.0);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const int bin = std::clamp(static_cast<int>((values[k] - low) / width), 0, bins - 1);
+    share[phase[k]][bin] += weights[k];
+    total[phase[k]] += weights[k];
   }
   std::vector<std::vector<Vec2>> out(share.size());
   for (std::size_t p = 0; p < share.size(); ++p)
     for (int b = 0; b < bins; ++b)
-      out[p].push_back({low + (b + 0.5) * width, area[p] > 0.0 ? share[p][b] / area[p] : 0.0});
+      out[p].push_back({low + (b + 0.5) * width, total[p] > 0.0 ? share[p][b] / total[p] : 0.0});
   return out;
 }
 

@@ -35,8 +35,12 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_s
                                           const std::vector<int>& phase, int phases, int loaded_component,
                                           const std::vector<StressState>* balanced = nullptr);
 
-// Each phase's area-weighted histogram of the von Mises stress: `bins` equal bins over the
-// range of all cells, each point (the bin's centre, the share of the phase's area in it).
+// Each phase's weighted histogram of one value per cell (`weights` their areas or
+// volumes): `bins` equal bins over the range of all cells, each point (the bin's centre,
+// the share of the phase's weight in it).
+std::vector<std::vector<Vec2>> phase_histograms(const std::vector<double>& values, const std::vector<double>& weights,
+                                                const std::vector<int>& phase, int phases, int bins);
+// Each phase's area-weighted histogram of the von Mises stress (phase_histograms).
 std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins);
 

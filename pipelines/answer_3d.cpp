@@ -11,6 +11,7 @@
 #include "common/format.hpp"
 #include "export/picture.hpp"
 #include "export/section.hpp"
+#include "pipelines/result_pictures.hpp"
 
 namespace grainmesh {
 
@@ -53,11 +54,21 @@ Json voigt_json(const Voigt6& v) {
   return out;
 }
 
-// The section z = in.section_z of the solved fields: each tetrahedron cut shows the mean
-// of its corners' cells (one cell each on tetrahedra), sigma_xx and von Mises in MPa, in
-// stress_xx`suffix`.png and von_mises`suffix`.png.
-void write_section_pictures(const SolveInput3& in, const CaseFields& fields, const std::string& suffix = "") {
+// The pictures of a solved state (`load_case`): the section z = in.section_z, each
+// tetrahedron cut showing the mean of its corners' cells (one cell each on tetrahedra),
+// sigma_xx and von Mises in MPa, in stress_xx`suffix`.png and von_mises`suffix`.png; and
+// each phase's volume-weighted distribution of the cells' von Mises stress in
+// stress_histogram`suffix`.png.
+void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const std::string& load_case,
+                          const std::string& suffix) {
   if (in.picture_width == 0) return;
+  std::vector<double> cell_mises;
+  for (std::size_t c = 0; c < fields.stress.size(); ++c) cell_mises.push_back(von_mises_3d(fields.stress[c]));
+  std::vector<std::string> names;
+  for (const FoamPhase& p : in.e.phases) names.push_back(p.name);
+  write_stress_histogram(in.dir / ("stress_histogram" + suffix + ".png"), load_case,
+                         phase_histograms(cell_mises, in.fm.volume, in.fm.phase, static_cast<int>(names.size()), kHistogramBins),
+                         names, "volume");
   const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
   std::vector<double> xx, mises;
   for (const int t : s.tet) {
@@ -96,7 +107,7 @@ void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const 
   answer.effective["thermal"] = thermal;
   answer.stresses["thermal"] = phase_stresses_json(r.fields, in, &r.virial_stress);
   answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded_fields, in, &r.loaded_virial_stress);
-  write_section_pictures(in, r.fields, "_thermal");
+  write_state_pictures(in, r.fields, "thermal", "_thermal");
 }
 
 }  // namespace
@@ -107,7 +118,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
   Answer answer;
   answer.stresses["mixed"] = phase_stresses_json(h.fields, in);
-  write_section_pictures(in, h.fields);
+  write_state_pictures(in, h.fields, "mixed", "");
   Json& effective = answer.effective;
   effective = solve_json(h.run, in.dir);
   effective["boundary"] = "mixed";
@@ -150,7 +161,7 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
     if (r.load.delta_T == 0.0) answer.stresses[r.load.name] = phase_stresses_json(r.fields, in, &r.virial_stress);
   }
   effective["corrections"] = corrections;
-  write_section_pictures(in, h.cases[0].fields);
+  write_state_pictures(in, h.cases[0].fields, "xx", "");
   const Stiffness6 C = symmetric_part(h.stiffness);
   effective["stiffness"] = stiffness_json(C);
   effective["symmetry_error"] = symmetry_error(h.stiffness);

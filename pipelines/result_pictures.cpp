@@ -28,12 +28,18 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
                             const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh& m) {
   const int phases = static_cast<int>(t.phases.size());
-  Plot plot{.x_label = "von Mises stress (MPa), load case " + load_case, .y_label = "share of the phase's area",
+  write_stress_histogram(file, load_case, von_mises_histograms(cell_stress, m.mesh, m.phase, phases, kHistogramBins),
+                         phase_names(t), "area");
+}
+
+void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
+                            std::vector<std::vector<Vec2>> histograms, const std::vector<std::string>& phase_names,
+                            const std::string& of_what) {
+  Plot plot{.x_label = "von Mises stress (MPa), load case " + load_case, .y_label = "share of the phase's " + of_what,
             .series = {}};
-  auto histograms = von_mises_histograms(cell_stress, m.mesh, m.phase, phases, 40);
-  for (int p = 0; p < phases; ++p) {
+  for (std::size_t p = 0; p < histograms.size(); ++p) {
     for (Vec2& point : histograms[p]) point.x *= 1e-6;
-    plot.series.push_back({t.phases[p].name, histograms[p], true, p});
+    plot.series.push_back({phase_names[p], histograms[p], true, static_cast<int>(p)});
   }
   write_plot_png(file, plot);
 }

@@ -20,9 +20,16 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
                           const std::vector<StressState>& sigma, const ExportMesh& m, int picture_width, bool all,
                           const std::string& unit);
 
-// stress_histogram.png: each phase's distribution of von Mises stress in a load case.
+// stress_histogram.png: each phase's distribution of von Mises stress in a load case, in
+// kHistogramBins bins.
+inline constexpr int kHistogramBins = 40;
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
                             const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh& m);
+// The same picture from each phase's histogram of von Mises stress in Pa (phase_histograms),
+// its share `of_what` ("area", "volume").
+void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
+                            std::vector<std::vector<Vec2>> histograms, const std::vector<std::string>& phase_names,
+                            const std::string& of_what);
 
 std::vector<std::string> phase_names(const Tessellation& t);
 
