@@ -1,5 +1,6 @@
 #include "analysis/results_vtu.hpp"
 
+#include "analysis/phase_statistics_3d.hpp"
 #include "analysis/stress_measures.hpp"
 #include "export/vtu.hpp"
 
@@ -22,6 +23,24 @@ void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, c
     fields.push_back({"stress" + c.suffix, std::move(stress), 6});
     fields.push_back({"von_mises" + c.suffix, std::move(mises)});
     fields.push_back({"max_principal" + c.suffix, std::move(principal)});
+  }
+  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}});
+}
+
+void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
+                          const std::vector<std::string>& phase_names,
+                          const std::vector<std::pair<std::string, const CaseFields*>>& cases) {
+  std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
+  for (const auto& [suffix, f] : cases) {
+    std::vector<double> stress, mises;
+    for (std::size_t c = 0; c < f->stress.size(); ++c) {
+      const double* s = f->stress[c];  // OpenFOAM's xx xy xz yy yz zz into VTK's xx yy zz xy yz xz
+      for (const int k : {0, 3, 5, 1, 4, 2}) stress.push_back(s[k]);
+      mises.push_back(von_mises_3d(s));
+    }
+    fields.push_back({"displacement" + suffix, f->displacement.values, 3});
+    fields.push_back({"stress" + suffix, std::move(stress), 6});
+    fields.push_back({"von_mises" + suffix, std::move(mises)});
   }
   write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}});
 }

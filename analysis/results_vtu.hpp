@@ -9,6 +9,7 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
 #include "export/foam.hpp"
+#include "export/foam_3d.hpp"
 
 namespace grainmesh {
 
@@ -26,5 +27,11 @@ struct SolvedFields {
 // cannot be written.
 void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
                        const std::vector<SolvedFields>& cases);
+
+// The same over a 3D case's cells (VTK polyhedra, mesh units): grain, phase, and per case
+// (`suffix` and its fields, the whole stress) displacement, stress and von_mises.
+void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
+                          const std::vector<std::string>& phase_names,
+                          const std::vector<std::pair<std::string, const CaseFields*>>& cases);
 
 }  // namespace grainmesh

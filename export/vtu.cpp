@@ -7,6 +7,7 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
@@ -80,27 +81,10 @@ void add_cell_array(vtkUnstructuredGrid* grid, const std::filesystem::path& file
   grid->GetCellData()->AddArray(a);
 }
 
-// write_vtu, for triangles and for cells.
-template <typename Mesh>
-void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::vector<CellField>& fields,
-                const std::vector<FieldLabels>& labels) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, 0.0);
-
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(points);
-  const std::size_t cells = cell_count(mesh);
-  grid->Allocate(static_cast<vtkIdType>(cells));
-  std::vector<vtkIdType> ids;
-  for (std::size_t c = 0; c < cells; ++c) {
-    const std::span<const int> ring = cell_ring(mesh, c);
-    ids.assign(ring.begin(), ring.end());
-    grid->InsertNextCell(ring.size() == 3 ? VTK_TRIANGLE : VTK_POLYGON, static_cast<vtkIdType>(ids.size()), ids.data());
-  }
-
+// The cell fields (`cells` cells) and labels of write_vtu into the grid. Throws IoError
+// naming a field that has not one value (of its components) per cell.
+void add_fields(vtkUnstructuredGrid* grid, const std::filesystem::path& file, std::size_t cells,
+                const std::vector<CellField>& fields, const std::vector<FieldLabels>& labels) {
   for (const CellField& f : fields) {
     std::visit(
         [&](const auto& values) {
@@ -130,7 +114,29 @@ void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::
     for (std::size_t i = 0; i < l.labels.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), l.labels[i]);
     grid->GetFieldData()->AddArray(array);
   }
+}
 
+// write_vtu, for triangles and for cells.
+template <typename Mesh>
+void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::vector<CellField>& fields,
+                const std::vector<FieldLabels>& labels) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, 0.0);
+
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  const std::size_t cells = cell_count(mesh);
+  grid->Allocate(static_cast<vtkIdType>(cells));
+  std::vector<vtkIdType> ids;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::span<const int> ring = cell_ring(mesh, c);
+    ids.assign(ring.begin(), ring.end());
+    grid->InsertNextCell(ring.size() == 3 ? VTK_TRIANGLE : VTK_POLYGON, static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  add_fields(grid, file, cells, fields, labels);
   write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::lz4);
 }
 
@@ -221,6 +227,39 @@ void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
   write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
 }
 
+void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels) {
+  vtkNew<vtkUnstructuredGrid> grid;
+  set_points(grid, mesh.points3d);
+  // Each cell's faces as [n, ids...], turned outward: an owner's as stored, a neighbour's reversed.
+  std::vector<std::vector<vtkIdType>> stream(static_cast<std::size_t>(mesh.cells));
+  std::vector<vtkIdType> count(static_cast<std::size_t>(mesh.cells), 0);
+  for (int f = 0; f < mesh.faces(); ++f) {
+    const auto begin = mesh.face_points.begin() + mesh.face_start[f], end = mesh.face_points.begin() + mesh.face_start[f + 1];
+    for (const int side : {0, 1}) {
+      if (side == 1 && f >= mesh.internal_faces()) break;
+      const std::size_t c = static_cast<std::size_t>(side == 0 ? mesh.owner[f] : mesh.neighbour[f]);
+      stream[c].push_back(static_cast<vtkIdType>(end - begin));
+      if (side == 0) stream[c].insert(stream[c].end(), begin, end);
+      else stream[c].insert(stream[c].end(), std::make_reverse_iterator(end), std::make_reverse_iterator(begin));
+      ++count[c];
+    }
+  }
+  grid->Allocate(static_cast<vtkIdType>(mesh.cells));
+  std::vector<vtkIdType> ids;
+  for (std::size_t c = 0; c < stream.size(); ++c) {
+    ids.clear();
+    for (std::size_t k = 0; k < stream[c].size(); k += static_cast<std::size_t>(stream[c][k]) + 1)
+      ids.insert(ids.end(), stream[c].begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                 stream[c].begin() + static_cast<std::ptrdiff_t>(k) + 1 + stream[c][k]);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(ids.size()), ids.data(), count[c], stream[c].data());
+  }
+  add_fields(grid, file, static_cast<std::size_t>(mesh.cells), fields, labels);
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::lz4);
+}
+
 void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
   vtkNew<vtkUnstructuredGrid> grid;
   set_points(grid, t.vertices);
@@ -253,6 +292,42 @@ void write_tessellation_vtu(const std::filesystem::path& file, const Tessellatio
   write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
 }
 
+namespace {
+
+// The volume of 3D cell c of `grid`: a tetrahedron's signed volume (VTK's orientation is
+// tet_volume's), a polyhedron's (1/6) sum over its faces' fan triangles (mean, a, b) of
+// mean . (a x b), with its faces as they turn.
+double solid_volume(vtkUnstructuredGrid* grid, vtkIdType c) {
+  auto point = [&](vtkIdType id) {
+    double x[3];
+    grid->GetPoint(id, x);
+    return Vec3{x[0], x[1], x[2]};
+  };
+  if (grid->GetCellType(c) == VTK_TETRA) {
+    vtkIdType n = 0;
+    const vtkIdType* v = nullptr;
+    grid->GetCellPoints(c, n, v);
+    return tet_volume(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
+  }
+  vtkNew<vtkIdList> stream;
+  grid->GetFaceStream(c, stream);
+  double volume = 0.0;
+  vtkIdType k = 1;
+  for (vtkIdType f = 0; f < stream->GetId(0); ++f) {
+    const vtkIdType n = stream->GetId(k++);
+    std::vector<Vec3> p;
+    Vec3 mean{};
+    for (vtkIdType i = 0; i < n; ++i) {
+      p.push_back(point(stream->GetId(k++)));
+      mean += p.back() / static_cast<double>(n);
+    }
+    for (std::size_t i = 0; i < p.size(); ++i) volume += dot(mean, cross(p[i], p[(i + 1) % p.size()])) / 6.0;
+  }
+  return volume;
+}
+
+}  // namespace
+
 VtuContents read_vtu(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw IoError(file.string() + ": no such file");
   // VTK's XML parser logs its own complaints to stderr; ours is the one-line error below.
@@ -274,6 +349,10 @@ VtuContents read_vtu(const std::filesystem::path& file) {
   }
   std::vector<int> ring;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    if (grid->GetCellType(c) == VTK_POLYHEDRON || grid->GetCellType(c) == VTK_TETRA) {
+      out.solid_volumes.push_back(solid_volume(grid, c));
+      continue;
+    }
     if (grid->GetCellType(c) != VTK_TRIANGLE && grid->GetCellType(c) != VTK_POLYGON)
       throw IoError(file.string() + ": cell " + std::to_string(c) + " is neither a triangle nor a polygon");
     vtkIdType n = 0;

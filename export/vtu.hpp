@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "export/foam.hpp"
 #include "mesh/cell_mesh.hpp"
 #include "mesh/tetmesh.hpp"
 #include "mesh/trimesh.hpp"
@@ -39,10 +40,19 @@ void write_vtu(const std::filesystem::path& file, const TriMesh& mesh, const std
 void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels = {});
 
+// The cells of a 3D polyMesh (points3d) as VTK polyhedra, each face turned outward, with
+// cell fields and labels as above.
+void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const std::vector<CellField>& fields,
+               const std::vector<FieldLabels>& labels = {});
+
 // Reads a VTU written by write_vtu: points, cells (triangles and polygons), every cell array (integer arrays
-// as int, the rest as double) and every string array of the field data. Throws IoError.
+// as int, the rest as double) and every string array of the field data; 3D cells
+// (polyhedra, tetrahedra) by their volumes alone. Throws IoError.
 struct VtuContents {
   CellMesh mesh;  // triangles and polygons as written
+  // Each 3D cell's volume from its faces as written (the divergence theorem, each face
+  // fanned from its corners' mean): negative where faces turn inward.
+  std::vector<double> solid_volumes;
   std::vector<CellField> fields;
   std::vector<FieldLabels> labels;
   // The integer scalar cell array `name` (e.g. "grain", "phase"), or nullptr.

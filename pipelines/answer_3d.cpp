@@ -1,12 +1,14 @@
 #include "pipelines/answer_3d.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <thread>
 #include <tuple>
 
 #include "analysis/bounds_3d.hpp"
 #include "analysis/phase_statistics_3d.hpp"
+#include "analysis/results_vtu.hpp"
 #include "analysis/thermal_3d.hpp"
 #include "common/format.hpp"
 #include "export/picture.hpp"
@@ -47,6 +49,12 @@ Json stiffness_json(const Stiffness6& c) {
   return out;
 }
 
+std::vector<std::string> phase_names(const SolveInput3& in) {
+  std::vector<std::string> names;
+  for (const FoamPhase& p : in.e.phases) names.push_back(p.name);
+  return names;
+}
+
 // {xx, yy, zz, yz, xz, xy}.
 Json voigt_json(const Voigt6& v) {
   Json out;
@@ -64,8 +72,7 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
   if (in.picture_width == 0) return;
   std::vector<double> cell_mises;
   for (std::size_t c = 0; c < fields.stress.size(); ++c) cell_mises.push_back(von_mises_3d(fields.stress[c]));
-  std::vector<std::string> names;
-  for (const FoamPhase& p : in.e.phases) names.push_back(p.name);
+  const std::vector<std::string> names = phase_names(in);
   write_stress_histogram(in.dir / ("stress_histogram" + suffix + ".png"), load_case,
                          phase_histograms(cell_mises, in.fm.volume, in.fm.phase, static_cast<int>(names.size()), kHistogramBins),
                          names, "volume");
@@ -93,8 +100,8 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
 // tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
-void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness6& C, const SolveInput3& in,
-                           std::vector<std::string>& warnings) {
+ThermalResidual3 add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness6& C,
+                                       const SolveInput3& in, std::vector<std::string>& warnings) {
   const ThermalResidual3 r = thermal_residual_3d(h, C);
   answer.effective["thermal_expansion"] = voigt_json(r.expansion);
   Json thermal{{"delta_T", r.delta_T}};
@@ -108,6 +115,21 @@ void add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const 
   answer.stresses["thermal"] = phase_stresses_json(r.fields, in, &r.virial_stress);
   answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded_fields, in, &r.loaded_virial_stress);
   write_state_pictures(in, r.fields, "thermal", "_thermal");
+  return r;
+}
+
+// results.vtu (unless pictures are off) of the periodic cases: each mechanical case's
+// fields suffixed _NAME, the thermal residual's _thermal and, cooled then pulled, _thermal_xx.
+void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised3& h, const ThermalResidual3* thermal) {
+  if (in.picture_width == 0) return;
+  std::vector<std::pair<std::string, const CaseFields*>> cases;
+  for (const LoadCaseResult3& r : h.cases)
+    if (r.load.delta_T == 0.0) cases.push_back({"_" + r.load.name, &r.fields});
+  if (thermal != nullptr) {
+    cases.push_back({"_thermal", &thermal->fields});
+    cases.push_back({"_thermal_xx", &thermal->loaded_fields});
+  }
+  write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), cases);
 }
 
 }  // namespace
@@ -119,6 +141,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   Answer answer;
   answer.stresses["mixed"] = phase_stresses_json(h.fields, in);
   write_state_pictures(in, h.fields, "mixed", "");
+  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), {{"", &h.fields}});
   Json& effective = answer.effective;
   effective = solve_json(h.run, in.dir);
   effective["boundary"] = "mixed";
@@ -169,7 +192,9 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   effective["engineering"] = {{"E_x", k.E_x},     {"E_y", k.E_y},     {"E_z", k.E_z},     {"G_yz", k.G_yz},
                               {"G_xz", k.G_xz},   {"G_xy", k.G_xy},   {"nu_xy", k.nu_xy}, {"nu_xz", k.nu_xz},
                               {"nu_yz", k.nu_yz}, {"universal_anisotropy", k.universal_anisotropy}};
-  if (in.foam.delta_T != 0.0) add_thermal_answer_3d(answer, h, C, in, warnings);
+  std::optional<ThermalResidual3> thermal;
+  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, C, in, warnings);
+  write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);
   effective["bulk_modulus"] = bulk_modulus_3d(C);
   effective["shear_modulus"] = shear_modulus_3d(C);
   const std::vector<double> fractions =

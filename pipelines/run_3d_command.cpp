@@ -122,8 +122,8 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
               out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/",
               !pictures ? ""
               : foam.delta_T != 0.0 && solve
-                  ? "stress_xx.png, von_mises.png, stress_histogram.png and their _thermal.png, "
-                  : "stress_xx.png, von_mises.png, stress_histogram.png, ");
+                  ? "results.vtu, stress_xx.png, von_mises.png, stress_histogram.png and their _thermal.png, "
+                  : "results.vtu, stress_xx.png, von_mises.png, stress_histogram.png, ");
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
 }

@@ -7,10 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
+#include "export/vtu.hpp"
 #include "helpers.hpp"
 #include "pipelines/laminate.hpp"
 
@@ -97,6 +99,16 @@ TEST_CASE("a 3D cell of one material cooled: no residual stress, the free expans
     CHECK(std::abs(s["hydrostatic"]["max"].get<double>()) < 1e-6 * scale);
     for (const char* c : kVoigt) CHECK(std::abs(s["mean"][c].get<double>()) < 1e-6 * scale);
   }
+  // results.vtu: every cell, each load case's fields and the residual state's, which is zero.
+  const VtuContents results = read_vtu(dir / "out" / "results.vtu");
+  CHECK(results.solid_volumes.size() == report["case_cells"]["cells"].get<std::size_t>());
+  for (const char* name : {"stress_xx", "von_mises_xy", "displacement_zz", "stress_thermal", "stress_thermal_xx"}) {
+    INFO(name);
+    CHECK(std::any_of(results.fields.begin(), results.fields.end(), [&](const CellField& f) { return f.name == name; }));
+  }
+  for (const CellField& f : results.fields)
+    if (f.name == "stress_thermal")
+      for (const double v : std::get<std::vector<double>>(f.values)) CHECK(std::abs(v) < 1e-6 * scale);
   CHECK(fs::exists(dir / "out" / "case_thermal" / "0" / "T"));
   CHECK(fs::exists(dir / "out" / "case_thermal" / "0" / "alpha"));
   CHECK(fs::file_size(dir / "out" / "von_mises_thermal.png") > 1000);
