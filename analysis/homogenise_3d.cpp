@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/phase_statistics_3d.hpp"
 #include "analysis/traction.hpp"
 #include "common/errors.hpp"
 #include "common/side_by_side.hpp"
@@ -16,27 +17,30 @@ constexpr int kVoigt[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
 
 // The mean stress of a solved case from the forces through right, top and front: row i of
 // the stress is the force through the side normal to axis i over its area; the shears
-// from the two sides that carry each, averaged (equal in the continuum, nearly so here).
-// Also each cell's virial stress, into r.virial_stress.
-Voigt6 mean_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
-                   const FoamMesh3& fm, const FoamOptions& o, LoadCaseResult3& r) {
+// from the two sides that carry each, averaged (equal in the continuum, nearly so here);
+// and each cell's virial stress, from the same face forces.
+struct Balanced3 {
+  Voigt6 mean{};
+  FieldValues virial;
+};
+Balanced3 periodic_stress_3d(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
+                             const FoamMesh3& fm, const FoamOptions& o) {
   const FoamCell cell = foam_cell(m);
   // The plain form's face force is S . sigma_f: no gradient needed (nor written).
   const FieldValues grad = compact_normal_stress(cell, o)
                                ? read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(fm.mesh.cells))
                                : FieldValues{};
   const DiscreteTraction traction(fm, cell, o, fields.displacement, grad, fields.stress);
-  r.virial_stress = traction.virial_stress_tensor();
   const PolyMesh& pm = fm.mesh;
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec3 box = m.box;
   const std::array<Vec3, 3> row{traction.patch_force(patch_index(pm, "right")) / (box.y * box.z * s2),
                                 traction.patch_force(patch_index(pm, "top")) / (box.x * box.z * s2),
                                 traction.patch_force(patch_index(pm, "front")) / (box.x * box.y * s2)};
-  Voigt6 s{};
+  Balanced3 out{.mean = {}, .virial = traction.virial_stress_tensor()};
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) s[kVoigt[i][j]] += (i == j ? 1.0 : 0.5) * row[i][j];
-  return s;
+    for (int j = 0; j < 3; ++j) out.mean[kVoigt[i][j]] += (i == j ? 1.0 : 0.5) * row[i][j];
+  return out;
 }
 
 // The volume average of the cell stresses (OpenFOAM's order xx xy xz yy yz zz).
@@ -66,15 +70,15 @@ std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOp
     cases.push_back(c);
   }
   if (o.delta_T == 0.0) return cases;
-  double volume = 0.0, free = 0.0;
-  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
-    const auto& v = m.mesh.tets[t];
+  std::vector<double> volume;
+  for (const auto& v : m.mesh.tets) {
     const std::vector<Vec3>& p = m.mesh.points;
-    const double dv = tet_volume(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
-    volume += dv;
-    free += dv * m.phases[static_cast<std::size_t>(m.phase[t])].alpha;
+    volume.push_back(tet_volume(p[v[0]], p[v[1]], p[v[2]], p[v[3]]));
   }
-  const double strain = free / volume * o.delta_T;
+  const std::vector<double> fraction = phase_volume_fractions(volume, m.phase, static_cast<int>(m.phases.size()));
+  double free = 0.0;
+  for (std::size_t p = 0; p < fraction.size(); ++p) free += fraction[p] * m.phases[p].alpha;
+  const double strain = free * o.delta_T;
   cases.push_back(LoadCase3{"thermal", {strain, strain, strain, 0.0, 0.0, 0.0}, o.delta_T});
   return cases;
 }
@@ -106,7 +110,9 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
     r.fields = read_case_fields(r.run.result_dir, m.phases, fm.phase, ok);
-    r.stress = mean_stress(r.run.result_dir, r.fields, m, fm, ok, r);
+    Balanced3 balanced = periodic_stress_3d(r.run.result_dir, r.fields, m, fm, ok);
+    r.stress = balanced.mean;
+    r.virial_stress = std::move(balanced.virial);
     r.volume_average = volume_average(r.fields, fm);
   });
   for (int k = 0; k < 6; ++k) {

@@ -1,8 +1,8 @@
 #include "pipelines/answer_3d.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <thread>
 #include <tuple>
 
@@ -74,7 +74,8 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
   for (std::size_t c = 0; c < fields.stress.size(); ++c) cell_mises.push_back(von_mises_3d(fields.stress[c]));
   const std::vector<std::string> names = phase_names(in);
   write_stress_histogram(in.dir / ("stress_histogram" + suffix + ".png"), load_case,
-                         phase_histograms(cell_mises, in.fm.volume, in.fm.phase, static_cast<int>(names.size()), kHistogramBins),
+                         phase_histograms(cell_mises, in.fm.volume, in.fm.phase, static_cast<int>(names.size()),
+                                          kHistogramBins),
                          names, "volume");
   const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
   std::vector<double> xx, mises;
@@ -89,11 +90,13 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
     mises.push_back(0.25e-6 * sum_mises);
   }
   const std::string at = ", z = " + to_text(in.section_z, 3) + (in.unit.empty() ? "" : " " + in.unit);
+  // A state other than a load case's own (the thermal residual) says so in its titles.
+  const std::string state = suffix.empty() ? "" : "residual ";
   for (const auto& [name, field, title] : {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)"},
                                            std::tuple{"von_mises", &mises, "von Mises (MPa)"}})
     write_mesh_png(in.dir / (std::string(name) + suffix + ".png"), s.cells,
                    {.width_px = in.picture_width, .fill_by = {}, .outline_by = s.grain, .view = {}, .field = *field,
-                    .field_name = (suffix.empty() ? "" : "residual ") + std::string(title) + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
+                    .field_name = state + title + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
 }
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx ... xy} (1/K,
