@@ -64,8 +64,8 @@ Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFiel
   const DiscreteTraction traction(pm, m, o, fields.displacement,
                                   read_cell_field(result_dir / kGradientField, "tensor", cells), fields.stress);
   const double s2 = o.convert_to_meters * o.convert_to_meters;
-  const Vec3 right = traction.patch_force(patch_index(pm, "right")) / (m.cell.height() * pm.thickness * s2);
-  const Vec3 top = traction.patch_force(patch_index(pm, "top")) / (m.cell.width() * pm.thickness * s2);
+  const Vec3 right = traction.side_force("right") / (m.cell.height() * pm.thickness * s2);
+  const Vec3 top = traction.side_force("top") / (m.cell.width() * pm.thickness * s2);
   // The shear through right and through top: equal in the continuum, nearly so here.
   return {{right.x, top.y, 0.5 * (right.y + top.x)}, traction.virial_stress()};
 }

@@ -31,12 +31,11 @@ Balanced3 periodic_stress_3d(const std::filesystem::path& result_dir, const Case
                                ? read_cell_field(result_dir / kGradientField, "tensor", static_cast<std::size_t>(fm.mesh.cells))
                                : FieldValues{};
   const DiscreteTraction traction(fm, cell, o, fields.displacement, grad, fields.stress);
-  const PolyMesh& pm = fm.mesh;
   const double s2 = o.convert_to_meters * o.convert_to_meters;
   const Vec3 box = m.box;
-  const std::array<Vec3, 3> row{traction.patch_force(patch_index(pm, "right")) / (box.y * box.z * s2),
-                                traction.patch_force(patch_index(pm, "top")) / (box.x * box.z * s2),
-                                traction.patch_force(patch_index(pm, "front")) / (box.x * box.y * s2)};
+  const std::array<Vec3, 3> row{traction.side_force("right") / (box.y * box.z * s2),
+                                traction.side_force("top") / (box.x * box.z * s2),
+                                traction.side_force("front") / (box.x * box.y * s2)};
   Balanced3 out{.mean = {}, .virial = traction.virial_stress_tensor()};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) out.mean[kVoigt[i][j]] += (i == j ? 1.0 : 0.5) * row[i][j];

@@ -128,21 +128,41 @@ Followed run_until_converged(const SolveJob& job, const FoamCell& cell, const Fo
   return f;
 }
 
+// Whether the solve blew up: the monitor saw it diverge, or OpenFOAM stopped on a
+// floating-point overflow.
+bool diverged(const SolveJob& job, const Followed& f) {
+  if (f.monitor.state() == SolveMonitor::State::diverging || f.status == 128 + SIGFPE) return true;
+  return read_text_file(job.log, "the solver's log").find("sigFpe") != std::string::npos;
+}
+
+// What to try when a solve fails: what the case's own choices suggest.
+std::string advice(const FoamCell& cell, const FoamOptions& o) {
+  const double contrast = stiffness_contrast(cell.phases, o);
+  if (cell.dimensions() == 3)
+    return o.cells == FoamOptions::Cells::polygons
+               ? ": check the phases' moduli and the mesh (report.json: mesh.min_dihedral_deg); a finer mesh "
+                 "(mesh.tets_per_grain) may help"
+               : ": export.cells = tetrahedra solves solidDisplacementFoam's plain form, which does not converge on "
+                 "every mesh and stiffness contrast; use export.cells = polyhedra (the default)";
+  if (harmonic_stiffness(cell, o) && contrast > 3.0)
+    return ": the stiffness contrast " + to_text(contrast, 3) +
+           " is too high for export.stiffness_interpolation = harmonic; use auto or linear";
+  if (harmonic_stiffness(cell, o))
+    return ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
+  return ": check the phases' moduli and the mesh quality (q_min); a finer mesh (mesh.triangles_per_grain) may help";
+}
+
 // Throws SolveError, with what to do about it, unless the solve converged.
 void check_converged(const SolveJob& job, const Followed& f, const FoamCell& cell, const FoamOptions& o) {
   const SolveMonitor& monitor = f.monitor;
-  const std::string advice =
-      harmonic_stiffness(cell, o) && stiffness_contrast(cell.phases, o) > 3.0
-          ? ": the stiffness contrast " + to_text(stiffness_contrast(cell.phases, o), 3) +
-                " is too high for export.stiffness_interpolation = harmonic; use auto or linear"
-          : ": check the phases' moduli and the mesh quality (q_min), or try export.stiffness_interpolation = linear";
+  const std::string advice = grainmesh::advice(cell, o);
   const SolveMonitor::State state = monitor.state();
   if (state == SolveMonitor::State::diverging || state == SolveMonitor::State::stalled)
     throw SolveError(job.field + ": solidDisplacementFoam " +
                      (state == SolveMonitor::State::diverging ? "diverges: " : "stalls: ") + monitor.diagnosis() +
                      advice + job.see);
   const std::string text = read_text_file(job.log, "the solver's log");
-  if (f.status == 128 + SIGFPE || text.find("sigFpe") != std::string::npos)
+  if (diverged(job, f))
     throw SolveError(job.field + ": solidDisplacementFoam diverges: floating-point overflow after " +
                      std::to_string(monitor.corrections()) + " corrections" + advice + job.see);
   if (f.status != 0 || text.find("\nEnd") == std::string::npos)
@@ -173,8 +193,23 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell,
                      .see = "; see " + (shown / "log.solidDisplacementFoam").string()};
   SolveRun r;
   if (job.parallel) r.decompose_seconds = run_utility(job, {"decomposePar", "-force"});
-  const Followed f = run_until_converged(job, cell, o, r);
-  check_converged(job, f, cell, o);
+  FoamOptions used = o;
+  Followed f = run_until_converged(job, cell, used, r);
+  r.linear_solver = linear_solver_name(linear_solver(cell, used));
+  if (diverged(job, f) && linear_solver(cell, used) == FoamOptions::LinearSolver::multigrid) {
+    // Multigrid blew up (its coarsest levels are the most fragile): the case solved again
+    // from its start with conjugate gradients, the failed run's log kept beside.
+    r.linear_solver_fallback = "GAMG diverged after " + std::to_string(f.total) + " corrections (log.solidDisplacementFoam.GAMG); solved again with PCG";
+    std::filesystem::rename(job.log, job.log.string() + ".GAMG");
+    remove_times_after(case_dir, 0.0);
+    for (int p = 0; job.parallel && p < o.processes; ++p) remove_times_after(case_dir / ("processor" + std::to_string(p)), 0.0);
+    used.linear_solver = FoamOptions::LinearSolver::conjugate_gradients;
+    write_fv_solution(case_dir, cell, used);
+    write_control_dict(case_dir, cell, used, kMaxCorrections);
+    f = run_until_converged(job, cell, used, r);
+    r.linear_solver = linear_solver_name(FoamOptions::LinearSolver::conjugate_gradients);
+  }
+  check_converged(job, f, cell, used);
   if (job.parallel) r.reconstruct_seconds = run_utility(job, {"reconstructPar", "-latestTime"});
   r.corrections = f.total;
   r.final_residual = f.monitor.measure();

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "common/errors.hpp"
+#include "export/pin_translation.hpp"
 
 namespace grainmesh {
 
@@ -110,7 +111,13 @@ DiscreteTraction::Neighbour DiscreteTraction::neighbour(int f) const {
   return {pm_.owner[other.start + (f - patch.start)], -(scale_ * patch.separation), jump_[p]};
 }
 
+bool DiscreteTraction::pinned(int f) const {
+  const int p = patch_of_face_[f];
+  return p >= 0 && is_pin_patch(pm_.patches[p]);
+}
+
 Vec3 DiscreteTraction::face_force(int f) const {
+  if (pinned(f)) return -1.0 * faces_force(pm_.owner[f], f);
   const Neighbour nb = neighbour(f);
   if (nb.cell < 0) throw GeometryError("face " + std::to_string(f) + " is neither internal nor cyclic");
   const int P = pm_.owner[f], N = nb.cell;
@@ -147,27 +154,34 @@ Vec3 DiscreteTraction::face_force(int f) const {
   return F;
 }
 
-Vec3 DiscreteTraction::patch_force(int patch) const {
-  const PolyMesh::Patch& p = pm_.patches[patch];
+Vec3 DiscreteTraction::side_force(const std::string& side) const {
   Vec3 sum{};
-  for (int f = p.start; f < p.start + p.size; ++f) sum += face_force(f);
+  for (const std::string& name : {side, pin_patch_of(side)}) {
+    const int patch = patch_index(pm_, name);
+    if (patch < 0) continue;
+    const PolyMesh::Patch& p = pm_.patches[patch];
+    for (int f = p.start; f < p.start + p.size; ++f) sum += face_force(f);
+  }
   return sum;
 }
 
-Vec3 DiscreteTraction::cell_imbalance(int c) const {
-  // Every face of every cell, once: a slow scan, for checks.
+Vec3 DiscreteTraction::faces_force(int c, int except) const {
+  // Every face of the mesh looked at: a slow scan, for checks and the two pinned faces.
   Vec3 sum{};
   for (int f = 0; f < pm_.faces(); ++f) {
     const bool owned = pm_.owner[f] == c, neighboured = f < pm_.internal_faces() && pm_.neighbour[f] == c;
-    if (!owned && !neighboured) continue;
+    if (f == except || (!owned && !neighboured)) continue;
     const int p = patch_of_face_[f];
     if (p >= 0 && pm_.patches[p].type == "empty") continue;
-    if (p >= 0 && pm_.patches[p].type != "cyclic") return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
+    if (p >= 0 && pm_.patches[p].type != "cyclic" && !(pinned(f) && except < 0))
+      return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
     const Vec3 F = face_force(f);
     sum += owned ? F : -F;
   }
   return sum;
 }
+
+Vec3 DiscreteTraction::cell_imbalance(int c) const { return faces_force(c, -1); }
 
 FieldValues DiscreteTraction::virial_stress_tensor() const {
   FieldValues out{.width = 6, .values = std::vector<double>(6 * static_cast<std::size_t>(pm_.cells), 0.0)};
@@ -180,13 +194,13 @@ FieldValues DiscreteTraction::virial_stress_tensor() const {
   for (int f = 0; f < pm_.faces(); ++f) {
     const int p = patch_of_face_[f];
     if (p >= 0 && pm_.patches[p].type == "empty") continue;
-    if (p >= 0 && pm_.patches[p].type != "cyclic")
-      throw GeometryError("virial_stress: patch " + pm_.patches[p].name + " is neither cyclic nor empty");
+    if (p >= 0 && pm_.patches[p].type != "cyclic" && !pinned(f))
+      throw GeometryError("virial_stress: patch " + pm_.patches[p].name + " is neither cyclic, pinned nor empty");
     const int P = pm_.owner[f];
     const Vec3 F = face_force(f);
     const Vec3 centre = face_geometry(pm_, f, scale_, thickness_, centre_[P]).centre;
     add(P, centre, F);
-    if (p < 0) add(pm_.neighbour[f], centre, -F);  // a cyclic face's partner adds its own
+    if (p < 0) add(pm_.neighbour[f], centre, -F);  // a cyclic or pinned face's partner adds its own
   }
   for (int c = 0; c < pm_.cells; ++c)
     for (int i = 0; i < 6; ++i) out.values[6 * static_cast<std::size_t>(c) + static_cast<std::size_t>(i)] /= volume_[c];

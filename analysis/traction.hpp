@@ -10,7 +10,8 @@
 //
 // On a patch where OpenFOAM writes sigma's face values (a plain patch) the force is
 // S . sigma_f, which is the same flux; on a cyclic patch (which writes none) it is
-// computed here from the cell fields D, grad(D) and sigmaD.
+// computed here from the cell fields D, grad(D) and sigmaD. Through a pinned face of a
+// periodic cell (export/pin_translation.hpp) it is what balances its cell's other faces.
 #pragma once
 
 #include <array>
@@ -36,12 +37,15 @@ class DiscreteTraction {
   DiscreteTraction(const FoamMesh3& m, const FoamCell& cell, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
 
-  // The force (N; z zero in 2D) through face f out of its owner: internal and cyclic faces.
+  // The force (N; z zero in 2D) through face f out of its owner: internal, cyclic and
+  // pinned faces.
   Vec3 face_force(int f) const;
-  // The sum over a cyclic patch's faces.
-  Vec3 patch_force(int patch) const;
+  // The force through a side of a cyclic case's cell ("left" ... "front"): the sum over its
+  // patch's faces and its pinned face's.
+  Vec3 side_force(const std::string& side) const;
   // The sum of the forces out of cell c through all its faces, where every face of it is
-  // internal, cyclic or empty (else NaN): zero at convergence.
+  // internal, cyclic, pinned or empty (else NaN): zero at convergence (a pinned face's
+  // cell by construction).
   Vec3 cell_imbalance(int c) const;
   // Each cell's stress as its face forces give it (2D cases): the virial (1 / V) sum over
   // its faces of (x_f - x_c) F_f, symmetrised (xx, yy, xy; zz 0), on a mesh whose faces
@@ -66,6 +70,10 @@ class DiscreteTraction {
     Vec3 jump{};   // D seen across the face = D of the neighbour - jump
   };
   Neighbour neighbour(int f) const;
+  // The sum of the forces out of cell c through its faces but `except`; NaN where one is
+  // neither internal, cyclic, pinned nor empty.
+  Vec3 faces_force(int c, int except) const;
+  bool pinned(int f) const;
 
   const PolyMesh& pm_;
   double scale_, thickness_;

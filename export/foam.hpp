@@ -108,7 +108,12 @@ struct FoamOptions {
   // The cells (export.cells): the mesh's triangles, or the polygons of its dual split at
   // grain boundaries (polygon_cells).
   enum class Cells { triangles, polygons } cells = Cells::triangles;
+  // The linear solver of D's equation: automatic is multigrid (GAMG: fastest) in 2D and
+  // conjugate gradients (PCG with DIC) in 3D, where GAMG blew up; the solve falls back on
+  // conjugate gradients when multigrid diverges (analysis/solve.cpp).
+  enum class LinearSolver { automatic, multigrid, conjugate_gradients } linear_solver = LinearSolver::automatic;
 };
+
 
 // The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
 // `mpirun --oversubscribe -np N solidDisplacementFoam -parallel` (Open MPI; run as root,
@@ -125,6 +130,8 @@ struct PolyMesh {
     int start = 0, size = 0;
     std::string neighbour_patch;   // cyclic only
     Vec3 separation{};             // cyclic only: neighbour = this + separation (mesh units)
+    Vec3 at{};                     // a pinned face's patch (pin_translation.hpp): where its
+                                   // displacement is fixed, mesh units from the cell's low corner
   };
   struct FaceZone {
     std::string name;
@@ -200,6 +207,14 @@ bool harmonic_stiffness(const FoamCell& cell, const FoamOptions& options);
 inline bool compact_normal_stress(const FoamCell& cell, const FoamOptions& options) {
   return cell.dimensions() == 2 || options.cells == FoamOptions::Cells::polygons;
 }
+
+// The linear solver a case uses: options.linear_solver, automatic resolved by the cell's
+// dimensions.
+FoamOptions::LinearSolver linear_solver(const FoamCell& cell, const FoamOptions& options);
+// Its name in OpenFOAM (GAMG, PCG).
+const char* linear_solver_name(FoamOptions::LinearSolver solver);
+// Writes DIR/system/fvSolution of the case write_foam_case writes.
+void write_fv_solution(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& options);
 
 // The phases' elastic constants as the case carries them.
 std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases);

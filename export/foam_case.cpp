@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam_file.hpp"
+#include "export/pin_translation.hpp"
 
 namespace grainmesh {
 
@@ -45,12 +46,15 @@ void write_displacement(const std::filesystem::path& dir, const FoamCell& cell, 
   const std::array<double, 6> e = o.cyclic ? cyclic_strain(cell, o)
                                   : o.traction == 0.0 ? std::array<double, 6>{o.displacement / cell.size.x}
                                                       : std::array<double, 6>{};
+  // The displacement of the mean strain at c (mesh units from the cell's low corner), metres.
+  auto affine = [&](Vec3 c) {
+    return o.convert_to_meters * Vec3{e[0] * c.x + e[5] * c.y + e[4] * c.z, e[5] * c.x + e[1] * c.y + e[3] * c.z,
+                                      e[4] * c.x + e[3] * c.y + e[2] * c.z};
+  };
   std::vector<double> initial(3 * static_cast<std::size_t>(pm.cells), 0.0);
   for (int t = 0; t < pm.cells; ++t) {
-    const Vec3 c = centroid[t];
-    initial[3 * t] = (e[0] * c.x + e[5] * c.y + e[4] * c.z) * o.convert_to_meters;
-    initial[3 * t + 1] = (e[5] * c.x + e[1] * c.y + e[3] * c.z) * o.convert_to_meters;
-    initial[3 * t + 2] = (e[4] * c.x + e[3] * c.y + e[2] * c.z) * o.convert_to_meters;
+    const Vec3 u = affine(centroid[t]);
+    initial[3 * t] = u.x, initial[3 * t + 1] = u.y, initial[3 * t + 2] = u.z;
   }
   FoamFile D(dir / "0/D", "volVectorField", "0", "D", o.binary);
   D.text("dimensions      [0 1 0 0 0 0 0];\n\ninternalField   nonuniform List<vector> ").vectors(initial);
@@ -58,7 +62,13 @@ void write_displacement(const std::filesystem::path& dir, const FoamCell& cell, 
   for (const PolyMesh::Patch& p : pm.patches) {
     std::string entry = constraint_entry(p);
     const Vec3 jump = p.type == "cyclic" ? cyclic_jump(e, p.name, cell, o.convert_to_meters) : Vec3{};
-    if (p.type == "cyclic" && jump != Vec3{}) {
+    if (is_pin_patch(p)) {
+      // The face fixing the periodic cell's translation (pin_translation.hpp): the mean
+      // strain's displacement there.
+      const Vec3 u = affine(p.at);
+      entry = "type            fixedValue;\n        value           uniform (" + number_text(u.x + 0.0) + " " +
+              number_text(u.y + 0.0) + " " + number_text(u.z + 0.0) + ");";
+    } else if (p.type == "cyclic" && jump != Vec3{}) {
       // Periodic: D jumps across the pair by the macroscopic strain times the separation
       // (given on the low patch of the pair), so the mean strain is the one imposed.
       const bool low = p.name == "left" || p.name == "bottom" || p.name == "back";
@@ -124,16 +134,34 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
                  "laplacianSchemes\n{\n    default         none;\n" + stiffness +
                  "    laplacian(DT,T) Gauss linear corrected;\n}\n\n"
                  "interpolationSchemes\n{\n    default         linear;\n}\n\nsnGradSchemes\n{\n    default         none;\n}\n");
+  write_fv_solution(dir, cell, o);
+}
+
+}  // namespace
+
+FoamOptions::LinearSolver linear_solver(const FoamCell& cell, const FoamOptions& o) {
+  if (o.linear_solver != FoamOptions::LinearSolver::automatic) return o.linear_solver;
+  return cell.dimensions() == 2 ? FoamOptions::LinearSolver::multigrid : FoamOptions::LinearSolver::conjugate_gradients;
+}
+
+const char* linear_solver_name(FoamOptions::LinearSolver solver) {
+  return solver == FoamOptions::LinearSolver::multigrid ? "GAMG" : "PCG";
+}
+
+void write_fv_solution(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& o) {
+  const bool thermal = o.delta_T != 0.0;
+  const bool multigrid = linear_solver(cell, o) == FoamOptions::LinearSolver::multigrid;
   write_text(dir / "system/fvSolution",
              dictionary_header("system", "fvSolution") +
                  "solvers\n{\n    D\n    {\n" +
-                 (cell.dimensions() == 2
-                      ? "        solver          GAMG;\n        tolerance       1e-12;\n"
-                        "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n"
-                      : "        // Not GAMG: a fully periodic cell's system is singular, and in 3D GAMG blew up\n"
-                        "        // on the rounding noise of a component whose solution is zero.\n"
-                        "        solver          PCG;\n        preconditioner  DIC;\n        tolerance       1e-12;\n"
-                        "        relTol          0.1;\n    }\n") +
+                 (multigrid ? "        solver          GAMG;\n        tolerance       1e-12;\n"
+                              "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n"
+                            : std::string(o.linear_solver == FoamOptions::LinearSolver::automatic
+                                              ? "        // Not GAMG: in 3D it blew up on the rounding noise of a component whose\n"
+                                                "        // solution is zero.\n"
+                                              : "        // Not GAMG: it diverged on this case (grainmesh's solve fell back on PCG).\n") +
+                                  "        solver          PCG;\n        preconditioner  DIC;\n        tolerance       1e-12;\n"
+                                  "        relTol          0.1;\n    }\n") +
                  (thermal ? "    // T is uniform: met at once, never iterated.\n    T\n    {\n        solver          PCG;\n"
                             "        preconditioner  none;\n        tolerance       1e300;\n        relTol          0;\n    }\n"
                           : "") +
@@ -149,6 +177,8 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
                  ";\n    nCorrectors     1;\n    D               " +
                  number_text(kSolverTolerance) + ";\n}\n");
 }
+
+namespace {
 
 // Allrun: checkMesh and the solve (decomposed and put together again on several
 // processes), each step's output in its log, in the environment --solve gives them.

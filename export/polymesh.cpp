@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam_file.hpp"
+#include "export/pin_translation.hpp"
 
 namespace grainmesh {
 namespace {
@@ -213,6 +214,7 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
   }
   pm.patches.push_back(empty);
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+  if (o.cyclic) pin_translation(pm, m.phase, {m.cell.lo.x, m.cell.lo.y, 0.0});
 
   add_zones(m.grain, m.phase, m.phases, o.grain_zones, pm);
   return pm;

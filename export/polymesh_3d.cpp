@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "export/foam_3d.hpp"
+#include "export/pin_translation.hpp"
 
 namespace grainmesh {
 
@@ -147,6 +148,7 @@ PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     pm.patches.push_back(p);
   }
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+  if (o.cyclic) pin_translation(pm, m.phase, {});
   add_zones(m.grain, m.phase, m.phases, o.grain_zones, pm);
   return pm;
 }

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "export/foam_3d.hpp"
+#include "export/pin_translation.hpp"
 
 namespace grainmesh {
 
@@ -428,6 +429,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     pm.patches.push_back(p);
   }
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
+  if (o.cyclic) pin_translation(pm, out.phase, {});
   add_zones(out.grain, out.phase, m.phases, o.grain_zones, pm);
   foam_cell_geometry(out);
   return out;

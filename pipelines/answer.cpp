@@ -18,21 +18,28 @@ namespace grainmesh {
 std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
 
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
-  return {{"corrections", r.corrections},
+  Json json{{"corrections", r.corrections},
           {"final_residual", r.final_residual},
           {"stress_change", r.stress_change},
           {"component_residuals", r.component_residuals},
+          {"linear_solver", r.linear_solver},
           {"result", std::filesystem::relative(r.result_dir, dir).string()},
           {"seconds",
            {{"decomposePar", r.decompose_seconds},
             {"solidDisplacementFoam", r.solver_seconds},
             {"reconstructPar", r.reconstruct_seconds}}}};
+  if (!r.linear_solver_fallback.empty()) json["linear_solver_fallback"] = r.linear_solver_fallback;
+  return json;
 }
 
-constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
+double bounds_tolerance(double measured_error) {
+  constexpr double kRounding = 1e-6;  // relative: bounds that coincide (one material) are met to rounding
+  return std::max(kRounding, measured_error);
+}
+
 std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
-                                   bool above) {
-  if (above ? value <= bound * (1 + kRounding) : value >= bound * (1 - kRounding)) return std::nullopt;
+                                   bool above, double tolerance) {
+  if (above ? value <= bound * (1 + tolerance) : value >= bound * (1 - tolerance)) return std::nullopt;
   return what + " " + to_text(value, 4) + " Pa lies " + (above ? "above" : "below") + " " + name + " " +
          to_text(bound, 4) + " Pa by " + to_text(100.0 * std::abs(value / bound - 1.0), 2) + " %";
 }
@@ -45,14 +52,14 @@ void note_voigt_reuss(bool inside, Json& effective, std::vector<std::string>& wa
 }
 
 void check_hashin_shtrikman(double K, double G, const ModuliBounds& b, Json& effective, std::vector<std::string>& warnings,
-                            const std::string& why) {
+                            const std::string& why, double tolerance) {
   effective["hashin_shtrikman"] = {
       {"bulk_lower", b.bulk_lower}, {"bulk_upper", b.bulk_upper}, {"shear_lower", b.shear_lower}, {"shear_upper", b.shear_upper}};
   bool inside = true;
-  for (const auto& w : {outside("effective.bulk_modulus", K, b.bulk_upper, "the Hashin-Shtrikman upper bound", true),
-                        outside("effective.bulk_modulus", K, b.bulk_lower, "the Hashin-Shtrikman lower bound", false),
-                        outside("effective.shear_modulus", G, b.shear_upper, "the Hashin-Shtrikman upper bound", true),
-                        outside("effective.shear_modulus", G, b.shear_lower, "the Hashin-Shtrikman lower bound", false)})
+  for (const auto& w : {outside("effective.bulk_modulus", K, b.bulk_upper, "the Hashin-Shtrikman upper bound", true, tolerance),
+                        outside("effective.bulk_modulus", K, b.bulk_lower, "the Hashin-Shtrikman lower bound", false, tolerance),
+                        outside("effective.shear_modulus", G, b.shear_upper, "the Hashin-Shtrikman upper bound", true, tolerance),
+                        outside("effective.shear_modulus", G, b.shear_lower, "the Hashin-Shtrikman lower bound", false, tolerance)})
     if (w) {
       inside = false;
       warnings.push_back(*w + " (" + why + ")");
@@ -155,15 +162,18 @@ Json stiffness_json(const Stiffness& c) {
 
 
 // The Voigt and Reuss tensors and Hashin-Shtrikman's bulk and shear bounds beside the
-// stiffness C in `effective`, with whether C keeps them (a broken one a warning).
-void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, Json& effective, std::vector<std::string>& warnings) {
+// stiffness C in `effective`, with whether C keeps them to `tolerance` (a broken one a
+// warning).
+void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, double tolerance, Json& effective,
+                         std::vector<std::string>& warnings) {
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
-  note_voigt_reuss(semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt), effective, warnings,
-                   "see README, Homogenisation");
+  effective["bounds_tolerance"] = tolerance;
+  note_voigt_reuss(semidefinite_order(b.reuss, C, tolerance) && semidefinite_order(C, b.voigt, tolerance), effective,
+                   warnings, "see README, Homogenisation");
   if (b.bulk_upper)
     check_hashin_shtrikman(bulk_modulus(C), shear_modulus(C), {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper},
-                           effective, warnings, "a finite cell is not isotropic; see README, Homogenisation");
+                           effective, warnings, "a finite cell is not isotropic; see README, Homogenisation", tolerance);
 }
 
 }  // namespace
@@ -263,7 +273,8 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
 
-  check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress), effective, warnings);
+  check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress),
+                      bounds_tolerance(effective["symmetry_error"].get<double>()), effective, warnings);
   return answer;
 }
 

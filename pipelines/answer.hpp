@@ -32,10 +32,14 @@ std::string periodic_case_dir(const LoadCase& c);
 // A solve in report.json: corrections, residuals, the result's time directory (relative
 // to `dir`), OpenFOAM's steps' seconds.
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
-// A bound broken by `value` (above it when `above`), as a warning; nothing when it holds,
-// to rounding.
+// What a bound is judged to: relative rounding (1e-6), or the answer's own measured error
+// when larger (a periodic tensor's symmetry error: a cell of two phases a hundredth apart
+// lies between bounds closer together than its discretisation error).
+double bounds_tolerance(double measured_error = 0.0);
+// A bound broken by `value` (above it when `above`) by more than `tolerance` (relative), as
+// a warning; nothing when it holds.
 std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
-                                   bool above);
+                                   bool above, double tolerance = bounds_tolerance());
 // Whether the stiffness lies between the Reuss and Voigt tensors, in `effective`
 // (inside_bounds.voigt_reuss); outside, a warning pointing to `see`.
 void note_voigt_reuss(bool inside, Json& effective, std::vector<std::string>& warnings, const std::string& see);
@@ -46,7 +50,7 @@ struct ModuliBounds {
   double bulk_lower, bulk_upper, shear_lower, shear_upper;
 };
 void check_hashin_shtrikman(double K, double G, const ModuliBounds& bounds, Json& effective,
-                            std::vector<std::string>& warnings, const std::string& why);
+                            std::vector<std::string>& warnings, const std::string& why, double tolerance);
 // How far an effective expansion lies from Levin's exact relation: the largest difference
 // of a component over Levin's largest; over 1 % a warning ending in (`advice`).
 double levin_difference(const std::vector<double>& expansion, const std::vector<double>& levin,

@@ -206,13 +206,15 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   const TensorBounds3 b = tensor_bounds_3d(in.e.phases, fractions);
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
-  note_voigt_reuss(semidefinite_order(b.reuss, C) && semidefinite_order(C, b.voigt), effective, warnings,
-                   "see README, 3D cases and solves");
+  const double tolerance = bounds_tolerance(symmetry_error(h.stiffness));
+  effective["bounds_tolerance"] = tolerance;
+  note_voigt_reuss(semidefinite_order(b.reuss, C, tolerance) && semidefinite_order(C, b.voigt, tolerance), effective,
+                   warnings, "see README, 3D cases and solves");
   if (b.bulk_upper)
     check_hashin_shtrikman(bulk_modulus_3d(C), shear_modulus_3d(C),
                            {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper}, effective, warnings,
                            "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
-                           "order in the mesh size; see README, 3D cases and solves");
+                           "order in the mesh size; see README, 3D cases and solves", tolerance);
   return answer;
 }
 

@@ -73,15 +73,15 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
       sum.xx += a * virial[c].xx, sum.yy += a * virial[c].yy, sum.xy += a * virial[c].xy;
     }
     const double s2 = o.convert_to_meters * o.convert_to_meters;
-    const Vec3 through_right = traction.patch_force(patch_index(pm, "right")) / (e.cell.height() * pm.thickness * s2);
-    const Vec3 through_top = traction.patch_force(patch_index(pm, "top")) / (e.cell.width() * pm.thickness * s2);
+    const Vec3 through_right = traction.side_force("right") / (e.cell.height() * pm.thickness * s2);
+    const Vec3 through_top = traction.side_force("top") / (e.cell.width() * pm.thickness * s2);
     const double stress_scale = std::max({std::abs(through_right.x), std::abs(through_top.y), std::abs(through_right.y)});
     CHECK(std::abs(sum.xx / area - through_right.x) < 1e-6 * stress_scale);
     CHECK(std::abs(sum.yy / area - through_top.y) < 1e-6 * stress_scale);
     CHECK(std::abs(sum.xy / area - 0.5 * (through_right.y + through_top.x)) < 1e-6 * stress_scale);
     // What goes in on the left comes out on the right (and bottom, top).
-    const Vec3 left = traction.patch_force(patch_index(pm, "left")), right = traction.patch_force(patch_index(pm, "right"));
-    const Vec3 bottom = traction.patch_force(patch_index(pm, "bottom")), top = traction.patch_force(patch_index(pm, "top"));
+    const Vec3 left = traction.side_force("left"), right = traction.side_force("right");
+    const Vec3 bottom = traction.side_force("bottom"), top = traction.side_force("top");
     CHECK(norm(left + right) < 1e-6 * norm(right));
     CHECK(norm(bottom + top) < 1e-6 * norm(top));
     // And the load is carried: the loaded direction's force has the strain's sign.

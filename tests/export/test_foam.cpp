@@ -11,6 +11,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
+#include "analysis/traction.hpp"
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
 #include "export/foam.hpp"
@@ -294,24 +295,29 @@ TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[ex
   ExportMesh e = grain_export_mesh(t, m);
   CHECK(e.pairs == m.pairs);  // carried from the mesh stage, not made again
   const PolyMesh pm = build_polymesh(e, {.cyclic = true});
-  // Face k of left is the image of face k of right: its points moved by W.
-  const auto& left = pm.patches[0];
-  const auto& right = pm.patches[1];
-  REQUIRE(left.name == "left");
-  REQUIRE(right.name == "right");
-  REQUIRE(left.size == right.size);
+  // Face k of left is the image of face k of right: its points moved by W; so is the
+  // pinned pair's one face (pin_translation.hpp), cut from the middle of the sides.
   const std::size_t n = m.mesh.points.size();
   auto point = [&](int p) { return pm.points2d[static_cast<std::size_t>(p) % n]; };
-  for (int k = 0; k < left.size; ++k) {
-    const int fl = left.start + k, fr = right.start + k;
-    auto span = [&](int f) {  // the face's extent along the side: exact
-      std::pair<double, double> y{1e300, -1e300};
-      for (int q = pm.face_start[f]; q < pm.face_start[f + 1]; ++q)
-        y = {std::min(y.first, point(pm.face_points[q]).y), std::max(y.second, point(pm.face_points[q]).y)};
-      return y;
-    };
-    CHECK(span(fl) == span(fr));
+  auto span = [&](int f) {  // the face's extent along the side: exact
+    std::pair<double, double> y{1e300, -1e300};
+    for (int q = pm.face_start[f]; q < pm.face_start[f + 1]; ++q)
+      y = {std::min(y.first, point(pm.face_points[q]).y), std::max(y.second, point(pm.face_points[q]).y)};
+    return y;
+  };
+  for (const auto& [low, high] : {std::pair{"left", "right"}, std::pair{"pin_left", "pin_right"}}) {
+    CAPTURE(low);
+    REQUIRE(patch_index(pm, low) >= 0);
+    REQUIRE(patch_index(pm, high) == patch_index(pm, low) + 2);  // each right after its side's
+    const auto& left = pm.patches[patch_index(pm, low)];
+    const auto& right = pm.patches[patch_index(pm, high)];
+    REQUIRE(left.size == right.size);
+    for (int k = 0; k < left.size; ++k) CHECK(span(left.start + k) == span(right.start + k));
   }
+  const auto& pin = pm.patches[patch_index(pm, "pin_left")];
+  CHECK(pin.size == 1);
+  CHECK(pin.type == "patch");
+
   // Without its pair, a node's faces have no partner: refused, naming the sides.
   e.pairs.x.pop_back();
   CHECK_THROWS_WITH(build_polymesh(e, {.cyclic = true}), Catch::Contains("the faces of left and right do not pair"));
