@@ -27,9 +27,26 @@ void check_installed(const FoamOptions& o) {
     throw IoError("solve.processes: mpirun is not installed (Debian package openmpi-bin, which openfoam brings)");
 }
 
+// How long OpenFOAM's programs may take on a case, scaled to its mesh's files (they read
+// them at a megabyte a second at the very least): a utility (decomposePar,
+// reconstructPar) in all, the solver between two lines of its log. A program that hangs
+// (mpirun waiting for a rank that never starts, say) is stopped there, not at limits.seconds.
+ChildBudget utility_budget(double mesh_seconds) { return {.seconds = 120.0 + 20.0 * mesh_seconds}; }
+ChildBudget solver_budget(double mesh_seconds) { return {.idle_seconds = 120.0 + 2.0 * mesh_seconds}; }
+
+// Seconds to read the case's polyMesh at a megabyte a second.
+double mesh_read_seconds(const std::filesystem::path& case_dir) {
+  std::uintmax_t bytes = 0;
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(case_dir / "constant" / "polyMesh", ec))
+    if (f.is_regular_file(ec)) bytes += f.file_size(ec);
+  return static_cast<double>(bytes) / 1e6;
+}
+
 // One solve of a case: where it runs, how, and how its errors name it.
 struct SolveJob {
   std::filesystem::path case_dir, log;
+  double mesh_seconds = 0.0;  // mesh_read_seconds
   const Deadline& deadline;
   std::vector<std::string> environment;
   std::vector<std::string> command;
@@ -44,7 +61,12 @@ struct SolveJob {
 double run_utility(const SolveJob& job, const std::vector<std::string>& argv) {
   const auto started = std::chrono::steady_clock::now();
   const std::string utility_log = "log." + argv.front();
-  const int status = run_child(argv, job.case_dir, job.case_dir / utility_log, job.deadline, argv.front(), job.environment);
+  const ChildBudget budget = utility_budget(job.mesh_seconds);
+  const int status = run_child(argv, job.case_dir, job.case_dir / utility_log, job.deadline, argv.front(), job.environment,
+                               {}, budget);
+  if (status == kChildOverBudget)
+    throw SolveError(job.who + ": " + argv.front() + " did not finish in " + to_text(budget.seconds, 3) +
+                     " s (its budget for this mesh); see " + (job.shown / utility_log).string());
   if (status != 0)
     throw SolveError(job.who + ": " + argv.front() + " failed (exit code " + std::to_string(status) + "); see " +
                      (job.shown / utility_log).string());
@@ -86,12 +108,17 @@ Followed run_until_converged(const SolveJob& job, const FoamCell& cell, const Fo
   SolveMonitor::Options watch = watch_options(cell, o, stop);
   auto solve = [&](SolveMonitor& monitor) {
     const auto started = std::chrono::steady_clock::now();
+    const ChildBudget budget = solver_budget(job.mesh_seconds);
     const int status = run_child(job.command, job.case_dir, job.log, job.deadline, "solidDisplacementFoam",
                                  job.environment, [&](std::string_view text) {
                                    const SolveMonitor::State s = monitor.feed(text);
                                    return s != SolveMonitor::State::running && s != SolveMonitor::State::converged;
-                                 });
+                                 }, budget);
     r.solver_seconds += seconds_since(started);
+    if (status == kChildOverBudget)
+      throw SolveError(job.who + ": " + job.command.front() + " wrote nothing for " + to_text(budget.idle_seconds, 3) +
+                       " s (its budget for this mesh) after " + std::to_string(monitor.corrections()) +
+                       " corrections, and was stopped" + job.see);
     return status;
   };
   Followed f{SolveMonitor(watch)};
@@ -183,6 +210,7 @@ SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell,
   const std::filesystem::path shown = case_shown_as.empty() ? case_dir : case_shown_as;
   const SolveJob job{.case_dir = case_dir,
                      .log = case_dir / "log.solidDisplacementFoam",
+                     .mesh_seconds = mesh_read_seconds(case_dir),
                      .deadline = deadline,
                      .environment = foam_environment(),
                      .command = solver_command(o),

@@ -11,17 +11,18 @@
 #include <thread>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 
 namespace grainmesh {
 
-void die_with_parent(pid_t parent) {
-  prctl(PR_SET_PDEATHSIG, SIGKILL);
-  if (getppid() != parent) _exit(128 + SIGKILL);  // it died before the line above
+void die_with_parent(pid_t parent, int signal) {
+  prctl(PR_SET_PDEATHSIG, signal);
+  if (getppid() != parent) _exit(128 + signal);  // it died before the line above
 }
 
 int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
               const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
-              const std::vector<std::string>& environment, const LogWatcher& watch) {
+              const std::vector<std::string>& environment, const LogWatcher& watch, const ChildBudget& budget) {
   deadline.check("before " + what + " started");
   // The child's environment, built before fork (the child may only exec).
   std::vector<std::string> variables = environment;
@@ -53,6 +54,10 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   }
   if (pid == 0) {
     die_with_parent(parent);
+    // The program gets the signals this process leaves to its interrupt thread (interrupt.hpp).
+    sigset_t all;
+    sigfillset(&all);
+    sigprocmask(SIG_UNBLOCK, &all, nullptr);
     if (chdir(dir.c_str()) != 0) _exit(127);
     dup2(out, STDOUT_FILENO);  // dup2 clears close-on-exec on the copies
     dup2(out, STDERR_FILENO);
@@ -60,15 +65,25 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
     _exit(127);
   }
   close(out);
-  // Everything the child has written since the last look, to the watcher.
+  // mpirun is stopped with SIGTERM first, so that it takes the solver's ranks with it.
+  const bool graceful = argv.front() == "mpirun";
+  const ChildRegistration registered(pid, graceful);
+  // Everything the child has written since the last look, to the watcher; whether it wrote.
   std::string chunk(1 << 16, '\0');
+  bool wrote = false;
   auto follow = [&] {
     bool stop = false;
     ssize_t n;
-    while (watch && in >= 0 && (n = read(in, chunk.data(), chunk.size())) > 0)
-      stop = watch(std::string_view(chunk.data(), static_cast<std::size_t>(n))) || stop;
+    while (in >= 0 && (n = read(in, chunk.data(), chunk.size())) > 0) {
+      wrote = true;
+      if (watch) stop = watch(std::string_view(chunk.data(), static_cast<std::size_t>(n))) || stop;
+    }
     return stop;
   };
+  using Clock = std::chrono::steady_clock;
+  const auto started = Clock::now();
+  auto last_output = started;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   int status = 0;
   bool killed = false;
   // Polled, so the deadline is noticed within a tenth of a second.
@@ -80,14 +95,21 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
       throw IoError(what + ": lost track of it (waitpid failed)");
     }
     if (deadline.passed()) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
+      stop_child(pid, graceful);
       if (in >= 0) close(in);
       deadline.check("while " + what + " ran (it was stopped)");
     }
+    wrote = false;
     if (follow() && !killed) {
-      kill(pid, SIGKILL);
+      status = stop_child(pid, graceful);
       killed = true;
+      break;
+    }
+    if (wrote) last_output = Clock::now();
+    if (seconds_since(started) > budget.seconds || seconds_since(last_output) > budget.idle_seconds) {
+      stop_child(pid, graceful);
+      if (in >= 0) close(in);
+      return kChildOverBudget;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 
 namespace grainmesh {
 
@@ -21,6 +22,7 @@ std::string read_text_file(const fs::path& file, const std::string& what) {
 
 void write_text_file(const fs::path& file, const std::string& text) {
   const fs::path tmp = file.string() + ".tmp";
+  const TemporaryPath registered(tmp);  // removed on an interrupt
   {
     std::ofstream out(tmp, std::ios::binary);
     out << text;

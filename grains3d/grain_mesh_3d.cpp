@@ -19,6 +19,7 @@
 #include "common/process.hpp"
 #include "grains3d/improve_tets.hpp"
 #include "grains3d/surface_mesh.hpp"
+#include "grains3d/tetgen_fill.hpp"
 
 namespace grainmesh {
 
@@ -31,44 +32,8 @@ struct RegionTets {
   std::vector<std::array<int, 4>> tets;
 };
 
-// A scratch directory for TetGen's files, removed with it.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "grainmesh-tetgen-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw IoError("cannot create a scratch directory for TetGen in " + pattern);
-    path_ = pattern;
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-// The lines of a TetGen output file without comments.
-std::vector<std::vector<double>> read_table(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw GeometryError("TetGen wrote no " + file.filename().string());
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream words(line);
-    std::vector<double> row;
-    for (double v; words >> v;) row.push_back(v);
-    if (!row.empty()) rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-// Fills region r: its surface triangles (outward) written as a TetGen .smesh, TetGen told
-// to keep them (-Y), its output read back.
+// Fills region r: its surface triangles (outward) filled by TetGen (tetgen_fill.hpp), the
+// inner points improved.
 RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& points,
                        const std::vector<std::vector<std::array<int, 3>>>& faces, const GrainMesh3Options& o,
                        const std::filesystem::path& dir) {
@@ -85,65 +50,25 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
       }
       tris.push_back(tr);
     }
+  std::vector<Vec3> surface;
+  for (int v : global) surface.push_back(points[v]);
   std::string name = std::to_string(r);  // not "r" + ...: GCC 12's -Wrestrict misfires on that
   name.insert(0, 1, 'r');
-  {
-    std::ofstream out(dir / (name + ".smesh"));
-    char buf[128];
-    out << global.size() << " 3 0 0\n";
-    for (std::size_t k = 0; k < global.size(); ++k) {
-      const Vec3 p = points[global[k]];
-      std::snprintf(buf, sizeof buf, "%zu %.17g %.17g %.17g\n", k, p.x, p.y, p.z);
-      out << buf;
-    }
-    out << tris.size() << " 0\n";
-    for (const auto& tr : tris) out << "3 " << tr[0] << ' ' << tr[1] << ' ' << tr[2] << '\n';
-    out << "0\n0\n";
-    if (!out) throw IoError((dir / (name + ".smesh")).string() + ": cannot write TetGen's input");
-  }
-  // TetGen 1.5.0 trips an assertion in its point location on a few inputs (a small region
-  // with a face on the box, say); another point insertion order (its -b switch) gets
-  // past it, and the first order that works is used, so the result stays deterministic.
-  const double max_volume = regular_tet_volume(o.size);
-  int code = 0;
-  for (const char* order : {"", "b/1", "b/0.5"}) {
-    char switches[128];
-    std::snprintf(switches, sizeof switches, "-pYzQq%.6g/%.6ga%.6gO7/7%s", o.radius_edge, o.min_dihedral_deg, max_volume, order);
-    code = run_child({"tetgen", switches, name + ".smesh"}, dir, dir / (name + ".log"), o.deadline,
-                     "TetGen filling region " + std::to_string(r));
-    if (code == 127) throw GeometryError("TetGen (the tetgen program) is not installed: make run installs it");
-    if (code == 0) break;
-  }
-  if (code != 0) throw GeometryError("TetGen failed on region " + std::to_string(r) + " (exit code " + std::to_string(code) + ")");
-  const auto nodes = read_table(dir / (name + ".1.node"));
-  const auto eles = read_table(dir / (name + ".1.ele"));
-  if (nodes.empty() || eles.empty() || nodes.size() - 1 < global.size())
-    throw GeometryError("TetGen's output for region " + std::to_string(r) + " is incomplete");
-  // The region's points and tetrahedra in TetGen's numbering (its first points are the
-  // surface's, in the order given), positive; the inner points smoothed.
+  const TetgenOptions to{.radius_edge = o.radius_edge,
+                         .min_dihedral_deg = o.min_dihedral_deg,
+                         .max_volume = regular_tet_volume(o.size),
+                         .deadline = o.deadline};
+  TetgenFill fill = tetgen_fill(surface, tris, to, dir, name,
+                                "region " + std::to_string(r) + " (grain " + std::to_string(t.regions[r].grain) + ")");
   const int nb = static_cast<int>(global.size());
-  std::vector<Vec3> local_points;
-  for (int k = 0; k < nb; ++k) local_points.push_back(points[global[k]]);
-  for (std::size_t k = 1 + global.size(); k < nodes.size(); ++k) local_points.push_back({nodes[k][1], nodes[k][2], nodes[k][3]});
-  std::vector<std::array<int, 4>> local_tets;
-  for (std::size_t k = 1; k < eles.size(); ++k) {
-    std::array<int, 4> tet{};
-    for (int c = 0; c < 4; ++c) tet[c] = static_cast<int>(eles[k][1 + c]);
-    const auto& p = local_points;
-    if (tet_volume(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
-    local_tets.push_back(tet);
-  }
-  improve_tets(local_points, local_tets, nb, o.improvement_passes);
+  improve_tets(fill.points, fill.tets, nb, o.improvement_passes);
   RegionTets out;
-  out.interior.assign(local_points.begin() + nb, local_points.end());
-  for (const auto& tet : local_tets) {
+  out.interior.assign(fill.points.begin() + nb, fill.points.end());
+  for (const auto& tet : fill.tets) {
     std::array<int, 4> mapped{};
     for (int c = 0; c < 4; ++c) mapped[c] = tet[c] < nb ? global[tet[c]] : -1 - (tet[c] - nb);
     out.tets.push_back(mapped);
   }
-  std::error_code ignored;
-  for (const char* ext : {".smesh", ".1.node", ".1.ele", ".1.face", ".1.edge", ".log"})
-    std::filesystem::remove(dir / (name + ext), ignored);
   return out;
 }
 

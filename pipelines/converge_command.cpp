@@ -212,7 +212,7 @@ void write_convergence_png(const std::filesystem::path& file, const Levels& l, c
 
 void run_converge_command(const Config& c, const std::filesystem::path& out, const ConvergeOptions& o) {
   check_study(c, o);
-  check_output_replaceable(out, "converge");
+  claim_output(out, "converge");
   StagedOutput staged(out, "converge");
   const std::filesystem::path dir = staged.dir();
   const std::string ini = config_ini(c);

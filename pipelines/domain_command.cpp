@@ -150,7 +150,7 @@ DistMeshResult mesh_domain(const DomainJob& job) {
 namespace {
 
 Json run_and_write(const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out, "domain");
+  claim_output(out, "domain");
   const DomainJob job = read_domain_job(c);
   const DistMeshResult result = mesh_domain(job);
   const TriMesh& mesh = result.mesh;

@@ -106,7 +106,7 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
 }
 
 void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out, "export");
+  claim_output(out, "export");
   const FoamOptions o = read_foam_options(c);
   const ExportMesh read = read_export_mesh(mesh_file, c);
   // A file of polygonal cells (an earlier export's mesh.vtu) is written as it is.

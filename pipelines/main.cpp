@@ -14,6 +14,7 @@
 #include "common/allocator.hpp"
 #include "common/deadline.hpp"
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/converge_command.hpp"
 #include "pipelines/domain_command.hpp"
@@ -91,6 +92,12 @@ std::optional<po::variables_map> parse_options(const std::string& name, po::opti
   return vm;
 }
 
+// What an interrupt leaves of OUT (-o): nothing, and the line it prints says so.
+void announce_output(const po::variables_map& vm) {
+  if (vm.count("output"))
+    set_interrupt_message("nothing written to " + std::filesystem::absolute(vm["output"].as<std::string>()).lexically_normal().string());
+}
+
 // -o OUT and --set KEY=VALUE, which every command that writes takes.
 void add_output_options(po::options_description& desc, const char* output_help) {
   desc.add_options()("output,o", po::value<std::string>(), output_help)(
@@ -109,6 +116,7 @@ std::optional<po::variables_map> parse_command(const std::string& name, po::opti
   const po::variables_map& vm = *parsed;
   if (!vm.count(input)) throw ConfigError(name + ": missing the " + input + " file argument");
   if (!vm.count("output")) throw ConfigError(name + ": missing -o OUT (the output directory)");
+  announce_output(vm);
   return vm;
 }
 
@@ -194,6 +202,7 @@ int run_main(const std::vector<std::string>& args) {
   if (!parsed) return kOk;
   const po::variables_map& vm = *parsed;
   if (!vm.count("output")) throw ConfigError("run: missing -o OUT (the output directory)");
+  announce_output(vm);
   const Config config = run_config(vm);
   naming_errors(config, [&] {
     run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("quiet") > 0);
@@ -212,6 +221,7 @@ int converge_main(const std::vector<std::string>& args) {
   if (!parsed) return kOk;
   const po::variables_map& vm = *parsed;
   if (!vm.count("output")) throw ConfigError("converge: missing -o DIR (the study's directory)");
+  announce_output(vm);
   const Config config = run_config(vm);
   const ConvergeOptions o{.levels = vm["levels"].as<int>(), .start = vm["start"].as<int>()};
   naming_errors(config, [&] { run_converge_command(config, vm["output"].as<std::string>(), o); });
@@ -269,6 +279,7 @@ int check_main(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
   grainmesh::keep_freed_memory();  // the mesher's page faults halved (common/allocator.hpp)
+  grainmesh::install_interrupt_handling();  // before any thread starts: Ctrl-C leaves nothing behind
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -293,9 +304,11 @@ int main(int argc, char** argv) {
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const Error& e) {
+    wait_if_interrupted();  // an error the interrupt caused (a child it stopped) is not the run's
     std::fprintf(stderr, "%s%s\n", kErrorPrefix.data(), e.what());
     return exit_code_of(e);
   } catch (const std::exception& e) {
+    wait_if_interrupted();
     std::fprintf(stderr, "grainmesh: internal error: %s\n", e.what());
     return kExitInternal;
   }

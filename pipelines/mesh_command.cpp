@@ -150,7 +150,7 @@ Box detail_view(const Tessellation& t) {
 }
 
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out, "mesh");
+  claim_output(out, "mesh");
   const std::string text = read_text_file(tessellation, "tessellation file");
   if (tessellation_version(text) == 2)
     return run_mesh_3d_command(tessellation_3d_from_json(text, tessellation.string()), tessellation, c, out);

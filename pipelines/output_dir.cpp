@@ -1,6 +1,9 @@
 #include "pipelines/output_dir.hpp"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <algorithm>
 #include <cctype>
@@ -104,13 +107,38 @@ void check_output_replaceable(const fs::path& final_dir, const std::string& kind
                     " did not write; refusing to replace it (move it away, or give a new directory)");
 }
 
+void remove_stale_siblings(const fs::path& final_dir) {
+  const fs::path dir = absolute_path(final_dir);
+  const std::string name = dir.filename().string();
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir.parent_path(), ec)) {
+    const std::string sibling = entry.path().filename().string();
+    for (const std::string& of : {"." + name + ".", "." + name + ".failed."})
+      for (const char* tag : {"partial-", "old-"}) {
+        const std::string prefix = of + tag;
+        if (sibling.rfind(prefix, 0) != 0) continue;
+        const std::string pid = sibling.substr(prefix.size());
+        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;  // it still runs
+        fs::remove_all(entry.path(), ec);
+      }
+  }
+}
+
+void claim_output(const fs::path& final_dir, const std::string& kind) {
+  check_output_replaceable(final_dir, kind);
+  remove_stale_siblings(final_dir);
+}
+
 StagedOutput::StagedOutput(fs::path final_dir, std::string kind) : final_(absolute_path(final_dir)), kind_(std::move(kind)) {
   check_output_replaceable(final_, kind_);
   const fs::path parent = final_.parent_path();
   std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec) throw IoError(parent.string() + ": cannot create directory: " + ec.message());
+  remove_stale_siblings(final_);
   staging_ = hidden_sibling(final_, "partial");
+  registered_ = TemporaryPath(staging_);
   fs::remove_all(staging_, ec);
   if (!fs::create_directory(staging_, ec) || ec)
     throw IoError(staging_.string() + ": cannot create directory: " + ec.message());
@@ -129,6 +157,8 @@ void move_into_place(const fs::path& from, const fs::path& to, const std::string
   fs::path old;
   if (fs::exists(to, ec)) {
     check_output_replaceable(to, kind);
+    // Not removed on an interrupt: between the two renames it is the only output there
+    // is (the next run into `to` removes it, remove_stale_siblings).
     old = hidden_sibling(to, "old");
     fs::remove_all(old, ec);
     fs::rename(to, old, ec);
@@ -142,6 +172,7 @@ void move_into_place(const fs::path& from, const fs::path& to, const std::string
 
 void StagedOutput::commit() {
   move_into_place(staging_, final_, kind_);
+  registered_.release();
   done_ = true;
 }
 
@@ -149,6 +180,7 @@ fs::path StagedOutput::failed_dir() const { return final_.parent_path() / (final
 
 void StagedOutput::keep_as_failed() {
   move_into_place(staging_, failed_dir(), kind_);
+  registered_.release();
   done_ = true;
 }
 

@@ -10,15 +10,18 @@
 #include <string>
 #include <vector>
 
+#include "common/interrupt.hpp"
 #include "common/text_file.hpp"
 
 namespace grainmesh {
 
 class StagedOutput {
  public:
-  // Creates the staging directory (and the parents of `final_dir`). `kind` is the command
-  // writing it ("run", "mesh", ...). Refuses, with IoError, to later replace an existing
-  // `final_dir` that check_output_replaceable refuses.
+  // Creates the staging directory (and the parents of `final_dir`), after removing what
+  // earlier runs into `final_dir` that were killed left (remove_stale_siblings). `kind` is
+  // the command writing it ("run", "mesh", ...). Refuses, with IoError, to later replace an
+  // existing `final_dir` that check_output_replaceable refuses. An interrupt removes the
+  // staging directory (interrupt.hpp).
   StagedOutput(std::filesystem::path final_dir, std::string kind);
   ~StagedOutput();  // removes the staging directory unless committed or kept
   StagedOutput(const StagedOutput&) = delete;
@@ -40,7 +43,13 @@ class StagedOutput {
   std::filesystem::path final_, staging_;
   std::string kind_;
   bool done_ = false;
+  TemporaryPath registered_;  // the staging directory, removed on an interrupt
 };
+
+// Removes what runs into `final_dir` that were killed or interrupted left beside it: the
+// hidden siblings .NAME.partial-PID and .NAME.old-PID (and NAME.failed's), where process
+// PID no longer runs.
+void remove_stale_siblings(const std::filesystem::path& final_dir);
 
 // Checks, before any work is done, that `final_dir` could be written as an output of
 // `kind`: it does not exist, or is an empty directory, or an earlier output of `kind`
@@ -49,6 +58,11 @@ class StagedOutput {
 // processor*). Never the current directory or one that holds it. Throws IoError naming
 // the directory and why.
 void check_output_replaceable(const std::filesystem::path& final_dir, const std::string& kind);
+
+// What a command does with its OUT before any work: checks that it could write it
+// (check_output_replaceable) and removes what runs into it that were killed left beside
+// it (remove_stale_siblings).
+void claim_output(const std::filesystem::path& final_dir, const std::string& kind);
 
 // The keys of report.json that say which command wrote a directory and what it holds
 // (written by write_report in report.hpp, read here).

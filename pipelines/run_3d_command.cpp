@@ -170,7 +170,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   check_run_3d_config(c);
   FoamOptions foam = read_foam_options_3d(c);
   const Boundary boundary = read_boundary(c);
-  check_output_replaceable(out, "run");
+  claim_output(out, "run");
   const Config tess_config = c.subset(tessellate_config_keys());
   const Tessellate3Job tess_job = read_tessellate_3d_job(tess_config);
   const auto start = Clock::now();

@@ -197,7 +197,7 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
 void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   c.check_keys(run_config_keys());
   if (c.has("domain.depth")) return run_run_3d_command(c, out, solve, quiet, summary);
-  check_output_replaceable(out, "run");
+  claim_output(out, "run");
   Warnings warnings;
   RunPlan plan = read_run_plan(c, solve, warnings);
   const TessellateJob& tess_job = plan.tess_job;

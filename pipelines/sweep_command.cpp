@@ -1,5 +1,6 @@
 #include "pipelines/sweep_command.hpp"
 
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -7,10 +8,12 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/interrupt.hpp"
 #include "common/process.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
@@ -85,6 +88,8 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
   std::size_t done = 0, next = 0;
   PoolResult result;
   std::map<pid_t, const SweepRun*> running;
+  // On an interrupt each run gets SIGTERM and removes its own staging directory.
+  std::map<pid_t, std::unique_ptr<ChildRegistration>> registered;
   auto progress = [&] {
     if (!terminal) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -101,8 +106,11 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
       const pid_t pid = fork();
       if (pid < 0) throw IoError("sweep: cannot start a run (fork failed)");
       if (pid == 0) {
-        // A killed sweep takes its runs with it: none finishes behind a resumed sweep's back.
-        die_with_parent(parent);
+        // A killed sweep takes its runs with it: none finishes behind a resumed sweep's back,
+        // and each removes what it was writing (SIGTERM, handled as an interrupt).
+        die_with_parent(parent, SIGTERM);
+        install_interrupt_handling();
+        set_interrupt_message("nothing written to " + (dir / r->name).string());
         // The run: its output to its log, its errors as its exit code.
         if (!std::freopen((dir / "logs" / (r->name + ".log")).c_str(), "w", stdout)) _exit(4);
         dup2(STDOUT_FILENO, STDERR_FILENO);
@@ -110,6 +118,7 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
         try {
           run_run_command(Config::from_text(plan.base_text, source, r->overrides), dir / r->name, o.solve, true);
         } catch (const std::exception& e) {
+          wait_if_interrupted();
           std::printf("%s%s\n", kErrorPrefix.data(), e.what());
           code = exit_code_of(e);
         }
@@ -117,11 +126,16 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
         _exit(code);
       }
       running[pid] = r;
+      registered[pid] = std::make_unique<ChildRegistration>(pid, true);
     }
     progress();
     int status = 0;
     const pid_t pid = wait(&status);
-    if (pid < 0) break;
+    if (pid < 0) {
+      wait_if_interrupted();  // the interrupt's thread reaped them
+      break;
+    }
+    registered.erase(pid);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
       const std::string& name = running[pid]->name;
       result.failed[name] = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternal;
@@ -143,6 +157,7 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
 void run_sweep_command(const Config& c, const std::filesystem::path& dir, const SweepOptions& o) {
   const SweepPlan plan = make_sweep_plan(c, o);
   check_sweep_dir(dir);
+  set_interrupt_message("the runs that finished are kept in " + dir.string() + "; run the sweep again to finish it");
   std::error_code ec;
   std::filesystem::create_directories(dir / "logs", ec);
   if (ec) throw IoError(dir.string() + ": cannot create the sweep's directory: " + ec.message());

@@ -154,7 +154,7 @@ void print_tessellation_3d_summary(const Tessellation3& t, double seconds) {
 }
 
 void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out) {
-  check_output_replaceable(out, "tessellate");
+  claim_output(out, "tessellate");
   const Tessellate3Job job = read_tessellate_3d_job(c);
   const auto start = std::chrono::steady_clock::now();
   Warnings warnings;

@@ -281,7 +281,7 @@ std::vector<std::string> tessellation_warnings(const Tessellation& t) {
 
 void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   if (c.has("domain.depth")) return run_tessellate_3d_command(c, out);
-  check_output_replaceable(out, "tessellate");
+  claim_output(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();
   const Tessellation t = run_tessellate_job(job, c);

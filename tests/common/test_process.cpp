@@ -68,3 +68,25 @@ TEST_CASE("OpenFOAM runs with the Debian package's directory and glibc told to k
   else
     unsetenv("WM_PROJECT_DIR");
 }
+
+TEST_CASE("a child over its budget is stopped: its whole run, or a stretch without output", "[process]") {
+  test::ScratchDir dir("process-budget");
+  auto timed = [&](const std::string& script, const ChildBudget& budget) {
+    const auto start = std::chrono::steady_clock::now();
+    const int code = run_child({"sh", "-c", script}, dir.path(), dir / "log", Deadline(), "sh", {}, {}, budget);
+    return std::pair{code, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  };
+  // Over its whole budget.
+  const auto [whole, whole_took] = timed("exec sleep 30", {.seconds = 0.5});
+  CHECK(whole == kChildOverBudget);
+  CHECK(whole_took < 5.0);
+  // Writing now and then keeps it alive past its idle budget; falling silent ends it.
+  const auto [idle, idle_took] =
+      timed("for i in 1 2 3 4 5 6; do echo $i; sleep 0.2; done; exec sleep 30", {.idle_seconds = 0.6});
+  CHECK(idle == kChildOverBudget);
+  CHECK(idle_took > 1.0);
+  CHECK(idle_took < 6.0);
+  CHECK(read_text_file(dir / "log", "the log") == "1\n2\n3\n4\n5\n6\n");
+  // Within its budget: its own exit code.
+  CHECK(timed("exit 4", {.seconds = 10.0, .idle_seconds = 10.0}).first == 4);
+}

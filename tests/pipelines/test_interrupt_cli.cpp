@@ -31,22 +31,43 @@ namespace {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// grainmesh with `args`, its output discarded, not waited for.
-pid_t spawn_grainmesh(const std::vector<std::string>& args) {
+// grainmesh with `args`, not waited for: its stdout discarded, its stderr into `err` (or
+// discarded), `env` (NAME=value) added to its environment.
+pid_t spawn_grainmesh(const std::vector<std::string>& args, const fs::path& err = {},
+                      const std::vector<std::string>& env = {}) {
   std::vector<std::string> all{test::grainmesh_binary()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::vector<std::string> variables = env;
+  for (char** e = environ; *e != nullptr; ++e) variables.emplace_back(*e);  // the first of a name wins
+  std::vector<char*> envp;
+  for (auto& v : variables) envp.push_back(v.data());
+  envp.push_back(nullptr);
   posix_spawn_file_actions_t io;
   posix_spawn_file_actions_init(&io);
   posix_spawn_file_actions_addopen(&io, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&io, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&io, 2, err.empty() ? "/dev/null" : err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, test::grainmesh_binary(), &io, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, test::grainmesh_binary(), &io, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&io);
   REQUIRE(rc == 0);
   return pid;
+}
+
+// Sends `pid` `signal` after `delay` seconds (nothing when it has ended by then) and waits
+// for it; its wait status.
+int signal_after(pid_t pid, int signal, double delay) {
+  const auto t0 = Clock::now();
+  int status = 0;
+  while (seconds_since(t0) < delay) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(pid, signal);
+  waitpid(pid, &status, 0);
+  return status;
 }
 
 // Kills `pid` with SIGKILL after `delay` seconds (at once when it has already ended);
@@ -63,15 +84,19 @@ bool kill_after(pid_t pid, double delay) {
   return true;
 }
 
-// Processes whose command line mentions `text` (children that outlived their parent).
-int processes_mentioning(const std::string& text) {
+// Processes whose command line mentions `dir`, or which run in it or below (children that
+// outlived their parent: TetGen and the solver run in directories of the output's staging
+// or the temporary directory, which never appear on their command lines).
+int processes_in(const fs::path& dir) {
   int n = 0;
   for (const auto& entry : fs::directory_iterator("/proc")) {
     const std::string name = entry.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (name.find_first_not_of("0123456789") != std::string::npos || name == std::to_string(getpid())) continue;
     std::string cmdline = test::read_file(entry.path() / "cmdline");
     std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    if (cmdline.find(text) != std::string::npos) ++n;
+    std::error_code ec;
+    const std::string cwd = fs::read_symlink(entry.path() / "cwd", ec).string();
+    if (cmdline.find(dir.string()) != std::string::npos || (!ec && cwd.rfind(dir.string(), 0) == 0)) ++n;
   }
   return n;
 }
@@ -153,7 +178,7 @@ TEST_CASE("grainmesh run killed at random moments never leaves an output that lo
     INFO("trial " << trial << ": killed after " << at << " s of " << full);
     if (kill_after(spawn_grainmesh(args), at)) ++interrupted;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    CHECK(processes_mentioning((dir / "out").string()) == 0);  // the solver died with it
+    CHECK(processes_in(dir.path()) == 0);  // the solver died with it
     if (fs::exists(dir / "out")) {
       // Present only as a whole: every file, the same report.
       CHECK(test::files_under(dir / "out") == complete);
@@ -188,7 +213,7 @@ TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an
     INFO("trial " << trial << ": killed after " << at << " s of " << full);
     kill_after(spawn_grainmesh(sweep_args("out")), at);
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    CHECK(processes_mentioning((dir / "out").string()) == 0);  // its runs died with it
+    CHECK(processes_in(dir.path()) == 0);  // its runs died with it
     // Every run directory that looks done is done: the reference's files, the same report.
     if (fs::exists(dir / "out"))
       for (const auto& e : fs::directory_iterator(dir / "out")) {
@@ -216,4 +241,104 @@ TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an
   CHECK(runs == 8);
   for (const auto& e : fs::directory_iterator(dir / "out"))
     CHECK(e.path().filename().string().find(".partial-") == std::string::npos);
+}
+
+TEST_CASE("grainmesh run interrupted (Ctrl-C, SIGTERM) at random moments says so in one line and leaves nothing",
+          "[cli][interrupt]") {
+  // A 3D periodic cell solved: TetGen's scratch in the temporary directory, the solver in
+  // the staging directory, both to be cleaned up.
+  test::ScratchDir dir("interrupt-run");
+  const fs::path tmp = dir / "tmp";
+  fs::create_directories(tmp);
+  {
+    std::ofstream(dir / "cell.ini") << "[domain]\nwidth = 1\nheight = 1\ndepth = 1\nperiodic = true\n"
+                                       "[tessellation]\ngrains = 12\nseed = 5\nlloyd_iterations = 3\n"
+                                       "[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.2\n"
+                                       "[phase.Co]\nfraction = 0.2\nE = 210e9\nnu = 0.3\n"
+                                       "[mesh]\ntets_per_grain = 150\n[homogenise]\nboundary = periodic\n"
+                                       "[output]\npictures = none\n";
+  }
+  const fs::path out = dir / "out";
+  const std::vector<std::string> args{"run", (dir / "cell.ini").string(), "-o", out.string(), "--solve", "--quiet"};
+  const std::vector<std::string> env{"TMPDIR=" + tmp.string()};
+  const auto t0 = Clock::now();
+  REQUIRE(signal_after(spawn_grainmesh(args, dir / "err", env), SIGKILL, 600.0) == 0);
+  const double full = seconds_since(t0);
+  fs::remove_all(out);
+  // What an earlier run killed outright (SIGKILL: no handler can clean up) left beside OUT.
+  fs::create_directories(dir / ".out.partial-999999999/case_xx");
+  std::mt19937_64 rng(11);
+  int interrupted = 0;
+  for (int trial = 0; trial < 5; ++trial) {
+    const int signal = trial % 2 == 0 ? SIGINT : SIGTERM;
+    const double at = std::uniform_real_distribution<double>(0.05, 0.95)(rng) * full;
+    INFO("trial " << trial << ": signal " << signal << " after " << at << " s of " << full);
+    const int status = signal_after(spawn_grainmesh(args, dir / "err", env), signal, at);
+    const std::string err = test::read_file(dir / "err");
+    INFO(err);
+    REQUIRE(WIFEXITED(status));
+    if (WEXITSTATUS(status) == 0) {
+      CHECK(fs::exists(out / "report.json"));  // finished before the signal came
+    } else {
+      ++interrupted;
+      CHECK(WEXITSTATUS(status) == 128 + signal);
+      CHECK(err.find("grainmesh: interrupted; nothing written to " + out.string() + "\n") != std::string::npos);
+      CHECK(err.find("error") == std::string::npos);
+      CHECK_FALSE(fs::exists(out));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(processes_in(dir.path()) == 0);  // TetGen and the solver stopped with it
+    CHECK(test::entries(tmp) == 0);        // TetGen's scratch removed
+    for (const auto& e : fs::directory_iterator(dir.path())) {  // no staging left, the stale one removed
+      const std::string name = e.path().filename().string();
+      CHECK((name == "out" || name == "tmp" || name == "err" || name == "cell.ini"));
+    }
+    fs::remove_all(out);
+  }
+  CHECK(interrupted >= 3);
+  // The next run succeeds.
+  CHECK(signal_after(spawn_grainmesh(args, dir / "err", env), SIGKILL, 600.0) == 0);
+  CHECK(fs::exists(out / "report.json"));
+}
+
+TEST_CASE("grainmesh sweep interrupted at random moments keeps its finished runs, leaves no partial one, and resumes",
+          "[cli][interrupt][sweep]") {
+  test::ScratchDir dir("interrupt-sweep");
+  {
+    std::ofstream(dir / "sweep.ini") << test::read_file(test::source_dir() / "data/default.ini")
+                                     << "\n[output]\npictures = none\n[sweep]\ntessellation.grains = 20, 30\nrealisations = 2\n";
+  }
+  const fs::path out = dir / "out";
+  const std::vector<std::string> args{"sweep", (dir / "sweep.ini").string(), "-o", out.string(), "--solve", "--jobs", "2"};
+  const auto t0 = Clock::now();
+  REQUIRE(signal_after(spawn_grainmesh(args, dir / "err"), SIGKILL, 600.0) == 0);
+  const double full = seconds_since(t0);
+  fs::remove_all(out);
+  std::mt19937_64 rng(12);
+  for (int trial = 0; trial < 3; ++trial) {
+    const double at = std::uniform_real_distribution<double>(0.1, 0.9)(rng) * full;
+    INFO("trial " << trial << ": interrupted after " << at << " s of " << full);
+    const int status = signal_after(spawn_grainmesh(args, dir / "err"), SIGINT, at);
+    const std::string err = test::read_file(dir / "err");
+    INFO(err);
+    REQUIRE(WIFEXITED(status));
+    if (WEXITSTATUS(status) != 0) {
+      CHECK(WEXITSTATUS(status) == 130);
+      CHECK(err == "grainmesh: interrupted; the runs that finished are kept in " + out.string() +
+                       "; run the sweep again to finish it\n");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(processes_in(dir.path()) == 0);
+    // Every run directory there is complete (a report); nothing staged is left.
+    if (fs::exists(out))
+      for (const auto& e : fs::directory_iterator(out)) {
+        const std::string name = e.path().filename().string();
+        CHECK(name.find(".partial-") == std::string::npos);
+        if (e.is_directory() && name.rfind("p0", 0) == 0) CHECK(fs::exists(e.path() / "report.json"));
+      }
+  }
+  const auto rest = run_grainmesh(args);
+  INFO(rest.err);
+  CHECK(rest.exit_code == 0);
+  for (const char* run : {"p000-r00", "p000-r01", "p001-r00", "p001-r01"}) CHECK(fs::exists(out / run / "report.json"));
 }

@@ -1,0 +1,68 @@
+// Ctrl-C, SIGTERM and SIGHUP: a run stops at once and leaves nothing behind. main() calls
+// install_interrupt_handling() before any other thread starts: the three signals are
+// blocked in every thread, and one thread of its own waits for them. When one comes, that
+// thread stops the registered children (TetGen and OpenFOAM's programs at once, a sweep's
+// runs given a moment to clean up after themselves), removes the registered temporary
+// paths (staging directories, TetGen's scratch), prints one line - "grainmesh:
+// interrupted; " and the run's own words - and exits with 128 + the signal.
+#pragma once
+
+#include <sys/types.h>
+
+#include <filesystem>
+#include <string>
+
+namespace grainmesh {
+
+// Blocks SIGINT, SIGTERM and SIGHUP in this thread (and so in the threads it starts) and
+// starts the thread that waits for them. In a process just forked from one that had
+// called it, call it again: the parent's registrations are the parent's, and are forgotten.
+void install_interrupt_handling();
+
+// What the line printed on an interrupt says after "grainmesh: interrupted; " (by default
+// "nothing was written").
+void set_interrupt_message(std::string message);
+
+// Whether an interrupt is being handled; the process is about to exit.
+bool interrupted();
+// Never returns once an interrupt is being handled (the handling thread ends the process):
+// for a thread about to report an error that the interrupt caused (a child it killed).
+void wait_if_interrupted();
+
+// A path removed when the run is interrupted, for as long as the object lives.
+class TemporaryPath {
+ public:
+  TemporaryPath() = default;
+  explicit TemporaryPath(std::filesystem::path path);
+  ~TemporaryPath();
+  TemporaryPath(TemporaryPath&& other) noexcept;
+  TemporaryPath& operator=(TemporaryPath&& other) noexcept;
+  TemporaryPath(const TemporaryPath&) = delete;
+  TemporaryPath& operator=(const TemporaryPath&) = delete;
+  // No longer removed on an interrupt (it has become the output).
+  void release();
+
+ private:
+  int id_ = -1;
+};
+
+// A child process stopped when the run is interrupted, for as long as the object lives:
+// with SIGKILL, or (`graceful`: mpirun, which must take its ranks with it, and a sweep's
+// runs, which remove their own staging directories) with SIGTERM and, after a few
+// seconds, SIGKILL.
+class ChildRegistration {
+ public:
+  explicit ChildRegistration(pid_t pid, bool graceful = false);
+  ~ChildRegistration();
+  ChildRegistration(const ChildRegistration&) = delete;
+  ChildRegistration& operator=(const ChildRegistration&) = delete;
+
+ private:
+  int id_ = -1;
+};
+
+// Stops child `pid` (this process's) and reaps it: SIGKILL, or when `graceful` SIGTERM
+// first and SIGKILL after `grace_seconds`. Returns its wait status.
+int stop_child(pid_t pid, bool graceful, double grace_seconds = 5.0);
+
+}  // namespace grainmesh
