@@ -341,7 +341,7 @@ template <typename Mesh>
 void draw_mesh(const std::filesystem::path& file, const Mesh& mesh, const PictureOptions& options) {
   Box box;
   for (const Vec2 p : mesh.points) box.extend(p);
-  if (box.empty() || cell_count(mesh) == 0) throw IoError(file.string() + ": nothing to draw, the mesh is empty");
+  if (box.empty() || cell_count(mesh) == 0) throw GeometryError(file.string() + ": nothing to draw, the mesh is empty");
   if (options.view) {
     if (options.view->empty()) throw IoError(file.string() + ": the picture's window is empty");
     box = *options.view;
@@ -381,7 +381,7 @@ void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, con
 }
 
 void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t, const PictureOptions& options) {
-  if (t.regions.empty()) throw IoError(file.string() + ": nothing to draw, the tessellation is empty");
+  if (t.regions.empty()) throw GeometryError(file.string() + ": nothing to draw, the tessellation is empty");
   const bool key = has_key(options, false);
   Canvas canvas(Box{{0.0, 0.0}, {t.width, t.height}}, options, key ? static_cast<int>(kKeyRow) : 0);
   cairo_t* c = canvas.get();

@@ -84,23 +84,49 @@ Section tessellation_section(const Tessellation3& t, double z) {
   return s;
 }
 
+double section_height(const Tessellation3& t, double z) {
+  std::vector<double> levels;
+  for (const Vec3& v : t.vertices) levels.push_back(v.z);
+  levels.push_back(0.0);
+  levels.push_back(t.depth);
+  std::sort(levels.begin(), levels.end());
+  const double tolerance = 1e-9 * t.depth;
+  const auto at = std::lower_bound(levels.begin(), levels.end(), z - tolerance);
+  if (at == levels.end() || *at > z + tolerance) return z;  // no vertex in the plane
+  // Not the gap's middle: the surface mesh puts points at edges' equal divisions.
+  constexpr double kInto = 0.4142;
+  const auto above = std::upper_bound(levels.begin(), levels.end(), *at + tolerance);
+  if (above != levels.end()) return *at + kInto * (*above - *at);
+  const auto below = std::lower_bound(levels.begin(), levels.end(), *at - tolerance);
+  return below == levels.begin() ? z : *at - kInto * (*at - *(below - 1));
+}
+
 Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z) {
   Section s;
   PlanePoints plane(mesh.points, z, s.cells.points);
+  // A point within rounding of the plane lies in it (else its tetrahedra's crossings
+  // would meet in points a rounding apart: polygons folded over each other).
+  double extent = 0.0;
+  for (const Vec3& p : mesh.points) extent = std::max(extent, std::abs(p.z));
+  const double tolerance = 1e-12 * std::max(extent, 1.0);
+  auto height = [&](int v) {
+    const double d = mesh.points[v].z - z;
+    return std::abs(d) <= tolerance ? 0.0 : d;
+  };
   for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
     const auto& t = mesh.tets[k];
     bool below = false, above = false;
     for (int v : t) {
-      below = below || mesh.points[v].z < z;
-      above = above || mesh.points[v].z > z;
+      below = below || height(v) < 0.0;
+      above = above || height(v) > 0.0;
     }
     if (!below || !above) continue;
     std::vector<int> ring;
     for (int i = 0; i < 4; ++i) {
-      const double di = mesh.points[t[i]].z - z;
+      const double di = height(t[i]);
       if (di == 0.0) ring.push_back(plane.at(t[i], t[i]));
       for (int j = i + 1; j < 4; ++j) {
-        const double dj = mesh.points[t[j]].z - z;
+        const double dj = height(t[j]);
         if ((di < 0.0 && dj > 0.0) || (di > 0.0 && dj < 0.0)) ring.push_back(plane.at(t[i], t[j]));
       }
     }

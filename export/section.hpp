@@ -22,6 +22,12 @@ struct Section {
 };
 Section tessellation_section(const Tessellation3& t, double z);
 
+// Where a section asked for at `z` is drawn: z itself, unless a vertex of the tessellation
+// lies in that plane (a face of a laminate does, between its layers); then the middle of
+// the gap between that level of vertices and the next one above (below, at the top), where
+// the plane cuts every region it meets through its inside.
+double section_height(const Tessellation3& t, double z);
+
 // The section z = `z` of a tetrahedral mesh: a triangle or quadrilateral per tetrahedron
 // the plane passes through, with that tetrahedron's grain and phase (and index).
 Section mesh_section(const TetMesh& mesh, const std::vector<int>& grain, const std::vector<int>& phase, double z);

@@ -59,12 +59,19 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
 
 GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job) {
   GrainMesh3 m = mesh_tessellation_3d(t, job.options);
-  check_conformity(t, m);
+  try {
+    check_conformity(t, m);
+  } catch (const GeometryError& e) {
+    // Every region meshed, but the pieces do not fit: an inconsistency no config should make.
+    throw GeometryError(std::string("the 3D mesh failed its conformity check (") + e.what() +
+                        "): a grainmesh bug, please report it with this config; another mesh.tets_per_grain (or "
+                        "mesh.size) avoids it");
+  }
   return m;
 }
 
 Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m, const Mesh3Job& job,
-                         Warnings& warnings) {
+                         Warnings& warnings, bool pictures, const std::string& length_unit) {
   const TetQuality q = measure_quality(m.mesh);
   std::vector<double> quality;
   for (const auto& tet : m.mesh.tets)
@@ -77,10 +84,18 @@ Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& 
   for (const Phase& p : t.phases) names.push_back(p.name);
   write_tet_vtu(dir / "mesh.vtu", m.mesh, {{"grain", &m.grain}, {"phase", &m.phase}, {"region", &m.region}},
                 {{"quality", &quality}}, {{"phase_names", names}});
-  const Section section = mesh_section(m.mesh, m.grain, m.phase, job.section * t.depth);
-  write_mesh_png(dir / "mesh.png", section.cells,
-                 {.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain, .legend = names,
-                  .scale_bar = true});
+  const double z = section_height(t, job.section * t.depth);
+  if (pictures) {
+    try {
+      const Section section = mesh_section(m.mesh, m.grain, m.phase, z);
+      write_mesh_png(dir / "mesh.png", section.cells,
+                     {.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain,
+                      .legend = names, .scale_bar = true, .length_unit = length_unit});
+    } catch (const GeometryError& e) {
+      warnings.add("mesh.png not drawn: the section z = " + to_text(z) + " could not be drawn (" + e.what() +
+                   "); another output.section may be");
+    }
+  }
   const double per_grain = static_cast<double>(m.mesh.tets.size()) / static_cast<double>(t.grains.size());
   return {{"mesh",
            {{"points", m.mesh.points.size()},
@@ -99,7 +114,7 @@ Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& 
           {"pairs", {{"x", m.pairs.axis[0].size()}, {"y", m.pairs.axis[1].size()}, {"z", m.pairs.axis[2].size()}}},
           {"conforming", true},  // check_conformity passed, or nothing was written
           {"threads", job.options.threads},
-          {"section_z", job.section * t.depth},
+          {"section_z", z},
           {"surface_seconds", m.surface_seconds},
           {"fill_seconds", m.fill_seconds}};
 }
@@ -118,14 +133,15 @@ void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& te
   Warnings warnings;
   StagedOutput staged(out, "mesh");
   Json report{{"tessellation", tessellation.string()}};
-  report.update(write_mesh_3d_files(staged.dir(), t, m, job, warnings));
+  report.update(write_mesh_3d_files(staged.dir(), t, m, job, warnings, true, {}));
   report["seconds"] = m.seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
   write_report(staged, report, warnings);
   staged.commit();
   print_mesh_3d_summary(report["mesh"], m.seconds);
-  std::printf("  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n", out.string().c_str(), job.section * t.depth);
+  std::printf("  wrote %s/{mesh.vtu, mesh.png (section z = %g), report.json}\n", out.string().c_str(),
+              report["section_z"].get<double>());
 }
 
 }  // namespace grainmesh

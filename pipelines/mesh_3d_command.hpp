@@ -25,11 +25,12 @@ Mesh3Job read_mesh_3d_job(const Config& config, const Tessellation3& t);
 // Meshes the cell and checks the mesh's conformity (check_conformity throws otherwise).
 GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job);
 
-// Writes mesh.vtu and mesh.png (the section) into `dir`; returns what report.json says of
-// the mesh (`mesh` with its quality, counts, seconds per stage); a sliver left in the
-// mesh becomes a warning.
+// Writes mesh.vtu and, when `pictures`, mesh.png (the section at section_height, its
+// scale bar in `length_unit`, empty: unnamed) into `dir`; returns what report.json says of
+// the mesh (`mesh` with its quality, counts, seconds per stage, section_z); a sliver left
+// in the mesh becomes a warning.
 Json write_mesh_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m, const Mesh3Job& job,
-                         Warnings& warnings);
+                         Warnings& warnings, bool pictures, const std::string& length_unit);
 
 // The mesh's one-line summary, on stdout, from the `mesh` write_mesh_3d_files reported.
 void print_mesh_3d_summary(const Json& mesh, double seconds);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/memory.hpp"
 #include "export/picture.hpp"
 #include "pipelines/answer_3d.hpp"
@@ -87,8 +88,7 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
 }
 
 // The run's lines on stdout: what was made and written, and the answer when solved.
-void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3& t, const Tessellate3Job& tess_job,
-                          const GrainMesh3& m, const Json& report, const std::vector<std::string>& case_dirs,
+void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3& t, const GrainMesh3& m, const Json& report, const std::vector<std::string>& case_dirs,
                           const FoamMesh3& fm, const FoamOptions& foam, Boundary boundary, bool solve,
                           bool pictures, const Warnings& warnings) {
   print_tessellation_3d_summary(t, report["seconds"]["tessellate"].get<double>());
@@ -117,13 +117,18 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
                   a["xx"].get<double>(), a["yy"].get<double>(), a["zz"].get<double>());
     }
   }
-  std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png, mesh.vtu, mesh.png (sections z = %g), "
-              "%s, %sconfig.ini, report.json}\n",
-              out.string().c_str(), tess_job.section * t.depth, case_dirs.size() == 1 ? "case/" : "case_*/",
-              !pictures ? ""
-              : foam.delta_T != 0.0 && solve
-                  ? "results.vtu, stress_xx.png, von_mises.png, stress_histogram.png and their _thermal.png, "
-                  : "results.vtu, stress_xx.png, von_mises.png, stress_histogram.png, ");
+  // What is there (the pictures are optional), directories marked, case_* once.
+  std::string written;
+  bool cases_listed = false;
+  for (const std::string& name : entry_names(out)) {
+    const bool load_case = name.rfind("case_", 0) == 0;
+    if (load_case && cases_listed) continue;
+    cases_listed = cases_listed || load_case;
+    written += (written.empty() ? "" : ", ") + (load_case ? std::string("case_*") : name) +
+               (std::filesystem::is_directory(out / name) ? "/" : "");
+  }
+  std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), written.c_str(),
+              pictures ? (" (sections z = " + to_text(report["section_z"].get<double>()) + ")").c_str() : "");
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
 }
@@ -194,8 +199,10 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   StagedOutput staged(out, "run");
   const std::filesystem::path dir = staged.dir();
   Json report{{"config", c.source()}, {"config_fingerprint", config_fingerprint(c)}};
-  report.update(write_tessellation_3d_files(dir, t, tess_job));
-  report.update(write_mesh_3d_files(dir, t, m, mesh_job, warnings));  // its grains and section_z: the same
+  const bool pictures = read_pictures(c) != Pictures::none;
+  const std::string unit = length_unit_name(foam.convert_to_meters);  // the pictures' scale bars
+  report.update(write_tessellation_3d_files(dir, t, tess_job, pictures, unit, warnings));
+  report.update(write_mesh_3d_files(dir, t, m, mesh_job, warnings, pictures, unit));  // its grains and section_z: the same
 
   clock = Clock::now();
   stage.show("exporting");
@@ -217,8 +224,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
     stage.show("solving with solidDisplacementFoam (" + std::to_string(case_dirs.size()) + " case" +
                (case_dirs.size() > 1 ? "s" : "") + ")");
     const SolveInput3 in{dir,  staged, t, e, fm, foam, tess_job.options.deadline,
-                         read_pictures(c) == Pictures::none ? 0 : mesh_job.picture_width, mesh_job.section * t.depth,
-                         length_unit_name(foam.convert_to_meters)};
+                         pictures ? mesh_job.picture_width : 0, report["section_z"].get<double>(), unit};
     solve_cases_3d(in, staged, boundary, stage, report, warnings);
     seconds["solve"] = since(clock);
   }
@@ -230,8 +236,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
   write_report(staged, report, warnings);
   staged.commit();
   if (summary)
-    print_run_3d_summary(out, t, tess_job, m, report, case_dirs, fm, foam, boundary, solve,
-                         solve && read_pictures(c) != Pictures::none, warnings);
+    print_run_3d_summary(out, t, m, report, case_dirs, fm, foam, boundary, solve, pictures, warnings);
 }
 
 }  // namespace grainmesh

@@ -104,7 +104,16 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
 
 Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& c, Warnings& warnings) {
   Rng rng(job.seed);
-  Tessellation3 t = tessellate_3d(job.options, rng);
+  Tessellation3 t;
+  try {
+    t = tessellate_3d(job.options, rng);
+  } catch (const GeometryError& e) {
+    // The stage's own checks failed: an inconsistency no config should be able to make.
+    throw GeometryError(std::string("the 3D tessellation failed its own check (") + e.what() +
+                        "): a grainmesh bug, please report it with this config; another " +
+                        (job.options.seeds.empty() ? "tessellation.seed" : "placing of tessellation.seeds") +
+                        " or tessellation.lloyd_iterations avoids it");
+  }
   const Tessellation3Stats& s = t.stats;
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
     const PhaseStats& ps = s.phases[p];
@@ -123,14 +132,24 @@ Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& c, 
   return t;
 }
 
-Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job) {
+Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job,
+                                 bool pictures, const std::string& length_unit, Warnings& warnings) {
   write_text_file(dir / "tessellation.json", tessellation_to_json(t));
   write_tessellation_vtu(dir / "tessellation.vtu", t);
-  const Section section = tessellation_section(t, job.section * t.depth);
-  PictureOptions picture{.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain,
-                         .scale_bar = true};
-  for (const Phase& p : t.phases) picture.legend.push_back(p.name);
-  write_mesh_png(dir / "tessellation.png", section.cells, picture);
+  const double z = section_height(t, job.section * t.depth);
+  if (pictures) {
+    try {
+      const Section section = tessellation_section(t, z);
+      PictureOptions picture{.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain,
+                             .scale_bar = true, .length_unit = length_unit};
+      for (const Phase& p : t.phases) picture.legend.push_back(p.name);
+      write_mesh_png(dir / "tessellation.png", section.cells, picture);
+    } catch (const GeometryError& e) {
+      // A picture is no reason to fail a run.
+      warnings.add("tessellation.png not drawn: the section z = " + to_text(z) + " could not be drawn (" + e.what() +
+                   "); another output.section may be");
+    }
+  }
   return {{"seed", job.seed},
           {"width", t.width},
           {"height", t.height},
@@ -138,7 +157,7 @@ Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessell
           {"periodic", t.periodic},
           {"grains", t.stats.grains},
           {"statistics", statistics_json(t.stats, t.phases)},
-          {"section_z", job.section * t.depth},
+          {"section_z", z},
           {"vertices", t.vertices.size()},
           {"faces", t.faces.size()},
           {"regions", t.regions.size()}};
@@ -163,7 +182,7 @@ void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out
 
   StagedOutput staged(out, "tessellate");
   Json report{{"config", c.source()}};
-  report.update(write_tessellation_3d_files(staged.dir(), t, job));
+  report.update(write_tessellation_3d_files(staged.dir(), t, job, true, {}, warnings));
   report["seconds"] = seconds;
   add_time_limit(report, job.options.deadline);
   report["peak_memory_mib"] = peak_memory_mib();
@@ -172,7 +191,7 @@ void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out
 
   print_tessellation_3d_summary(t, seconds);
   std::printf("  wrote %s/{tessellation.json, tessellation.vtu, tessellation.png (section z = %g), report.json}\n",
-              out.string().c_str(), job.section * t.depth);
+              out.string().c_str(), report["section_z"].get<double>());
 }
 
 }  // namespace grainmesh

@@ -27,9 +27,13 @@ Tessellate3Job read_tessellate_3d_job(const Config& config);
 // fraction key; a fraction missed by more than 1 % becomes a warning.
 Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& config, Warnings& warnings);
 
-// Writes tessellation.json, tessellation.vtu and tessellation.png (the section) into
-// `dir`; returns what report.json says of the cell (seed, box, statistics, counts).
-Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job);
+// Writes tessellation.json, tessellation.vtu and, when `pictures`, tessellation.png (the
+// section at section_height: a laminate's face may lie in the plane asked for), its scale
+// bar in `length_unit` (empty: the config's own, unnamed), into `dir`; returns what
+// report.json says of the cell (seed, box, statistics, counts, section_z). A section that
+// cannot be drawn is a warning, not a failure.
+Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessellation3& t, const Tessellate3Job& job,
+                                 bool pictures, const std::string& length_unit, Warnings& warnings);
 
 // The cell's one-line summary and its phases, on stdout.
 void print_tessellation_3d_summary(const Tessellation3& t, double seconds);

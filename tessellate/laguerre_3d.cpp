@@ -12,6 +12,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <type_traits>
 
 #include "common/errors.hpp"
 
@@ -56,11 +57,13 @@ struct Diagram {
   };
 
   SiteCode code;
+  double reach2 = 0.0;        // the squared distance no seed's cell reaches beyond: twice the box's diagonal
   std::vector<Point> points;  // the diagram's vertices, each exact point once
   std::vector<Cell> cells;    // per seed; no rings when hidden
 
   Diagram(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box, bool periodic) {
     code.periodic = periodic;
+    reach2 = 4.0 * dot(box, box);
     const int n = static_cast<int>(seeds.size());
     std::vector<std::pair<WPoint, int>> sites;
     sites.reserve(static_cast<std::size_t>(n) * code.per_seed());
@@ -95,12 +98,43 @@ struct Diagram {
   int vertex_of(const Regular& rt, typename Regular::Cell_handle c, std::map<Point, int, LessXyz>& ids) {
     if (c->info() < 0) {
       if (rt.is_infinite(c)) throw GeometryError("3D Laguerre diagram: a seed's cell is unbounded");
-      const Point p = rt.dual(c);
+      const Point p = power_centre(c);
       const auto [it, added] = ids.emplace(p, static_cast<int>(points.size()));
       if (added) points.push_back(p);
       c->info() = it->second;
     }
     return c->info();
+  }
+
+  // The power centre of cell c: its dual vertex. In floating point it is what CGAL
+  // constructs, unless the cell is so flat that the point misses its corners' power
+  // distances, or lies further from them than any seed's cell reaches (a lattice of
+  // seeds moved by rounding: cospherical corners make slivers, whose centres came out on
+  // their axis 1e14 away, where the power distances round alike); then it is constructed
+  // exactly and rounded.
+  Point power_centre(typename Regular::Cell_handle c) const {
+    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+    const Point p = c->weighted_circumcenter();
+    if constexpr (std::is_same_v<K, EK>) {
+      return p;
+    } else {
+      double lo = 0.0, hi = 0.0, scale = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        const auto& w = c->vertex(k)->point();
+        const double d = CGAL::to_double(CGAL::squared_distance(p, w.point()) - w.weight());
+        lo = k == 0 ? d : std::min(lo, d);
+        hi = k == 0 ? d : std::max(hi, d);
+        scale = std::max(scale, CGAL::to_double(CGAL::squared_distance(c->vertex(0)->point().point(), w.point())));
+      }
+      if (hi - lo <= 1e-9 * scale && hi <= reach2) return p;
+      std::array<EK::Weighted_point_3, 4> exact;
+      for (int k = 0; k < 4; ++k) {
+        const auto& w = c->vertex(k)->point();
+        exact[k] = EK::Weighted_point_3(EK::Point_3(w.x(), w.y(), w.z()), EK::FT(w.weight()));
+      }
+      const EK::Point_3 q = EK().construct_weighted_circumcenter_3_object()(exact[0], exact[1], exact[2], exact[3]);
+      return Point(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    }
   }
 
   Cell cell_of(const Regular& rt, typename Regular::Vertex_handle v, std::map<Point, int, LessXyz>& ids) {

@@ -18,6 +18,10 @@ namespace {
 
 // A collapse may not make a dihedral angle of a region sharper than this.
 constexpr double kMinDihedral = 20.0 * std::numbers::pi / 180.0;
+// Nor move more than this share of a grain's volume to its neighbours: a short edge's
+// collapse moves a sliver; a layer of a laminate the box cut in two (pieces half its
+// thickness, below the threshold when the layers are thin) must keep its volume.
+constexpr double kMaxGrainVolumeChange = 0.05;
 
 struct PointHash {
   std::size_t operator()(const Vec3& p) const {
@@ -38,6 +42,9 @@ class Collapser {
       if (r.grain >= static_cast<int>(grain_regions_.size())) grain_regions_.resize(r.grain + 1, 0);
       ++grain_regions_[r.grain];
     }
+    grain_volume_.assign(grain_regions_.size(), 0.0);
+    for (int r = 0; r < static_cast<int>(t.regions.size()); ++r) grain_volume_[t.regions[r].grain] += volume(r);
+    grain_now_ = grain_volume_;
     for (int v = 0; v < static_cast<int>(t.vertices.size()); ++v) at_.emplace(t.vertices[v], v);
   }
 
@@ -156,6 +163,34 @@ class Collapser {
       if (!bounded) return false;
     }
     return true;
+  }
+
+  // Region r's volume, its faces as finish() will make them.
+  double volume(int r) const {
+    double v = 0.0;
+    const Vec3 o = t_.vertices[t_.faces[t_.regions[r].faces[0]].ring[0]];
+    for (int f : t_.regions[r].faces) {
+      if (dead_[f]) continue;
+      const Face3& face = t_.faces[f];
+      const double sign = face.back == r ? 1.0 : -1.0;
+      for (const auto& [a, b, c] : triangles(face.ring))
+        v += sign * dot(t_.vertices[a] - o, cross(t_.vertices[b] - o, t_.vertices[c] - o));
+    }
+    return v / 6.0;
+  }
+
+  // The grains' volumes now that the regions `regions` changed (their volumes before by
+  // grain in `before`), when no grain has moved more than kMaxGrainVolumeChange from its
+  // volume before any collapse; empty otherwise.
+  std::map<int, double> grains_kept(const std::set<int>& regions, const std::map<int, double>& before) const {
+    std::map<int, double> after;
+    for (int r : regions) after[t_.regions[r].grain] += volume(r);
+    std::map<int, double> now;
+    for (const auto& [g, v] : before) {
+      now[g] = grain_now_[g] + after[g] - v;
+      if (std::abs(now[g] - grain_volume_[g]) > kMaxGrainVolumeChange * grain_volume_[g]) return {};
+    }
+    return now;
   }
 
   // A region still closed and outward, with at least four faces and positive volume.
@@ -294,11 +329,15 @@ class Collapser {
           regions.insert(t_.faces[f].back);
           if (t_.faces[f].front >= 0) regions.insert(t_.faces[f].front);
         }
-    std::map<int, double> before;
-    for (int r : regions) before[r] = region_sharpest(r);
+    std::map<int, double> before, grain_before;
+    for (int r : regions) {
+      before[r] = region_sharpest(r);
+      grain_before[t_.regions[r].grain] += volume(r);
+    }
     Saved s;
     for (std::size_t k = 0; k < edges.size(); ++k) merge(edges[k].first, edges[k].second, targets[k], s);
-    bool ok = true;
+    const std::map<int, double> grain_after = grains_kept(regions, grain_before);
+    bool ok = !grain_after.empty();
     for (const auto& [f, ring] : s.rings)
       if (!dead_[f]) ok = ok && face_ok(f) && touches_box_by_its_faces(f);
     // No region may lose its shape: no dihedral angle sharper than kMinDihedral made (or
@@ -330,6 +369,7 @@ class Collapser {
       list.erase(std::unique(list.begin(), list.end()), list.end());
     }
     for (int r : flattened) remove(r);
+    for (const auto& [g, v] : grain_after) grain_now_[g] = v;
     return true;
   }
 
@@ -471,6 +511,8 @@ class Collapser {
   std::vector<bool> dead_region_;
   std::map<int, int> fan_centre_;  // bent faces split about a new centre point: face -> its vertex
   std::vector<int> grain_regions_;  // live regions of each grain
+  std::vector<double> grain_volume_;  // each grain's volume before any collapse
+  std::vector<double> grain_now_;     // and after those made
   std::unordered_map<Vec3, int, PointHash> at_;
 
  public:

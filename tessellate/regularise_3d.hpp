@@ -10,8 +10,9 @@ namespace grainmesh {
 // stays where it is; an edge on a side collapses with its periodic images, so partners
 // stay exact. Bounded: the midpoint put on every side either end lies on.
 // A collapse that would fold a face, make a dihedral angle of a region sharper than 20
-// degrees (or than it was), or leave a region open, with fewer than four faces or without
-// volume is not made, except that a region it flattens (a sliver the box cut off a grain)
+// degrees (or than it was), move more than 5 % of a grain's volume to its neighbours (a
+// laminate's layer the box cut in two), or leave a region open, with fewer than four faces
+// or without volume is not made, except that a region it flattens (a sliver the box cut off a grain)
 // is removed, its opposite faces joined, when its grain keeps another region. A
 // triangular face that loses an edge disappears. Faces left bent are split into planar
 // triangles (no new vertex; the triangulation with the largest smallest angle), so every
