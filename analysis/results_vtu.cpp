@@ -2,12 +2,22 @@
 
 #include "analysis/phase_statistics_3d.hpp"
 #include "analysis/stress_measures.hpp"
+#include "export/picture.hpp"
 #include "export/vtu.hpp"
 
 namespace grainmesh {
 
+namespace {
+// A displacement (metres) in the mesh's units.
+std::vector<double> in_mesh_units(const FieldValues& D, double metres_per_unit) {
+  std::vector<double> out = D.values;
+  for (double& v : out) v /= metres_per_unit;
+  return out;
+}
+}  // namespace
+
 void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
-                       const std::vector<SolvedFields>& cases) {
+                       const std::vector<SolvedFields>& cases, double metres_per_unit) {
   const std::size_t cells = m.mesh.cells();
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
   for (const SolvedFields& c : cases) {
@@ -19,17 +29,17 @@ void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, c
       mises.push_back(von_mises(s));
       principal.push_back(largest_principal(s));
     }
-    fields.push_back({"displacement" + c.suffix, D.values, 3});
+    fields.push_back({"displacement" + c.suffix, in_mesh_units(D, metres_per_unit), 3});
     fields.push_back({"stress" + c.suffix, std::move(stress), 6});
     fields.push_back({"von_mises" + c.suffix, std::move(mises)});
     fields.push_back({"max_principal" + c.suffix, std::move(principal)});
   }
-  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}});
+  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}, {"length_unit", {length_unit_name(metres_per_unit)}}});
 }
 
 void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
                           const std::vector<std::string>& phase_names,
-                          const std::vector<std::pair<std::string, const CaseFields*>>& cases) {
+                          const std::vector<std::pair<std::string, const CaseFields*>>& cases, double metres_per_unit) {
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
   for (const auto& [suffix, f] : cases) {
     std::vector<double> stress, mises;
@@ -38,11 +48,11 @@ void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
       for (const int k : {0, 3, 5, 1, 4, 2}) stress.push_back(s[k]);
       mises.push_back(von_mises_3d(s));
     }
-    fields.push_back({"displacement" + suffix, f->displacement.values, 3});
+    fields.push_back({"displacement" + suffix, in_mesh_units(f->displacement, metres_per_unit), 3});
     fields.push_back({"stress" + suffix, std::move(stress), 6});
     fields.push_back({"von_mises" + suffix, std::move(mises)});
   }
-  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}});
+  write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}, {"length_unit", {length_unit_name(metres_per_unit)}}});
 }
 
 }  // namespace grainmesh

@@ -21,17 +21,21 @@ struct SolvedFields {
   const std::vector<StressState>* stress = nullptr;
 };
 
-// Cell arrays: grain, phase, and per case displacement (vector, m), stress (symmetric
-// tensor, Pa, the recovered cell stress; zz the out-of-plane stress), von_mises and
-// max_principal (Pa); field data phase_names. Throws IoError naming the file when it
-// cannot be written.
+// One length unit for points and displacements alike, the mesh's (`metres_per_unit` of
+// them to the metre: export.convert_to_meters), so that ParaView's Warp By Vector moves
+// the cells by what the solve gave; field data length_unit names it ("µm").
+//
+// Cell arrays: grain, phase, and per case displacement (vector, mesh units), stress
+// (symmetric tensor, Pa, the recovered cell stress; zz the out-of-plane stress),
+// von_mises and max_principal (Pa); field data phase_names, length_unit. Throws IoError
+// naming the file when it cannot be written.
 void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
-                       const std::vector<SolvedFields>& cases);
+                       const std::vector<SolvedFields>& cases, double metres_per_unit);
 
-// The same over a 3D case's cells (VTK polyhedra, mesh units): grain, phase, and per case
-// (`suffix` and its fields, the whole stress) displacement, stress and von_mises.
+// The same over a 3D case's cells (VTK polyhedra): grain, phase, and per case (`suffix`
+// and its fields, the whole stress) displacement, stress and von_mises.
 void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
                           const std::vector<std::string>& phase_names,
-                          const std::vector<std::pair<std::string, const CaseFields*>>& cases);
+                          const std::vector<std::pair<std::string, const CaseFields*>>& cases, double metres_per_unit);
 
 }  // namespace grainmesh

@@ -229,8 +229,9 @@ double thermal_strain(const FoamCell& cell, const FoamOptions& options);
 
 // Checks a load against the cell it acts on, before any mesh is made: export.cyclic only
 // on a periodic cell (and with a displacement load), a cell of at least 1 nm in metres, a
-// mean strain (displacement / width, or traction / the softest E) of at most 1 %, and a
-// non-zero load. Throws ConfigError naming the key. Returns warnings: a cell above 1 m.
+// mean strain (displacement / width, or traction / the softest E) of at most 1 %, each
+// phase's free thermal strain (alpha delta_T) at most 5 %, and a non-zero load. Throws
+// ConfigError naming the key that makes the strain. Returns warnings: a cell above 1 m.
 std::vector<std::string> check_load(const FoamCell& cell, const FoamOptions& options);
 
 // The macroscopic strain (Voigt order, tensor components) a cyclic case imposes

@@ -196,7 +196,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
                                  {"sigma_xx", h.volume_average.xx},
                                  {"sigma_yy", h.volume_average.yy},
                                  {"sigma_xy", h.volume_average.xy}};
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}});
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}}, foam.convert_to_meters);
   write_field_pictures(dir, h.fields, h.cell_stress, e, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
@@ -270,7 +270,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
     if (picture_width > 0)
       write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, e);
   }
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
 
   check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress),

@@ -132,7 +132,7 @@ void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised
     cases.push_back({"_thermal", &thermal->fields});
     cases.push_back({"_thermal_xx", &thermal->loaded_fields});
   }
-  write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), cases);
+  write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), cases, in.foam.convert_to_meters);
 }
 
 }  // namespace
@@ -144,7 +144,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   Answer answer;
   answer.stresses["mixed"] = phase_stresses_json(h.fields, in);
   write_state_pictures(in, h.fields, "mixed", "");
-  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), {{"", &h.fields}});
+  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), {{"", &h.fields}}, in.foam.convert_to_meters);
   Json& effective = answer.effective;
   effective = solve_json(h.run, in.dir);
   effective["boundary"] = "mixed";

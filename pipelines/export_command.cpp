@@ -12,6 +12,7 @@
 #include "export/mesh_description.hpp"
 #include "export/vtu.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/material_units.hpp"
 #include "pipelines/report.hpp"
 
 namespace grainmesh {
@@ -20,7 +21,8 @@ const std::vector<std::string>& export_config_keys() {
   static const std::vector<std::string> keys{
       "export.thickness", "export.convert_to_meters", "export.cyclic", "export.format", "export.grain_zones", "export.cells",
       "export.stiffness_interpolation",
-      "load.displacement", "load.traction", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu"};
+      "load.displacement", "load.traction", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu",
+      kUnitsCheckedKey};
   return keys;
 }
 
@@ -98,6 +100,7 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
     if (std::isnan(fp.poisson_ratio)) c.fail(key + ".nu", "missing: the mesh does not give this phase's Poisson ratio");
     if (!(fp.youngs_modulus > 0.0) || !std::isfinite(fp.youngs_modulus))
       c.fail(key + ".E", "must be positive, got " + to_text(fp.youngs_modulus));
+    if (c.has(key + ".E")) check_modulus_unit(c, key + ".E", fp.youngs_modulus);
     if (!(fp.poisson_ratio > -1.0 && fp.poisson_ratio < 0.5))
       c.fail(key + ".nu", "must lie in (-1, 0.5), got " + to_text(fp.poisson_ratio));
     m.phases.push_back(fp);

@@ -10,6 +10,7 @@
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "domain/shape_parser.hpp"
+#include "pipelines/material_units.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/tessellate_3d_command.hpp"
@@ -25,7 +26,7 @@ const std::vector<std::string>& tessellate_config_keys() {
       "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
       "tessellation.contiguity", "tessellation.contiguity_phase",
       "phase.*.fraction",       "phase.*.E",               "phase.*.nu",              "phase.*.alpha",
-      "output.picture_width",   "output.section",          kTimeLimitKey};
+      "output.picture_width",   "output.section",          kTimeLimitKey,             kUnitsCheckedKey};
   return keys;
 }
 
@@ -84,12 +85,14 @@ std::vector<Phase> read_phases(const Config& c) {
       sum += p.fraction;
     }
     p.youngs_modulus = positive(c, key + "E");
+    check_modulus_unit(c, key + "E", p.youngs_modulus);
     if (!c.has(key + "nu")) c.fail(key + "nu", "missing (required)");
     p.poisson_ratio = c.number(key + "nu");
     if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) c.fail(key + "nu", "must lie in (-1, 0.5), got " + c.text(key + "nu"));
     if (c.has(key + "alpha")) {
       p.alpha = c.number(key + "alpha");
       if (!std::isfinite(*p.alpha)) c.fail(key + "alpha", "must be a finite number (1/K), got " + c.text(key + "alpha"));
+      check_expansion_unit(c, key + "alpha", *p.alpha);
     }
     phases.push_back(p);
   }

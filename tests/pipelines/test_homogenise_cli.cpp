@@ -125,10 +125,14 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
   CHECK(report_of(dir / "mixed")["effective"]["modulus"].get<double>() == Approx(m.M()).epsilon(1e-3));
   // results.vtu: the uniform plane-strain state of a uniaxial strain e in every cell,
   // sigma_xx = M e, sigma_yy = sigma_zz = lambda e, von Mises 2 mu e, the largest
-  // principal sigma_xx; the grain, the phase and the phases' names.
+  // principal sigma_xx; the grain, the phase and the phases' names; the displacement in
+  // the points' unit (e x at a cell's centre, x in micrometres), which the file names.
   const VtuContents results = read_vtu(dir / "mixed/results.vtu");
-  REQUIRE(results.labels.size() == 1);
+  REQUIRE(results.labels.size() == 2);
+  CHECK(results.labels[0].name == "phase_names");
   CHECK(results.labels[0].labels == std::vector<std::string>{"particulate", "matrix"});
+  CHECK(results.labels[1].name == "length_unit");
+  CHECK(results.labels[1].labels == std::vector<std::string>{"\u00b5m"});
   auto field = [&](const VtuContents& v, const std::string& name) -> const CellField& {
     for (const CellField& f : v.fields)
       if (f.name == name) return f;
@@ -149,6 +153,11 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
                       std::abs(mises[k] - 2 * m.mu() * strain), std::abs(principal[k] - m.M() * strain)});
   }
   CHECK(worst < 1e-4 * m.M() * strain);
+  const auto& displacement = std::get<std::vector<double>>(field(results, "displacement").values);
+  double off = 0.0;
+  for (std::size_t k = 0; k < mises.size(); ++k)
+    off = std::max(off, std::abs(displacement[3 * k] - strain * cell_centroid(results.mesh, k).x));
+  CHECK(off < 1e-3 * strain * 3.0);  // of the largest displacement, 0.001 um
   // The phase statistics of the same uniform state: every phase carries it, with no
   // spread, and the stress partition is 1.
   const Json stresses = report_of(dir / "mixed")["stresses"]["mixed"];

@@ -226,6 +226,20 @@ TEST_CASE("a thermal load refuses what it cannot do in one line, leaving nothing
        2,
        "load.delta_T: needs homogenise.boundary = periodic"},
       {with({"--set", "phase.particulate.alpha=x", "--set", "phase.matrix.alpha=14e-6"}), 2, "phase.particulate.alpha: "},
+      // Each slip named by its own key, not as "load.traction: 0 Pa is above 1 % of ... (0 Pa)".
+      {with({"--set", "phase.particulate.alpha=5e-6", "--set", "phase.matrix.alpha=14e-6", "--set", "load.displacement=0.1"}),
+       2,
+       "load.displacement: 0.1 over a cell 3 wide is a mean strain of 0.0333, above 1 %"},
+      {with({"--set", "phase.particulate.alpha=5.2", "--set", "phase.matrix.alpha=14e-6"}),
+       2,
+       "phase.particulate.alpha: 5.2 /K is above 1e-3 /K: alpha is in 1/K (WC 5.2e-6, not 5.2 (ppm/K)); if it is meant, "
+       "set units.checked = true"},
+      {with({"--set", "phase.particulate.alpha=2e-3", "--set", "phase.matrix.alpha=14e-6", "--set", "units.checked=true"}),
+       2,
+       "load.delta_T: -1000 K gives phase particulate (alpha 0.002 /K) a free strain of 2.2, above 5 %"},
+      {with({"--set", "phase.particulate.alpha=5e-6", "--set", "phase.matrix.alpha=14e-6", "--set", "phase.matrix.E=300"}),
+       2,
+       "phase.matrix.E: 300 Pa is below 1 MPa: E is in Pa (WC 700e9, not 300 (GPa)); if it is meant, set units.checked = true"},
   };
   int k = 0;
   for (const test::Refusal& r : refusals) test::check_refused(r, dir / ("out" + std::to_string(k++)));
