@@ -115,6 +115,10 @@ struct FoamOptions {
 };
 
 
+// A 2D case's out-of-plane condition as reports name it: "plane_strain" (the default:
+// held, e_zz = 0, a stress sigma_zz carried) or "plane_stress" (free, sigma_zz = 0).
+inline const char* plane_state(const FoamOptions& o) { return o.plane_stress ? "plane_stress" : "plane_strain"; }
+
 // The command that solves a written case: solidDisplacementFoam, or on o.processes > 1
 // `mpirun --oversubscribe -np N solidDisplacementFoam -parallel` (Open MPI; run as root,
 // it needs OMPI_ALLOW_RUN_AS_ROOT and OMPI_ALLOW_RUN_AS_ROOT_CONFIRM, which

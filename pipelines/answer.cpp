@@ -140,7 +140,9 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
   };
   Json& effective = answer.effective;
   effective["thermal_expansion"] = expansion_json(r.expansion);
-  Json thermal{{"delta_T", r.delta_T}};
+  // In plane strain the cell is held out of plane: one material expands (1 + nu) alpha in
+  // plane, and carries sigma_zz; in plane stress alpha (README, Thermal residual stress).
+  Json thermal{{"delta_T", r.delta_T}, {"plane_state", plane_state(foam)}};
   if (const auto levin = levin_expansion(e.phases, C, foam.plane_stress)) {
     thermal["levin"] = expansion_json(*levin);
     thermal["levin_difference"] =

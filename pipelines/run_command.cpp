@@ -115,6 +115,7 @@ Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, con
               {"memory_mib", memory},
               {"case", case_dirs.size() == 1 ? Json(case_dirs[0]) : Json(case_dirs)},
               {"case_format", plan.foam.binary ? "binary" : "ascii"},
+              {"plane_state", plane_state(plan.foam)},
               {"solved", solve}};
   // Polygonal cells: how many the case has (mesh.cells counts the triangles they come from).
   if (plan.foam.cells == FoamOptions::Cells::polygons) report["case_cells"] = {{"shape", "polygons"}, {"cells", e.mesh.cells()}};
@@ -184,8 +185,10 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
                 report["effective"]["load_cases"].size(), report["effective"]["corrections"].get<int>());
     if (plan.foam.delta_T != 0.0) {
       const Json& a = report["effective"]["thermal_expansion"];
-      std::printf("  thermal: free expansion a11 %.4g, a22 %.4g 1/K; residual stresses in report.json (stresses.thermal)\n",
-                  a["a11"].get<double>(), a["a22"].get<double>());
+      std::printf("  thermal (%s): free in-plane expansion a11 %.4g, a22 %.4g 1/K%s; residual stresses in report.json "
+                  "(stresses.thermal)\n",
+                  plan.foam.plane_stress ? "plane stress" : "plane strain", a["a11"].get<double>(), a["a22"].get<double>(),
+                  plan.foam.plane_stress ? "" : " (held out of plane: not a 3D expansion, see README)");
     }
   }
   if (!warnings.all().empty())
@@ -257,7 +260,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const std::vector<std::string> case_dirs = write_cases(dir, e, foam, plan.boundary, pm);
   seconds["export"] = since(clock);
   memory.end("export");
-  write_text_file(dir / "config.ini", config_ini(c));
+  write_text_file(dir / "config.ini",
+                  config_ini(c, {std::string("2D: solved in ") + (foam.plane_stress ? "plane stress (load.plane_stress = true)"
+                                                                                    : "plane strain (load.plane_stress = false, the default)")}));
   Json report = run_report(c, plan, t, m, q, e, case_dirs, seconds, memory.json(), solve);
 
   const double solve_seconds =

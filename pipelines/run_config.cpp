@@ -45,7 +45,7 @@ std::vector<std::string> run_config_keys() {
 
 const char* default_run_config() { return kDefaultRunConfig; }
 
-std::string config_ini(const Config& config) {
+std::string config_ini(const Config& config, const std::vector<std::string>& notes) {
   // "a.b.c" is key c of section [a.b]; sections in order of first appearance.
   std::vector<std::string> order;
   std::map<std::string, std::string> body;
@@ -56,6 +56,7 @@ std::string config_ini(const Config& config) {
     body[section] += key.substr(dot + 1) + " = " + value + "\n";
   }
   std::string text = "# The resolved config of a grainmesh run: `grainmesh run config.ini -o OUT` repeats it.\n";
+  for (const std::string& note : notes) text += "# " + note + "\n";
   for (const std::string& s : order) text += "\n[" + s + "]\n" + body[s];
   return text;
 }

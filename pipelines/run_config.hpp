@@ -41,8 +41,9 @@ std::vector<std::string> run_config_keys();
 // The embedded default config's text.
 const char* default_run_config();
 
-// The config as INI text, section by section in order of first appearance.
-std::string config_ini(const Config& config);
+// The config as INI text, section by section in order of first appearance; each of
+// `notes` a comment line at the top (what the keys left to their defaults meant).
+std::string config_ini(const Config& config, const std::vector<std::string>& notes = {});
 
 // How the cell is loaded and homogenised (homogenise.boundary): mixed, the default, or
 // periodic.

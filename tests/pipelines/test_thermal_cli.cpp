@@ -131,6 +131,14 @@ TEST_CASE("a temperature change on one material: no residual stress, the free ex
           Approx(plane_stress ? 0.0 : scale).margin(1e-6 * scale));
     CHECK(fs::exists(out / "case_thermal/0/T"));
     CHECK(fs::exists(out / "stress_histogram_thermal.png"));
+    // Which state it was, wherever the answer is read: the report, the thermal answer, the
+    // config that repeats the run, the summary line.
+    const std::string state = plane_stress ? "plane_stress" : "plane_strain";
+    CHECK(report["plane_state"] == state);
+    CHECK(report["effective"]["thermal"]["plane_state"] == state);
+    CHECK(test::read_file(out / "config.ini").find(plane_stress ? "# 2D: solved in plane stress" : "# 2D: solved in plane strain") !=
+          std::string::npos);
+    CHECK(r.out.find(plane_stress ? "thermal (plane stress)" : "thermal (plane strain)") != std::string::npos);
   }
 }
 
