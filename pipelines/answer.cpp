@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "analysis/bounds.hpp"
+#include "analysis/check_mesh.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
@@ -16,6 +17,14 @@
 namespace grainmesh {
 
 std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
+
+void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline, Json& report, Warnings& warnings) {
+  const Json& cases = report["case"];
+  const std::string first = cases.is_array() ? cases.front().get<std::string>() : cases.get<std::string>();
+  const MeshCheck check = check_mesh(dir / first, deadline);
+  report["mesh_check"] = {{"case", first}, {"failed_checks", check.failed_checks}, {"failures", check.failures}};
+  if (const std::string w = mesh_check_warning(check, first); !w.empty()) warnings.add(w);
+}
 
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
   Json json{{"corrections", r.corrections},

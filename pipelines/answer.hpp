@@ -58,6 +58,11 @@ double levin_difference(const std::vector<double>& expansion, const std::vector<
 // A distribution in report.json: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d);
 
+// OpenFOAM's checkMesh on the run's first case in `dir` (report["case"] names the cases,
+// which share one mesh) before it is solved: report.json's mesh_check {case,
+// failed_checks, failures}, and a failed check a warning (check_mesh.hpp).
+void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline, Json& report, Warnings& warnings);
+
 // What the answers are computed from and written beside: the run's staging directory
 // `dir` (cases in it), its tessellation and exported mesh, the export's options,
 // the run's time limit and its pictures (none when picture_width is 0) with their unit.

@@ -139,6 +139,7 @@ void print_run_3d_summary(const std::filesystem::path& out, const Tessellation3&
 void solve_cases_3d(const SolveInput3& in, StagedOutput& staged, Boundary boundary, StageLine& stage, Json& report,
                     Warnings& warnings) {
   std::vector<std::string> solve_warnings;
+  check_case_mesh(in.dir, in.deadline, report, warnings);
   try {
     Answer answer = boundary == Boundary::mixed ? homogenise_mixed_3d(in, solve_warnings)
                                                 : homogenise_periodic_3d(in, solve_warnings);

@@ -132,6 +132,7 @@ double solve_stage(const SolveInput& in, StagedOutput& staged, Boundary boundary
   memory.begin(true);
   stage.show("solving with solidDisplacementFoam");
   std::vector<std::string> solve_warnings;
+  check_case_mesh(in.dir, in.deadline, report, warnings);
   try {
     Answer answer = boundary == Boundary::mixed ? homogenise_mixed(in, solve_warnings)
                                                 : homogenise_periodic(in, solve_warnings);

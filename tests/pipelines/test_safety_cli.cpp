@@ -363,3 +363,33 @@ TEST_CASE("small things a new user tripped over", "[cli][safety]") {
   CHECK(uniaxial.out.find("Reuss") == std::string::npos);
   CHECK_FALSE(fs::exists(dir / "x"));
 }
+
+TEST_CASE("a case that fails one of checkMesh's checks is a warning, not a silent log line", "[cli][safety][openfoam]") {
+  test::ScratchDir dir("checkmesh-fails");
+  // A stand-in checkMesh on PATH that fails a check the way OpenFOAM's does (a 3D case had
+  // two faces of skewness 5.4: "Failed 1 mesh checks" in its log, and nothing said so).
+  const fs::path bin = dir / "bin";
+  fs::create_directories(bin);
+  std::ofstream(bin / "checkMesh") << "#!/bin/sh\necho 'Checking geometry...'\n"
+                                      "echo ' ***Max skewness = 5.4, 2 highly skew faces detected which may impair the "
+                                      "quality of the results'\necho 'Failed 1 mesh checks.'\necho End\n";
+  fs::permissions(bin / "checkMesh", fs::perms::owner_all);
+  const auto r = test::run_grainmesh({"run", "-o", (dir / "out").string(), "--solve", "--quiet", "--set",
+                                      "tessellation.grains=20", "--set", "output.pictures=none"},
+                                     {}, "PATH=" + test::shell_quote(bin.string()) + ":$PATH");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("grainmesh: warning: checkMesh: failed 1 mesh check in case (Max skewness = 5.4, 2 highly skew faces") !=
+        std::string::npos);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "out/report.json"));
+  CHECK(report["mesh_check"]["failed_checks"] == 1);
+  bool warned = false;
+  for (const auto& w : report["warnings"]) warned = warned || w.get<std::string>().rfind("checkMesh: failed 1", 0) == 0;
+  CHECK(warned);
+  // The real checkMesh on the same cell: passed, and said so.
+  const auto ok = test::run_grainmesh({"run", "-o", (dir / "ok").string(), "--solve", "--quiet", "--set",
+                                       "tessellation.grains=20", "--set", "output.pictures=none"});
+  REQUIRE(ok.exit_code == 0);
+  CHECK(nlohmann::json::parse(test::read_file(dir / "ok/report.json"))["mesh_check"]["failed_checks"] == 0);
+  CHECK(ok.err.find("checkMesh") == std::string::npos);
+}
