@@ -5,7 +5,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 RUN_OUT ?= out
 
-.PHONY: all deps configure build san-configure san-build run test fuzz bench clean
+.PHONY: all deps configure build san-configure san-build run test fuzz bench clean install
 
 all: build
 
@@ -38,6 +38,13 @@ run: build
 	./$(BUILD_DIR)/grainmesh run -o $(RUN_OUT)/run
 	$(RUN_OUT)/run/case/Allrun
 	@echo "make run: everything in $(RUN_OUT)/run: tessellation.{json,png}, mesh.{vtu,png}, case/ (checked and solved: case/log.*; open case/case.foam in ParaView), config.ini, report.json"
+
+# grainmesh and its cluster scripts into PREFIX/bin (grainmesh, grainmesh-slurm-sweep,
+# grainmesh-slurm-cluster); DESTDIR stages them for a package.
+PREFIX ?= /usr/local
+DESTDIR ?=
+install: build
+	@DESTDIR="$(DESTDIR)" cmake --install $(BUILD_DIR) --prefix "$(PREFIX)"
 
 # Every test twice: in the release build, then in the sanitizer build, which also runs each
 # fuzz target for a fixed number of inputs (GRAINMESH_FUZZ_RUNS, the same on every machine).

@@ -1,5 +1,7 @@
 #include "common/text_file.hpp"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -21,7 +23,8 @@ std::string read_text_file(const fs::path& file, const std::string& what) {
 }
 
 void write_text_file(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
+  // Of this process alone: shards of a sweep write its summary side by side.
+  const fs::path tmp = file.string() + "." + std::to_string(::getpid()) + ".tmp";
   const TemporaryPath registered(tmp);  // removed on an interrupt
   {
     std::ofstream out(tmp, std::ios::binary);

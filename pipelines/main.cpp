@@ -17,6 +17,7 @@
 #include "common/interrupt.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/converge_command.hpp"
+#include "pipelines/output_dir.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
@@ -193,9 +194,10 @@ Config run_config(const po::variables_map& vm) {
 
 // `grainmesh run [CONFIG] -o OUT [--set KEY=VALUE ...]`: without CONFIG, the embedded default.
 int run_main(const std::vector<std::string>& args) {
-  po::options_description desc("grainmesh run [CONFIG] -o OUT [--solve] [--quiet] [--set KEY=VALUE ...]");
+  po::options_description desc("grainmesh run [CONFIG] -o OUT [--solve] [--force] [--quiet] [--set KEY=VALUE ...]");
   desc.add_options()("config", po::value<std::string>(), "config file (INI); none = the embedded default (data/default.ini)")(
       "solve", "also solve the case with solidDisplacementFoam and homogenise (report.json: effective)")(
+      "force", "replace an OUT that holds a solved run even without --solve")(
       "quiet,q", "no stage and progress display on the terminal");
   add_output_options(desc, "output directory (replaced only when it holds an earlier output of this command)");
   const auto parsed = parse_options("run", desc, {"config"}, args);
@@ -204,6 +206,7 @@ int run_main(const std::vector<std::string>& args) {
   if (!vm.count("output")) throw ConfigError("run: missing -o OUT (the output directory)");
   announce_output(vm);
   const Config config = run_config(vm);
+  refuse_unsolved_over_solved(vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("force") > 0);
   naming_errors(config, [&] {
     run_run_command(config, vm["output"].as<std::string>(), vm.count("solve") > 0, vm.count("quiet") > 0);
   });

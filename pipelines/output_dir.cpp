@@ -125,6 +125,22 @@ void remove_stale_siblings(const fs::path& final_dir) {
   }
 }
 
+void refuse_unsolved_over_solved(const fs::path& final_dir, bool solve, bool force) {
+  if (solve || force) return;
+  std::error_code ec;
+  if (!fs::exists(final_dir / "report.json", ec)) return;
+  bool solved = false;
+  try {
+    const nlohmann::json report = nlohmann::json::parse(read_text_file(final_dir / "report.json"));
+    solved = report.is_object() && report.value(kReportCommand, "") == "run" && report.contains("effective");
+  } catch (const std::exception&) {
+    return;  // not a report this check can read: claim_output judges the directory
+  }
+  if (solved)
+    throw IoError(absolute_path(final_dir).string() + ": holds a solved run, whose answer a run without --solve would "
+                  "replace with none: add --solve, give another OUT, or --force to replace it");
+}
+
 void claim_output(const fs::path& final_dir, const std::string& kind) {
   check_output_replaceable(final_dir, kind);
   remove_stale_siblings(final_dir);

@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/picture.hpp"
+#include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/sweep_command.hpp"
 #include "pipelines/sweep_plan.hpp"
@@ -63,16 +64,24 @@ std::array<double, 3> summary_stats(const std::vector<double>& v) {
 std::string num(double v) { return std::isnan(v) ? std::string() : to_text(v, 10); }
 
 // plan.json as --collect reads it.
+struct CollectedRun {
+  std::string name, fingerprint;  // a run of another config than the fingerprint's is not counted
+  std::size_t point = 0;
+};
 struct CollectedPlan {
   std::vector<std::string> keys;
   int realisations = 1;
-  std::map<std::string, std::string> fingerprint;  // by run name: a run of another config is not counted
+  std::vector<CollectedRun> runs;
   bool solve = false;
   int dimensions = 2;
   Json points;
 };
 
 CollectedPlan read_collected_plan(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(dir / "plan.json", ec))
+    throw IoError(dir.string() + ": not a grainmesh sweep's directory (no plan.json): give the directory a sweep wrote "
+                                 "(grainmesh sweep SWEEP.ini -o DIR)");
   const Json plan = read_json(dir / "plan.json");
   CollectedPlan out;
   out.keys = plan.at("keys").get<std::vector<std::string>>();
@@ -82,9 +91,10 @@ CollectedPlan read_collected_plan(const std::filesystem::path& dir) {
     throw IoError((dir / "plan.json").string() + ": realisations is " + count.dump() + ", not a count from 1 to 100000");
   out.realisations = static_cast<int>(count.get<std::int64_t>());
   const Json& listed = plan.contains("runs") ? plan["runs"] : Json();
-  if (!listed.is_array())
-    throw IoError((dir / "plan.json").string() + ": no list of runs (an older grainmesh wrote it); run the sweep again");
-  for (const Json& r : listed) out.fingerprint[r.at("name").get<std::string>()] = r.at("fingerprint").get<std::string>();
+  if (!listed.is_array() || (!listed.empty() && !listed.front().contains("point")))
+    throw IoError((dir / "plan.json").string() + ": no list of runs by point (an older grainmesh wrote it); run the sweep again");
+  for (const Json& r : listed)
+    out.runs.push_back({r.at("name").get<std::string>(), r.at("fingerprint").get<std::string>(), r.at("point").get<std::size_t>()});
   out.solve = plan.value("solve", false);
   out.dimensions = plan.value("dimensions", 2);
   out.points = plan.at("points");
@@ -99,6 +109,9 @@ struct LeftOut {
 // What the done runs of one point report.
 struct PointRuns {
   int found = 0;
+  int warned = 0;                      // runs with warnings
+  std::vector<std::string> warnings;   // theirs, each once
+  std::string plane_state;             // a 2D run's (plane_strain, plane_stress)
   std::vector<double> modulus;
   std::vector<std::vector<double>> tensor;  // per tensor_quantities
   // Per-run numbers summarised per point, by column name: the WC-Co descriptors (e.g.
@@ -119,9 +132,18 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
   ++pr.found;
   pr.cells += j["mesh"]["cells"].get<double>();
   pr.q_min = std::min(pr.q_min, j["mesh"]["q_min"].get<double>());
+  if (j.contains("plane_state")) pr.plane_state = j["plane_state"].get<std::string>();
+  if (j.contains("warnings") && !j["warnings"].empty()) {
+    ++pr.warned;
+    for (const Json& w : j["warnings"])
+      if (std::find(pr.warnings.begin(), pr.warnings.end(), w.get<std::string>()) == pr.warnings.end())
+        pr.warnings.push_back(w.get<std::string>());
+  }
   // A 2D run's phases in its report's top level, a 3D run's in its statistics.
-  for (const Json& phase : j.contains("phases") ? j["phases"] : j["statistics"]["phases"])
+  for (const Json& phase : j.contains("phases") ? j["phases"] : j["statistics"]["phases"]) {
     if (!x_phase.empty() && phase["name"] == x_phase) pr.achieved.push_back(phase["achieved_fraction"].get<double>());
+    add("achieved_fraction_" + phase["name"].get<std::string>(), phase["achieved_fraction"]);
+  }
   if (j.contains("statistics"))
     for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})  // 3D cells: contiguity alone
       if (j["statistics"].contains(key))
@@ -150,6 +172,13 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
   }
   if (e.contains("stiffness")) {
     for (std::size_t q = 0; q < tensor.size(); ++q) pr.tensor[q].push_back(e[tensor[q].first][tensor[q].second].get<double>());
+    // The moduli and the bounds they are judged by.
+    add("bulk_modulus", e["bulk_modulus"]);
+    add("shear_modulus", e["shear_modulus"]);
+    add("voigt_C11", e["voigt"]["C11"]);
+    add("reuss_C11", e["reuss"]["C11"]);
+    if (e.contains("hashin_shtrikman"))
+      for (const char* b : {"bulk_lower", "bulk_upper", "shear_lower", "shear_upper"}) add(std::string("hs_") + b, e["hashin_shtrikman"][b]);
     return;
   }
   pr.modulus.push_back(e["modulus"].get<double>());
@@ -167,10 +196,10 @@ PointRuns read_point_runs(const std::filesystem::path& dir, const CollectedPlan&
   PointRuns pr;
   const TensorQuantities& tensor = tensor_quantities(plan.dimensions);
   pr.tensor.resize(tensor.size());
-  for (int r = 0; r < plan.realisations; ++r) {
-    const std::string name = run_name(p, r);
-    const auto fp = plan.fingerprint.find(name);
-    const RunStatus status = run_status(dir / name, plan.solve, fp == plan.fingerprint.end() ? std::string() : fp->second);
+  for (const CollectedRun& run : plan.runs) {
+    if (run.point != p) continue;
+    const std::string& name = run.name;
+    const RunStatus status = run_status(dir / name, plan.solve, run.fingerprint);
     if (status != RunStatus::done) {
       std::error_code ec;
       (std::filesystem::exists(dir / (name + ".failed"), ec) ? left_out.failed
@@ -192,10 +221,18 @@ struct SummaryPlot {
   std::map<std::string, std::pair<std::vector<Vec2>, std::vector<double>>> means;  // per series: mean, CI95
   std::map<double, std::array<double, 5>> bounds;  // x -> summed voigt, reuss, HS lower, HS upper; count
   bool c11 = false;
+  std::string y_label;  // when not the modulus's
+  double unit = 1e9;    // the values over this are plotted
 
+  // The modulus (or C11) of the point's runs, with the bounds.
   void add(const PointRuns& pr, const std::vector<std::string>& keys, const Json& point, std::size_t x_key) {
-    const std::vector<double>& plotted = pr.modulus.empty() ? pr.tensor[0] : pr.modulus;
     c11 = c11 || pr.modulus.empty();
+    add_values(pr, pr.modulus.empty() ? pr.tensor[0] : pr.modulus, keys, point, x_key);
+  }
+
+  // Any per-run answer of the point's runs (`plotted`), without bounds unless they are the modulus's.
+  void add_values(const PointRuns& pr, const std::vector<double>& plotted, const std::vector<std::string>& keys,
+                  const Json& point, std::size_t x_key) {
     if (keys.empty() || plotted.empty()) return;
     std::string series;
     for (std::size_t k = 0; k < keys.size(); ++k)
@@ -205,11 +242,11 @@ struct SummaryPlot {
     const double x = by_achieved ? summary_stats(pr.achieved)[0] : key_x;
     const std::string series_name = series.empty() ? "runs" : series;
     for (std::size_t k = 0; k < plotted.size(); ++k)
-      by_series[series_name].push_back({by_achieved ? pr.achieved[k] : key_x, plotted[k] / 1e9});
+      by_series[series_name].push_back({by_achieved ? pr.achieved[k] : key_x, plotted[k] / unit});
     const std::array<double, 3> ps = summary_stats(plotted);
-    means[series_name].first.push_back({x, ps[0] / 1e9});
-    means[series_name].second.push_back(ps[2] / 1e9);
-    if (!std::isnan(pr.voigt)) {
+    means[series_name].first.push_back({x, ps[0] / unit});
+    means[series_name].second.push_back(ps[2] / unit);
+    if (!std::isnan(pr.voigt) && y_label.empty()) {
       auto& b = bounds[x];
       b[0] += pr.voigt / 1e9, b[1] += pr.reuss / 1e9, b[2] += pr.hs_lo / 1e9, b[3] += pr.hs_hi / 1e9, b[4] += 1;
     }
@@ -217,7 +254,8 @@ struct SummaryPlot {
 
   void write(const std::filesystem::path& file, const std::string& x_label) const {
     Plot plot{.x_label = x_label,
-              .y_label = std::string(c11 ? "effective C11" : "effective modulus") + " (GPa): runs, their mean and 95 % CI",
+              .y_label = (y_label.empty() ? std::string(c11 ? "effective C11" : "effective modulus") + " (GPa)" : y_label) +
+                         ": runs, their mean and 95 % CI",
               .series = {}};
     // Every realisation a small point; each point's mean with its 95 % CI as a bar.
     int colour = 0;
@@ -245,12 +283,23 @@ struct SummaryPlot {
 // One row of summary.csv: the point's values, its modulus columns, and (when any run has
 // the tensor) the tensor's and then the extra columns.
 struct CsvRow {
-  std::string modulus, tensor;
+  std::string modulus, tensor, notes;
   std::map<std::string, std::array<double, 3>> extras;
 };
 
+// A text field of a CSV file, quoted where it holds a comma, a quote or a line break.
+std::string csv_text(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
 CsvRow csv_row(const PointRuns& pr, const std::vector<std::string>& keys, const Json& point) {
   CsvRow row;
+  std::string warnings;
+  for (const std::string& w : pr.warnings) warnings += (warnings.empty() ? "" : " | ") + w;
+  row.notes = "," + pr.plane_state + "," + std::to_string(pr.warned) + "," + csv_text(warnings);
   const std::array<double, 3> s = summary_stats(pr.modulus);
   for (const auto& k : keys) row.modulus += point[k].get<std::string>() + ",";
   row.modulus += std::to_string(pr.found) + "," + num(s[0]) + "," + num(s[1]) + "," + num(s[2]) + "," + num(pr.voigt) +
@@ -271,7 +320,7 @@ std::string summary_csv(const std::vector<CsvRow>& rows, const std::vector<std::
   if (tensor)
     for (const auto& [group, q] : *tensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
   for (const std::string& name : extra_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
-  csv += "\n";
+  csv += ",plane_state,runs_with_warnings,warnings\n";
   for (const CsvRow& row : rows) {
     csv += row.modulus + (tensor ? row.tensor : std::string());
     for (const std::string& name : extra_names) {
@@ -279,7 +328,7 @@ std::string summary_csv(const std::vector<CsvRow>& rows, const std::vector<std::
       const std::array<double, 3> v = found != row.extras.end() ? found->second : std::array<double, 3>{NAN, NAN, NAN};
       for (const double x : v) csv.append(",").append(num(x));
     }
-    csv += "\n";
+    csv += row.notes + "\n";
   }
   return csv;
 }
@@ -309,7 +358,7 @@ void warn_left_out(const LeftOut& left_out, std::size_t total, bool solve, const
 
 }  // namespace
 
-void collect_sweep(const std::filesystem::path& dir) {
+void collect_sweep(const std::filesystem::path& dir, bool left_out_warnings) {
   const CollectedPlan plan = read_collected_plan(dir);
   const std::vector<std::string>& keys = plan.keys;
   // The plot's x: the first fraction key (else the first key); against the achieved
@@ -322,20 +371,45 @@ void collect_sweep(const std::filesystem::path& dir) {
   std::vector<std::string> extra_names;  // in the order first met
   std::vector<CsvRow> rows;
   SummaryPlot plot;
+  // A plot per further answer a sweep is run for: the moduli, the expansion, the phases'
+  // residual stresses (summary_NAME.png).
+  std::map<std::string, SummaryPlot> answers;
+  auto answer_plot = [&](const std::string& name) -> std::pair<std::string, double> {
+    if (name == "bulk_modulus") return {"effective bulk modulus K (GPa)", 1e9};
+    if (name == "shear_modulus") return {"effective shear modulus G (GPa)", 1e9};
+    if (name == "thermal_expansion_a11" || name == "thermal_expansion_xx") return {"free thermal expansion, xx (1e-6 / K)", 1e-6};
+    if (name.rfind("thermal_", 0) == 0 && name.size() > 8 && name.compare(name.size() - 8, 8, "_mean_xx") == 0)
+      return {"residual stress, " + name.substr(8, name.size() - 16) + " mean xx (MPa)", 1e6};
+    return {};
+  };
   bool any_tensor = false;
   for (std::size_t p = 0; p < plan.points.size(); ++p) {
     const PointRuns pr = read_point_runs(dir, plan, p, x_phase, extra_names, left_out);
     if (pr.found == 0) continue;
     any_tensor = any_tensor || !pr.tensor[0].empty();
     plot.add(pr, keys, plan.points[p], x_key);
+    for (const auto& [name, values] : pr.extras) {
+      const auto [label, unit] = answer_plot(name);
+      if (label.empty()) continue;
+      SummaryPlot& a = answers[name];
+      a.y_label = label;
+      a.unit = unit;
+      a.add_values(pr, values, keys, plan.points[p], x_key);
+    }
     rows.push_back(csv_row(pr, keys, plan.points[p]));
   }
   const std::size_t total = plan.points.size() * static_cast<std::size_t>(plan.realisations);
-  warn_left_out(left_out, total, plan.solve, dir);
+  if (left_out_warnings) warn_left_out(left_out, total, plan.solve, dir);
   write_text_file(dir / "summary.csv",
                   summary_csv(rows, keys, extra_names, any_tensor ? &tensor_quantities(plan.dimensions) : nullptr));
-  if (!plot.by_series.empty())
-    plot.write(dir / "summary.png", x_phase.empty() ? keys[x_key] : "achieved fraction of " + x_phase);
+  std::error_code ec;
+  for (const std::string& name : entry_names(dir))  // answers no longer swept leave no picture behind
+    if (name.rfind("summary_", 0) == 0 && name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0)
+      std::filesystem::remove(dir / name, ec);
+  const std::string x_label = x_phase.empty() ? (keys.empty() ? std::string() : keys[x_key]) : "achieved fraction of " + x_phase;
+  if (!plot.by_series.empty()) plot.write(dir / "summary.png", x_label);
+  for (const auto& [name, a] : answers)
+    if (!a.by_series.empty()) a.write(dir / ("summary_" + name + ".png"), x_label);
   std::printf("grainmesh sweep --collect: %zu points (%zu of %zu runs) in %s%s\n", rows.size(),
               total - left_out.failed.size() - left_out.stale.size() - left_out.missing.size(), total,
               (dir / "summary.csv").string().c_str(), plot.by_series.empty() ? "" : " and summary.png");

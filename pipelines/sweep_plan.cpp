@@ -1,6 +1,8 @@
 #include "pipelines/sweep_plan.hpp"
 
 #include <cstdint>
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <sstream>
 
@@ -46,6 +48,21 @@ void read_lists(const Config& c, SweepPlan& plan) {
 
 }
 
+// FNV-1a, 64 bits.
+std::uint64_t text_hash(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const unsigned char ch : text) h = (h ^ ch) * 0x100000001b3ull;
+  return h;
+}
+
+// A point's identity: its key=value pairs in key order, whatever order the lists come in.
+std::uint64_t point_hash(std::vector<std::string> pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  std::string text;
+  for (const std::string& p : pairs) text += p + "\n";
+  return text_hash(text);
+}
+
 // The runs, first key slowest, each point's realisations in order.
 void make_runs(const Config& base, const SweepOptions& o, SweepPlan& plan) {
   const std::vector<std::string>& keys = plan.keys;
@@ -54,34 +71,64 @@ void make_runs(const Config& base, const SweepOptions& o, SweepPlan& plan) {
   for (const auto& v : values) plan.points *= v.size();
   for (std::size_t p = 0; p < plan.points; ++p) {
     Json point = Json::object();
-    std::vector<std::string> overrides;
+    std::vector<std::string> overrides, point_values(keys.size());
     std::size_t rest = p;
     for (std::size_t k = keys.size(); k-- > 0;) {
       const std::string& v = values[k][rest % values[k].size()];
       rest /= values[k].size();
       overrides.insert(overrides.begin(), keys[k] + "=" + v);
       point[keys[k]] = v;
+      point_values[k] = v;
     }
     plan.point_values.push_back(point);
+    const std::uint64_t identity = point_hash(overrides);
     for (int r = 0; r < plan.realisations; ++r) {
       std::vector<std::string> o2 = overrides;
-      // The same whichever shard runs it; 53 bits, so a JSON number holds it exactly.
-      const std::uint64_t seed = derived_seed(base_seed, static_cast<std::uint64_t>(r), p) >> 11;
+      // From the point's values and the realisation alone: the same whichever shard runs it
+      // and wherever the values stand in the lists; 53 bits, so a JSON number holds it exactly.
+      const std::uint64_t seed = derived_seed(base_seed, static_cast<std::uint64_t>(r), identity) >> 11;
       o2.push_back("tessellation.seed=" + std::to_string(seed));
       if (!base.has("domain.depth")) o2.push_back("mesh.seed=" + std::to_string(seed));  // 3D meshes draw nothing
       // Runs side by side mesh on one thread each (the mesh is the same either way).
       if (o.jobs > 1 && !base.has("mesh.threads")) o2.push_back("mesh.threads=1");
-      plan.runs.push_back({run_name(p, r), p, r, o2, {}});
+      plan.runs.push_back({run_name(keys, point_values, r), p, r, seed, o2, {}});
     }
   }
 }
 
 }  // namespace
 
-std::string run_name(std::size_t point, int realisation) {
-  char name[64];
-  std::snprintf(name, sizeof name, "p%03zu-r%02d", point, realisation);
-  return name;
+std::string run_name(const std::vector<std::string>& keys, const std::vector<std::string>& values, int realisation) {
+  // Each key by its last part, or more of it where another swept key ends alike.
+  auto tail = [](const std::string& key, int parts) {
+    std::size_t at = key.size();
+    for (int k = 0; k < parts && at != std::string::npos && at > 0; ++k) at = key.rfind('.', at - 1);
+    return at == std::string::npos ? key : key.substr(at + 1);
+  };
+  std::string name;
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    int parts = 1;
+    for (bool clash = true; clash && parts < 8; ++parts) {
+      clash = false;
+      for (std::size_t j = 0; j < keys.size(); ++j)
+        clash = clash || (j != k && tail(keys[j], parts) == tail(keys[k], parts));
+      if (!clash) break;
+    }
+    std::string value = values[k];
+    for (char& ch : value)
+      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '+' && ch != '-') ch = '_';
+    name += (k ? "," : "") + tail(keys[k], parts) + "=" + value;
+  }
+  if (name.size() > 120) {
+    std::vector<std::string> pairs;
+    for (std::size_t k = 0; k < keys.size(); ++k) pairs.push_back(keys[k] + "=" + values[k]);
+    char hash[24];
+    std::snprintf(hash, sizeof hash, "p%016llx", static_cast<unsigned long long>(point_hash(pairs)));
+    name = hash;
+  }
+  char r[16];
+  std::snprintf(r, sizeof r, "r%02d", realisation);
+  return name.empty() ? r : name + "-" + r;
 }
 
 SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
@@ -97,9 +144,12 @@ SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
     try {
       check_run_config(run_config);
     } catch (const ConfigError& e) {
-      std::string point;
+      // The point's values are the sweep file's, not --set's: the message names the file.
+      std::string point, why = e.what();
       for (std::size_t k = 0; k < keys.size(); ++k) point += (k ? ", " : "") + r.overrides[k];
-      throw ConfigError(c.source() + ": the sweep's point " + point + ": " + e.what());
+      for (const std::string& given : std::vector<std::string>{"--set: ", c.source() + ": "})
+        if (why.rfind(given, 0) == 0) why.erase(0, given.size());
+      throw ConfigError(c.source() + ": the sweep's point " + point + ": " + why);
     }
     r.fingerprint = config_fingerprint(run_config);
   }
@@ -109,7 +159,9 @@ SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
 
 Json plan_json(const SweepPlan& plan, bool solve) {
   Json runs = Json::array();
-  for (const SweepRun& r : plan.runs) runs.push_back({{"name", r.name}, {"fingerprint", r.fingerprint}});
+  for (const SweepRun& r : plan.runs)
+    runs.push_back({{"name", r.name}, {"point", r.point}, {"realisation", r.realisation}, {"seed", r.seed},
+                    {"fingerprint", r.fingerprint}});
   return Json{{"format", "grainmesh-sweep"}, {"keys", plan.keys},  {"points", plan.point_values},
               {"realisations", plan.realisations}, {"solve", solve}, {"dimensions", plan.dimensions}, {"runs", runs}};
 }
@@ -139,28 +191,46 @@ RunStatus run_status(const std::filesystem::path& run_dir, bool solve, const std
   }
 }
 
-// The names a sweep directory holds: plan.json, logs/, summary.{csv,png}, one directory per
-// run (pPPP-rRR), a failed run's pPPP-rRR.failed, and while they run, hidden staging
-// directories and temporary files.
-bool sweep_entry(const std::string& name) {
-  if (name == "plan.json" || name == "logs" || name == "summary.csv" || name == "summary.png") return true;
-  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) return sweep_entry(name.substr(0, name.size() - 4));
-  std::string run = name;
-  if (!run.empty() && run[0] == '.') {  // .pPPP-rRR.partial-PID, .pPPP-rRR.old-PID
-    const auto dot = run.find('.', 1);
-    if (dot == std::string::npos) return false;
-    run = run.substr(1, dot - 1);
-  } else if (run.size() > 7 && run.compare(run.size() - 7, 7, ".failed") == 0) {
-    run.resize(run.size() - 7);
+std::string run_of_entry(const std::string& entry) {
+  static const std::string failed = ".failed";
+  if (!entry.empty() && entry[0] == '.') {  // .NAME.partial-PID, .NAME.old-PID (NAME may hold dots)
+    for (const char* tag : {".partial-", ".old-"}) {
+      const auto at = entry.rfind(tag);
+      if (at != std::string::npos && at > 1) return entry.substr(1, at - 1);
+    }
+    return {};
   }
-  unsigned p = 0, r = 0;
-  char tail = 0;
-  return std::sscanf(run.c_str(), "p%u-r%u%c", &p, &r, &tail) == 2 && run[0] == 'p';
+  if (entry.size() > failed.size() && entry.compare(entry.size() - failed.size(), failed.size(), failed) == 0)
+    return entry.substr(0, entry.size() - failed.size());
+  return entry;
 }
 
-// A sweep writes into DIR only when DIR is new, empty, or an earlier sweep's directory
-// holding nothing else; never the current directory. Throws IoError naming why.
-void check_sweep_dir(const std::filesystem::path& dir) {
+bool sweep_entry(const std::string& name, const std::set<std::string>& runs) {
+  if (name == "plan.json" || name == "logs" || name == "retired" || name == "summary.csv") return true;
+  if (name.rfind("summary", 0) == 0 && name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0) return true;
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) {  // FILE.tmp, FILE.PID.tmp
+    std::string file = name.substr(0, name.size() - 4);
+    const auto dot = file.rfind('.');
+    if (dot != std::string::npos && file.find_first_not_of("0123456789", dot + 1) == std::string::npos) file.resize(dot);
+    return sweep_entry(file, runs);
+  }
+  const std::string run = run_of_entry(name);
+  return !run.empty() && runs.count(run) > 0;
+}
+
+std::set<std::string> planned_runs(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  try {
+    const Json plan = read_json(dir / "plan.json");
+    if (plan.contains("runs") && plan["runs"].is_array())
+      for (const Json& r : plan["runs"])
+        if (r.contains("name") && r["name"].is_string()) names.insert(r["name"].get<std::string>());
+  } catch (const IoError&) {
+  }
+  return names;
+}
+
+void check_sweep_dir(const std::filesystem::path& dir, const SweepPlan& plan) {
   if (!occupied_directory(dir)) return;
   const std::string where = std::filesystem::absolute(dir).lexically_normal().string();
   bool ours = false;
@@ -169,8 +239,10 @@ void check_sweep_dir(const std::filesystem::path& dir) {
   } catch (const IoError&) {
   }
   if (!ours) throw IoError(where + ": exists and is not a grainmesh sweep (no plan.json); refusing to write into it");
+  std::set<std::string> runs = planned_runs(dir);
+  for (const SweepRun& r : plan.runs) runs.insert(r.name);
   for (const std::string& name : entry_names(dir))
-    if (!sweep_entry(name))
+    if (!sweep_entry(name, runs))
       throw IoError(where + ": holds '" + name + "', which grainmesh sweep did not write; refusing to write into it");
 }
 

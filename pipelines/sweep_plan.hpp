@@ -1,11 +1,14 @@
 // A sweep's plan and directory: the runs of the cartesian product of the [sweep] lists
-// (each point `realisations` times, seeds derived from the base seed, point and
-// realisation), each run's config checked and fingerprinted; where a run stands in the
-// directory; which names the directory may hold.
+// (each point `realisations` times), each run's config checked and fingerprinted; where a
+// run stands in the directory; which names the directory may hold. A run's directory
+// name and its seed follow from its point's values and its realisation, never from where
+// the values stand in the lists: editing a list re-runs no unchanged point.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,13 +18,14 @@
 
 namespace grainmesh {
 
-// One run of the plan: its directory's name (pPPP-rRR), its point and realisation, the
-// overrides of the base config that make it, and its resolved config's fingerprint (a
-// changed sweep reruns what changed).
+// One run of the plan: its directory's name (run_name), its point (index into the plan's
+// points, in list order) and realisation, its seed, the overrides of the base config that
+// make it, and its resolved config's fingerprint (a changed sweep reruns what changed).
 struct SweepRun {
   std::string name;
   std::size_t point;
   int realisation;
+  std::uint64_t seed = 0;
   std::vector<std::string> overrides;
   std::string fingerprint;
 };
@@ -43,11 +47,15 @@ struct SweepPlan {
 SweepPlan make_sweep_plan(const Config& config, const SweepOptions& options);
 
 // plan.json: the format, keys, points, realisations, whether solved, the cell's
-// dimensions, and every run's name and fingerprint.
+// dimensions, and every run's name, point, realisation, seed and fingerprint.
 Json plan_json(const SweepPlan& plan, bool solve);
 
-// The name of the run of point `point`, realisation `realisation`: pPPP-rRR.
-std::string run_name(std::size_t point, int realisation);
+// The name of a run: its point's values key by key, each key by its last part (its last
+// two, or all of it, where swept keys end alike), the values with any character but
+// letters, digits and ".+-" made '_', then its realisation: "fraction=0.1,grains=30-r02";
+// "r02" without swept keys. A name above 120 characters becomes "p" and a hash of the
+// values instead.
+std::string run_name(const std::vector<std::string>& keys, const std::vector<std::string>& values, int realisation);
 
 // Where a run of the plan stands: its report (written last) is missing or unreadable, was
 // made from another config than the plan now asks for (its fingerprint), lacks the
@@ -55,14 +63,22 @@ std::string run_name(std::size_t point, int realisation);
 enum class RunStatus { missing, stale, unsolved, done };
 RunStatus run_status(const std::filesystem::path& run_dir, bool solve, const std::string& fingerprint);
 
-// The names a sweep directory holds: plan.json, logs/, summary.{csv,png}, one directory per
-// run (pPPP-rRR), a failed run's pPPP-rRR.failed, and while they run, hidden staging
-// directories and temporary files.
-bool sweep_entry(const std::string& name);
+// The run an entry of a sweep directory belongs to: NAME for NAME, NAME.failed and the
+// hidden .NAME.partial-PID and .NAME.old-PID; empty for any other.
+std::string run_of_entry(const std::string& entry);
+
+// The names a sweep directory holds besides its runs' (`runs`, by run_of_entry): plan.json,
+// logs/, retired/ (runs no longer in the plan, kept), summary.csv, summary*.png, and while
+// they are written their temporary files.
+bool sweep_entry(const std::string& name, const std::set<std::string>& runs);
+
+// The runs an earlier sweep in `dir` planned (its plan.json); empty when there is none.
+std::set<std::string> planned_runs(const std::filesystem::path& dir);
 
 // A sweep writes into DIR only when DIR is new, empty, or an earlier sweep's directory
-// holding nothing else; never the current directory. Throws IoError naming why.
-void check_sweep_dir(const std::filesystem::path& dir);
+// holding nothing but what the earlier or this plan names; never the current directory.
+// Throws IoError naming why.
+void check_sweep_dir(const std::filesystem::path& dir, const SweepPlan& plan);
 
 // A JSON file read; IoError naming it when it cannot be read or parsed.
 Json read_json(const std::filesystem::path& file);

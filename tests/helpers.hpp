@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +23,27 @@ namespace grainmesh::test {
 // The source tree and the grainmesh program under test (tests/paths.cpp).
 std::filesystem::path source_dir();
 const char* grainmesh_binary();
+
+// The directory of a sweep's run of point `point` (its index in plan.json's points, in the
+// lists' order) and realisation `realisation`, as the sweep's plan.json names it.
+inline std::filesystem::path sweep_run(const std::filesystem::path& sweep, std::size_t point, int realisation) {
+  std::ifstream in(sweep / "plan.json");
+  const nlohmann::json plan = nlohmann::json::parse(in);
+  for (const nlohmann::json& r : plan["runs"])
+    if (r["point"].get<std::size_t>() == point && r["realisation"].get<int>() == realisation)
+      return sweep / r["name"].get<std::string>();
+  FAIL("plan.json has no run of point " << point << ", realisation " << realisation);
+  return {};
+}
+
+// The names of a sweep's runs, as its plan.json lists them.
+inline std::vector<std::string> sweep_runs(const std::filesystem::path& sweep) {
+  std::ifstream in(sweep / "plan.json");
+  const nlohmann::json plan = nlohmann::json::parse(in);
+  std::vector<std::string> names;
+  for (const nlohmann::json& r : plan["runs"]) names.push_back(r["name"].get<std::string>());
+  return names;
+}
 
 inline std::filesystem::path example(const std::string& name) {
   return source_dir() / "data" / "examples" / (name + ".ini");

@@ -98,7 +98,7 @@ TEST_CASE("a changed sweep never yields old results", "[cli][safety][sweep]") {
                                        "tessellation.grains=20", "--set", "mesh.h=0.12"};
   auto moduli = [&] {
     std::vector<double> m;
-    for (const char* run : {"p000-r00", "p001-r00"}) m.push_back(report_of(dir / "S" / run)["effective"]["modulus"]);
+    for (std::size_t point : {0, 1}) m.push_back(report_of(test::sweep_run(dir / "S", point, 0))["effective"]["modulus"]);
     return m;
   };
   auto fingerprints_match = [&] {
@@ -116,7 +116,10 @@ TEST_CASE("a changed sweep never yields old results", "[cli][safety][sweep]") {
   const auto changed = run_grainmesh(sweep);
   INFO(changed.out << changed.err);
   REQUIRE(changed.exit_code == 0);
-  CHECK(changed.out.find("ran 1 (1 of them again, their config changed), 1 were done already") != std::string::npos);
+  // The new value a new run; the old one's kept aside, never deleted.
+  CHECK(changed.out.find("ran 1 (0 of them again, their config changed), 1 were done already") != std::string::npos);
+  CHECK(changed.out.find("1 run no longer in the plan kept in " + out + "/retired") != std::string::npos);
+  CHECK(fs::exists(dir / "S/retired/fraction=0.3-r00/report.json"));
   CHECK(Json::parse(test::read_file(dir / "S/plan.json"))["points"][1]["phase.matrix.fraction"] == "0.4");
   CHECK(moduli()[0] == first[0]);
   CHECK(moduli()[1] < first[1]);  // more of the soft phase
@@ -139,14 +142,14 @@ TEST_CASE("a changed sweep never yields old results", "[cli][safety][sweep]") {
   CHECK(mean == Approx(moduli()[0]).epsilon(1e-9));
 
   // --collect says what is missing, failed or stale, and leaves it out.
-  fs::remove_all(dir / "S/p000-r00");
+  fs::remove_all(dir / "S/fraction=0.2-r00");
   const auto collect = run_grainmesh({"sweep", "--collect", out});
   CHECK(collect.exit_code == 0);
-  CHECK(collect.err.find("warning: sweep --collect: 1 of 2 runs are missing or unsolved and are left out: p000-r00") !=
+  CHECK(collect.err.find("warning: sweep --collect: 1 of 2 runs are missing or unsolved and are left out: fraction=0.2-r00") !=
         std::string::npos);
   CHECK(collect.out.find("(1 of 2 runs)") != std::string::npos);
-  fs::rename(dir / "S/p001-r00", dir / "S/p001-r00.failed");
-  CHECK(run_grainmesh({"sweep", "--collect", out}).err.find("1 of 2 runs failed and are left out: p001-r00") !=
+  fs::rename(dir / "S/fraction=0.4-r00", dir / "S/fraction=0.4-r00.failed");
+  CHECK(run_grainmesh({"sweep", "--collect", out}).err.find("1 of 2 runs failed and are left out: fraction=0.4-r00") !=
         std::string::npos);
 
   // A sweep writes only into its own directory.

@@ -44,35 +44,44 @@ TEST_CASE("a sweep solves every point, between the bounds, and resumes where it 
   CHECK(ran(r.out) == 8);
   std::map<std::pair<std::string, std::string>, double> modulus;  // (grains, matrix) -> sum
   const auto plan = nlohmann::json::parse(test::read_file(dir / "out/plan.json"));
-  for (const auto& entry : fs::directory_iterator(out)) {
-    if (!entry.is_directory() || entry.path().filename() == "logs") continue;
-    const auto& point = plan["points"][std::stoi(entry.path().filename().string().substr(1, 3))];
-    const auto report = nlohmann::json::parse(test::read_file(entry.path() / "report.json"));
+  for (const auto& run : plan["runs"]) {
+    const fs::path entry = dir / "out" / run["name"].get<std::string>();
+    const auto& point = plan["points"][run["point"].get<std::size_t>()];
+    // Named by its values: grains and the matrix fraction, and its realisation.
+    CHECK(entry.filename().string() == "grains=" + point["tessellation.grains"].get<std::string>() + ",fraction=" +
+                                           point["phase.matrix.fraction"].get<std::string>() + "-r0" +
+                                           std::to_string(run["realisation"].get<int>()));
+    const auto report = nlohmann::json::parse(test::read_file(entry / "report.json"));
     const auto& e = report["effective"];
     CHECK(e["final_residual"].get<double>() < kSolverTolerance);
     CHECK(e["stress_change"].get<double>() <= kStressTolerance);
     CHECK(e["modulus"].get<double>() > e["reuss"].get<double>());
     CHECK(e["modulus"].get<double>() < e["voigt"].get<double>());
     modulus[{point["tessellation.grains"], point["phase.matrix.fraction"]}] += e["modulus"].get<double>();
-    CHECK(test::run_openfoam(entry.path() / "case", "checkMesh").out.find("Mesh OK.") != std::string::npos);
+    CHECK(test::run_openfoam(entry / "case", "checkMesh").out.find("Mesh OK.") != std::string::npos);
   }
   REQUIRE(modulus.size() == 4);
   for (const char* grains : {"20", "40"}) CHECK(modulus[{grains, "0.4"}] < modulus[{grains, "0.1"}]);
 
   // Killed part-way: a run lost, another half-written (a staging directory, no report).
-  fs::remove_all(dir / "out/p001-r00");
-  fs::create_directories(dir / "out/.p001-r00.partial-99999/case");  // its staging, left by the kill
-  fs::remove(dir / "out/p002-r01/report.json");
+  const fs::path lost = test::sweep_run(dir / "out", 1, 0), half = test::sweep_run(dir / "out", 2, 1);
+  fs::remove_all(lost);
+  const fs::path staging = dir / "out" / ("." + lost.filename().string() + ".partial-99999");
+  fs::create_directories(staging / "case");  // its staging, left by the kill
+  fs::remove(half / "report.json");
   const auto again = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--solve"});
   INFO(again.err);
   REQUIRE(again.exit_code == 0);
   CHECK(ran(again.out) == 2);
-  CHECK_FALSE(fs::exists(dir / "out/.p001-r00.partial-99999"));
-  CHECK(fs::exists(dir / "out/p001-r00/report.json"));
+  CHECK_FALSE(fs::exists(staging));
+  CHECK(fs::exists(lost / "report.json"));
 
+  // The summary was written by the sweep itself; --collect writes it again the same.
+  const std::string written = test::read_file(dir / "out/summary.csv");
   const auto collect = run_grainmesh({"sweep", "--collect", out});
   REQUIRE(collect.exit_code == 0);
   const std::string csv = test::read_file(dir / "out/summary.csv");
+  CHECK(csv == written);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);  // a header and one row per point
   CHECK(csv.find("modulus_mean,modulus_std,modulus_ci95") != std::string::npos);
   CHECK(fs::file_size(dir / "out/summary.png") > 5000);
@@ -105,13 +114,16 @@ TEST_CASE("a sweep whose runs fail names them and what the first to fail said", 
   const std::string out = (dir / "out").string();
   const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "1"});
   CHECK(r.exit_code == 2);  // the first failed run's
-  CHECK(r.err == "grainmesh: error: sweep: 2 of 4 runs failed (p001-r00, p001-r01; p001-r00 first: " +
-                     (dir / "sweep.ini").string() +
-                     ": phase.matrix.fraction: a fraction of 0.2 gives the phase none of the 2 grains: use at least 5 "
-                     "grains (tessellation.grains), about 50 for fractions within 1 %); their logs are in " + out +
-                     "/logs (run the sweep again to retry them)\n");
-  CHECK(fs::exists(dir / "out/p000-r01/report.json"));
-  CHECK_FALSE(fs::exists(dir / "out/p001-r00"));
+  const std::string error = "grainmesh: error: sweep: 2 of 4 runs failed (grains=2-r00, grains=2-r01; grains=2-r00 first: " +
+                            (dir / "sweep.ini").string() +
+                            ": phase.matrix.fraction: a fraction of 0.2 gives the phase none of the 2 grains: use at least 5 "
+                            "grains (tessellation.grains), about 50 for fractions within 1 %); their logs are in " + out +
+                            "/logs (run the sweep again to retry them)\n";
+  CHECK(r.err.size() >= error.size());
+  CHECK(r.err.compare(r.err.size() - error.size(), error.size(), error) == 0);  // last, after the runs' warnings
+  CHECK(fs::exists(dir / "out/grains=30-r01/report.json"));
+  CHECK_FALSE(fs::exists(dir / "out/grains=2-r00"));
+  CHECK(fs::exists(dir / "out/summary.csv"));  // of the runs that did finish
 }
 
 TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
@@ -160,11 +172,16 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   std::string header, row;
   std::getline(csv, header);
   std::getline(csv, row);
-  auto columns = [](const std::string& line) {
-    std::vector<std::string> v;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) v.push_back(cell);
-    if (!line.empty() && line.back() == ',') v.push_back("");
+  auto columns = [](const std::string& line) {  // CSV: a quoted field may hold commas
+    std::vector<std::string> v(1);
+    bool quoted = false;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      const char ch = line[k];
+      if (ch == '"' && quoted && k + 1 < line.size() && line[k + 1] == '"') v.back() += '"', ++k;
+      else if (ch == '"') quoted = !quoted;
+      else if (ch == ',' && !quoted) v.emplace_back();
+      else v.back() += ch;
+    }
     return v;
   };
   const auto names = columns(header), values = columns(row);
@@ -178,7 +195,7 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
     for (const char* s : {"_mean", "_std", "_ci95"}) CHECK(std::find(names.begin(), names.end(), q + std::string(s)) != names.end());
   // The mean and CI of C11 from the three runs' reports (t = 4.303 for two degrees of freedom).
   std::vector<double> c11;
-  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
     c11.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["effective"]["stiffness"]["C11"]
                       .get<double>());
   const double mean = (c11[0] + c11[1] + c11[2]) / 3;
@@ -190,7 +207,7 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   CHECK(value("runs") == 3);
   // The WC-Co descriptors of every phase, summarised the same way.
   std::vector<double> contiguity;
-  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
     contiguity.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["statistics"]
                              ["contiguity"]["particulate"].get<double>());
   CHECK(value("contiguity_particulate_mean") ==
@@ -201,7 +218,7 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
         CHECK(std::find(names.begin(), names.end(), q + std::string(phase) + s) != names.end());
   // The phase stresses: each load case's loaded component and 99th percentile of von Mises.
   std::vector<double> p99;
-  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
     p99.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["stresses"]["xy"]["matrix"]
                       ["von_mises"]["p99"].get<double>());
   CHECK(value("xy_matrix_von_mises_p99_mean") == Approx((p99[0] + p99[1] + p99[2]) / 3).epsilon(1e-9));
@@ -210,10 +227,31 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
                              "thermal_matrix_von_mises_p99_std", "thermal_expansion_a22_ci95"})
     CHECK(std::find(names.begin(), names.end(), column) != names.end());
   std::vector<double> a11;
-  for (const char* run : {"p000-r00", "p000-r01", "p000-r02"})
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
     a11.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["effective"]
                       ["thermal_expansion"]["a11"].get<double>());
   CHECK(value("thermal_expansion_a11_mean") == Approx((a11[0] + a11[1] + a11[2]) / 3).epsilon(1e-9));
+  // K and G, the bounds they are judged by, the achieved fractions, the state, and the
+  // runs' warnings, each run's as its report has them.
+  for (const char* column : {"bulk_modulus_mean", "shear_modulus_ci95", "voigt_C11_mean", "reuss_C11_mean",
+                             "hs_bulk_lower_mean", "hs_shear_upper_mean", "achieved_fraction_matrix_mean",
+                             "achieved_fraction_particulate_std"})
+    CHECK(std::find(names.begin(), names.end(), column) != names.end());
+  std::vector<double> K;
+  int warned = 0;
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"}) {
+    const auto report = nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"));
+    K.push_back(report["effective"]["bulk_modulus"].get<double>());
+    warned += report["warnings"].empty() ? 0 : 1;
+  }
+  CHECK(value("bulk_modulus_mean") == Approx((K[0] + K[1] + K[2]) / 3).epsilon(1e-9));
+  CHECK(value("runs_with_warnings") == warned);
+  CHECK(values[static_cast<std::size_t>(std::find(names.begin(), names.end(), "plane_state") - names.begin())] ==
+        "plane_strain");
   CHECK(fs::exists(dir / "out/summary.png"));
-  CHECK_FALSE(fs::exists(dir / "out/p000-r00/stress_xx.png"));
+  // A plot per answer: the moduli, the expansion, each phase's residual stress.
+  for (const char* plot : {"summary_bulk_modulus.png", "summary_shear_modulus.png", "summary_thermal_expansion_a11.png",
+                           "summary_thermal_matrix_mean_xx.png"})
+    CHECK(fs::exists(dir / "out" / plot));
+  CHECK_FALSE(fs::exists(dir / "out/grains=20-r00/stress_xx.png"));
 }
