@@ -11,6 +11,8 @@
 #include <regex>
 #include <sstream>
 
+#include <sys/stat.h>
+
 #include "export/foam.hpp"
 #include "helpers.hpp"
 
@@ -132,12 +134,17 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   write_sweep(dir / "empty.ini", "tessellation.grains = ,\n");
   write_sweep(dir / "badvalue.ini", "tessellation.grains = 10, many\n");
   write_sweep(dir / "ok.ini", "tessellation.grains = 10\n");
+  write_sweep(dir / "badrange.ini", "tessellation.grains = 10, -5\n");
   const std::vector<test::Refusal> cases{
       {{"sweep", (dir / "unknown.ini").string()}, 2, "sweep.tessellation.grainz: names no config key"},
       {{"sweep", (dir / "empty.ini").string()}, 2, "sweep.tessellation.grains: gives no values"},
       {{"sweep", (dir / "badvalue.ini").string()}, 2, "tessellation.grains: 'many' is not a"},
       {{"sweep", (dir / "ok.ini").string(), "--shard", "4/3"}, 2, "--shard 4/3: expected I/N"},
       {{"sweep", (dir / "ok.ini").string(), "--set", "load.bogus=1"}, 2, "unknown key 'load.bogus'"},
+      // A swept value is the sweep file's, not a --set's.
+      {{"sweep", (dir / "badrange.ini").string()},
+       2,
+       (dir / "badrange.ini").string() + ": the sweep's point tessellation.grains=-5: tessellation.grains: must be at least 1"},
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
   // A directory that cannot be made: below a plain file.
@@ -150,6 +157,13 @@ TEST_CASE("bad sweep input gives one line naming it", "[cli][sweep]") {
   const auto collect = test::run_grainmesh({"sweep", "--collect", (dir / "damaged").string()});
   CHECK(collect.exit_code == 4);
   CHECK(collect.err.find("plan.json: realisations is 1e+80, not a count from 1 to 100000") != std::string::npos);
+  // --collect on a directory no sweep wrote: said so, not "plan.json: cannot open file".
+  fs::create_directories(dir / "not-a-sweep");
+  const auto stray = test::run_grainmesh({"sweep", "--collect", (dir / "not-a-sweep").string()});
+  CHECK(stray.exit_code == 4);
+  CHECK(stray.err == "grainmesh: error: " + (dir / "not-a-sweep").string() +
+                         ": not a grainmesh sweep's directory (no plan.json): give the directory a sweep wrote "
+                         "(grainmesh sweep SWEEP.ini -o DIR)\n");
 }
 
 TEST_CASE("a periodic sweep summarises every stiffness component and engineering constant, the thermal expansion "
@@ -254,4 +268,76 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
                            "summary_thermal_matrix_mean_xx.png"})
     CHECK(fs::exists(dir / "out" / plot));
   CHECK_FALSE(fs::exists(dir / "out/grains=20-r00/stress_xx.png"));
+}
+
+TEST_CASE("editing a sweep's lists re-runs no unchanged point, deletes no finished run, and the summary follows",
+          "[cli][sweep]") {
+  test::ScratchDir dir("sweep-edits");
+  const std::string out = (dir / "out").string();
+  auto sweep = [&](const std::string& fractions) {
+    write_sweep(dir / "sweep.ini", "phase.matrix.fraction = " + fractions + "\n");
+    std::ofstream(dir / "sweep.ini", std::ios::app) << "[output]\npictures = none\n";
+    const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--set", "tessellation.grains=20"});
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    return r;
+  };
+  // A run's identity on disk: its report's inode and modification time (a re-run writes a
+  // new report, moved into place as a new file).
+  auto identity = [&](const std::string& run) {
+    struct stat s {};
+    REQUIRE(::stat((dir / "out" / run / "report.json").c_str(), &s) == 0);
+    return std::to_string(s.st_ino) + ":" + std::to_string(s.st_mtim.tv_sec) + "." + std::to_string(s.st_mtim.tv_nsec);
+  };
+  auto summary_rows = [&] {
+    const std::string csv = test::read_file(dir / "out/summary.csv");
+    return std::count(csv.begin(), csv.end(), '\n') - 1;
+  };
+  auto seed_of = [&](const std::string& run) {
+    return nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["seed"].get<std::uint64_t>();
+  };
+  CHECK(ran(sweep("0.1, 0.3").out) == 2);
+  const std::string a = identity("fraction=0.1-r00"), b = identity("fraction=0.3-r00");
+  const std::uint64_t seed_a = seed_of("fraction=0.1-r00");
+  CHECK(summary_rows() == 2);
+  // Inserted at the front: only the new point runs; the others keep their runs and seeds.
+  CHECK(ran(sweep("0.2, 0.1, 0.3").out) == 1);
+  CHECK(identity("fraction=0.1-r00") == a);
+  CHECK(identity("fraction=0.3-r00") == b);
+  CHECK(seed_of("fraction=0.1-r00") == seed_a);
+  CHECK(summary_rows() == 3);
+  // Reordered: nothing runs.
+  CHECK(ran(sweep("0.3, 0.2, 0.1").out) == 0);
+  CHECK(identity("fraction=0.1-r00") == a);
+  // Shortened: nothing runs, nothing is deleted (kept aside), the summary has what is planned.
+  const auto shortened = sweep("0.1");
+  CHECK(ran(shortened.out) == 0);
+  CHECK(shortened.out.find("2 runs no longer in the plan kept in " + out + "/retired") != std::string::npos);
+  CHECK(fs::exists(dir / "out/retired/fraction=0.3-r00/report.json"));
+  CHECK(fs::exists(dir / "out/retired/fraction=0.2-r00/report.json"));
+  CHECK(summary_rows() == 1);
+  // Lengthened again: the kept runs come back, as they were.
+  const auto restored = sweep("0.1, 0.3");
+  CHECK(ran(restored.out) == 0);
+  CHECK(identity("fraction=0.3-r00") == b);
+  CHECK_FALSE(fs::exists(dir / "out/retired/fraction=0.3-r00"));
+  CHECK(summary_rows() == 2);
+}
+
+TEST_CASE("run without --solve does not replace a solved run's answer unless --force", "[cli][safety]") {
+  test::ScratchDir dir("unsolved-over-solved");
+  const std::string out = (dir / "out").string();
+  const std::vector<std::string> small{"--set", "tessellation.grains=10", "--set", "output.pictures=none"};
+  auto run = [&](std::vector<std::string> args) {
+    args.insert(args.end(), small.begin(), small.end());
+    return run_grainmesh(args);
+  };
+  REQUIRE(run({"run", "-o", out, "--solve", "--quiet"}).exit_code == 0);
+  const auto refused = run({"run", "-o", out, "--quiet"});
+  CHECK(refused.exit_code == 4);
+  CHECK(refused.err == "grainmesh: error: " + out + ": holds a solved run, whose answer a run without --solve would "
+                       "replace with none: add --solve, give another OUT, or --force to replace it\n");
+  CHECK(nlohmann::json::parse(test::read_file(dir / "out/report.json")).contains("effective"));  // untouched
+  CHECK(run({"run", "-o", out, "--quiet", "--force"}).exit_code == 0);
+  CHECK_FALSE(nlohmann::json::parse(test::read_file(dir / "out/report.json")).contains("effective"));
 }
