@@ -27,7 +27,7 @@ namespace {
 const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
                                              "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
-                                             "homogenise.boundary", "solve.processes", "output.pictures"};
+                                             "homogenise.boundary", "solve.processes", "output.pictures", "output.cases"};
   return keys;
 }
 
@@ -174,6 +174,7 @@ void check_run_3d_config(const Config& c) {
 
 void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   check_run_3d_config(c);
+  const bool keep_cases = read_keep_cases(c, solve);
   FoamOptions foam = read_foam_options_3d(c);
   const Boundary boundary = read_boundary(c);
   claim_output(out, "run");
@@ -230,6 +231,7 @@ void run_run_3d_command(const Config& c, const std::filesystem::path& out, bool 
     seconds["solve"] = since(clock);
   }
   stage.end();
+  if (!keep_cases) drop_cases(dir, case_dirs, report);
   seconds["total"] = since(start);
   report["seconds"] = seconds;
   add_time_limit(report, tess_job.options.deadline);

@@ -57,13 +57,14 @@ struct RunPlan {
   FoamOptions foam;
   Boundary boundary;
   Pictures pictures;  // they cost more than the rest of a small run's output
+  bool keep_cases = true;
 };
 
 // The config's keys are known (check_keys) before this reads them.
 RunPlan read_run_plan(const Config& c, bool solve, Warnings& warnings) {
   const Config tess_config = c.subset(tessellate_config_keys());
   RunPlan plan{tess_config, c.subset(mesh_config_keys()), read_tessellate_job(tess_config), read_run_foam_options(c),
-               read_boundary(c), read_pictures(c)};
+               read_boundary(c), read_pictures(c), read_keep_cases(c, solve)};
   if (solve && plan.foam.traction != 0.0)
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   const TessellationOptions& to = plan.tess_job.options;
@@ -272,6 +273,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
                           staged, plan.boundary, stage, memory, report, warnings)
             : 0.0;
   report["seconds"]["solve"] = solve_seconds;
+  if (!plan.keep_cases) drop_cases(dir, case_dirs, report);
   report["seconds"]["total"] = since(start);
   report["memory_mib"] = memory.json();
   report["peak_memory_mib"] = largest(memory.json());

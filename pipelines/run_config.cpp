@@ -14,7 +14,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& run_own_config_keys() {
-  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "load.delta_T",
+  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "output.cases", "load.delta_T",
                                              "solve.processes"};
   return keys;
 }
@@ -33,6 +33,20 @@ Pictures read_pictures(const Config& c) {
   if (p == "basic") return Pictures::basic;
   if (p == "all" || p == "true") return Pictures::all;
   c.fail("output.pictures", "must be none, basic or all, got '" + p + "'");
+}
+
+bool read_keep_cases(const Config& c, bool solve) {
+  const std::string cases = c.has("output.cases") ? c.text("output.cases") : "keep";
+  if (cases != "keep" && cases != "answers") c.fail("output.cases", "must be keep or answers, got '" + cases + "'");
+  if (cases == "answers" && !solve)
+    c.fail("output.cases", "answers keeps a solved run's answers and drops its cases: it needs --solve (without it, the "
+                           "cases are what the run makes)");
+  return cases == "keep";
+}
+
+void drop_cases(const std::filesystem::path& dir, const std::vector<std::string>& cases, Json& report) {
+  for (const std::string& name : cases) std::filesystem::remove_all(dir / name);
+  report["cases"] = "dropped once solved (output.cases = answers)";
 }
 
 std::vector<std::string> run_config_keys() {

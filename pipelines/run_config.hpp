@@ -9,6 +9,7 @@
 #include "analysis/homogenise.hpp"
 #include "export/foam.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/report.hpp"
 
 namespace grainmesh {
 
@@ -21,6 +22,16 @@ const std::vector<std::string>& run_own_config_keys();
 // displacement.png), the default. true and false are all and none.
 enum class Pictures { none, basic, all };
 Pictures read_pictures(const Config& config);
+
+// What a solved run keeps of its cases (output.cases): keep (the default: every case, as
+// solved), or answers (its report, results.vtu and pictures; the case directories
+// dropped once solved: a sweep of hundreds of runs keeps megabytes, not gigabytes).
+// answers needs --solve (refused otherwise, naming the key). Returns whether the cases
+// are kept.
+bool read_keep_cases(const Config& config, bool solve);
+// Drops the case directories `cases` from a solved run's staging directory `dir` and
+// says so in `report` (cases: dropped).
+void drop_cases(const std::filesystem::path& dir, const std::vector<std::string>& cases, Json& report);
 
 // solve.processes (default 1; 1 to 1024), and the periodic cell homogenise.boundary =
 // periodic needs (domain.periodic): 2D and 3D runs read them alike.

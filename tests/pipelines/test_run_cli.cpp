@@ -130,23 +130,53 @@ TEST_CASE("grainmesh run --solve homogenises: the modulus lies between Reuss and
   }
 }
 
-TEST_CASE("a run of more than a million cells writes its case in binary unless export.format says ascii",
+TEST_CASE("a run of more than 100,000 cells writes its case in binary unless export.format says ascii",
           "[cli][run][export]") {
-#ifdef GRAINMESH_SANITIZED
-  SUCCEED("a million cells mesh ten times slower in the sanitizer build: the release build tests this");
-#else
   test::ScratchDir dir("binary-case");
-  const auto big = run_grainmesh({"run", "-o", (dir / "big").string(), "--set", "tessellation.grains=10000", "--set",
-                                  "domain.width=30", "--set", "domain.height=17", "--set", "output.pictures=none"});
+  const auto big = run_grainmesh({"run", "-o", (dir / "big").string(), "--set", "tessellation.grains=1100", "--set",
+                                  "domain.width=10", "--set", "domain.height=5.67", "--set", "output.pictures=none"});
   INFO(big.err);
   REQUIRE(big.exit_code == 0);
   const auto report = nlohmann::json::parse(test::read_file(dir / "big/report.json"));
-  REQUIRE(report["mesh"]["cells"].get<int>() > 1'000'000);
+  REQUIRE(report["mesh"]["cells"].get<int>() > 100'000);
   CHECK(report["case_format"] == "binary");
   CHECK(test::read_file(dir / "big/case/constant/polyMesh/owner").find("format      binary;") != std::string::npos);
   // The default cell stays ASCII.
   const auto small = run_grainmesh({"run", "-o", (dir / "small").string(), "--set", "output.pictures=none"});
   REQUIRE(small.exit_code == 0);
   CHECK(nlohmann::json::parse(test::read_file(dir / "small/report.json"))["case_format"] == "ascii");
-#endif
+}
+
+TEST_CASE("output.cases = answers keeps a solved run's answers and drops its cases", "[cli][run]") {
+  test::ScratchDir dir("answers-only");
+  const std::vector<std::string> small{"--set", "tessellation.grains=20", "--set", "homogenise.boundary=periodic"};
+  auto run = [&](const std::string& out, std::vector<std::string> args) {
+    args.insert(args.begin(), {"run", "-o", (dir / out).string(), "--quiet"});
+    args.insert(args.end(), small.begin(), small.end());
+    return run_grainmesh(args);
+  };
+  REQUIRE(run("kept", {"--solve"}).exit_code == 0);
+  const auto r = run("answers", {"--solve", "--set", "output.cases=answers"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto kept = nlohmann::json::parse(test::read_file(dir / "kept/report.json"));
+  const auto answers = nlohmann::json::parse(test::read_file(dir / "answers/report.json"));
+  // The same answer, its results and pictures; no case directory, and a small fraction of the disk.
+  CHECK(answers["effective"]["stiffness"] == kept["effective"]["stiffness"]);
+  for (const char* file : {"results.vtu", "stress_xx.png", "tessellation.json", "mesh.vtu", "config.ini"})
+    CHECK(fs::exists(dir / "answers" / file));
+  for (const char* name : {"case_xx", "case_yy", "case_xy"}) {
+    CHECK(fs::exists(dir / "kept" / name));
+    CHECK_FALSE(fs::exists(dir / "answers" / name));
+  }
+  CHECK(answers["cases"] == "dropped once solved (output.cases = answers)");
+  std::uintmax_t kept_bytes = 0, answer_bytes = 0;
+  for (const auto& f : fs::recursive_directory_iterator(dir / "kept")) kept_bytes += f.is_regular_file() ? f.file_size() : 0;
+  for (const auto& f : fs::recursive_directory_iterator(dir / "answers")) answer_bytes += f.is_regular_file() ? f.file_size() : 0;
+  CHECK(answer_bytes < kept_bytes / 2);
+  // Nothing to keep but cases without a solve: refused, naming the key.
+  test::check_refused({{"run", "--set", "output.cases=answers"}, 2, "output.cases: answers keeps a solved run's answers"},
+                      dir / "refused");
+  test::check_refused({{"run", "--set", "output.cases=some"}, 2, "output.cases: must be keep or answers, got 'some'"},
+                      dir / "refused");
 }
