@@ -48,6 +48,23 @@ Rgb viridis(double t) {
   return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
 }
 
+// A diverging map (after Moreland's cool-warm): blue at 0, near white at 0.5, red at 1.
+Rgb cool_warm(double t) {
+  static constexpr std::array<Rgb, 5> stops{{{0.230, 0.299, 0.754},
+                                             {0.552, 0.690, 0.996},
+                                             {0.865, 0.865, 0.865},
+                                             {0.958, 0.604, 0.482},
+                                             {0.706, 0.016, 0.150}}};
+  t = std::clamp(std::isfinite(t) ? t : 0.5, 0.0, 1.0) * (stops.size() - 1);
+  const auto k = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+  const double u = t - static_cast<double>(k);
+  const Rgb a = stops[k], b = stops[k + 1];
+  return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
+}
+
+// A field's colour at t in [0, 1] of its range.
+Rgb field_colour(const PictureOptions& options, double t) { return options.signed_field ? cool_warm(t) : viridis(t); }
+
 // A white image of a box at the asked width, mapping coordinates to pixels, y up, with
 // `extra_px` more rows at the bottom (for a colour bar).
 class Canvas {
@@ -195,7 +212,7 @@ std::pair<double, double> percentile_range(std::vector<double> v) {
 void draw_colour_bar(cairo_t* c, const Canvas& canvas, const PictureOptions& options, double least, double most) {
   const double x0 = options.margin_px, x1 = options.width_px - options.margin_px, y0 = canvas.height() - 56.0;
   for (int i = 0; i < 256; ++i) {
-    const Rgb col = viridis(i / 255.0);
+    const Rgb col = field_colour(options, i / 255.0);
     cairo_set_source_rgb(c, col.r, col.g, col.b);
     cairo_rectangle(c, x0 + (x1 - x0) * i / 256.0, y0, (x1 - x0) / 256.0 + 0.5, 14.0);
     cairo_fill(c);
@@ -273,7 +290,7 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& bo
     cairo_save(c);
     for (std::size_t t = 0; t < cell_count(mesh); ++t) {
       if (!trace(t)) continue;
-      const Rgb col = viridis((options.field[t] - least) / (most - least));
+      const Rgb col = field_colour(options, (options.field[t] - least) / (most - least));
       cairo_set_source_rgb(c, col.r, col.g, col.b);
       // A hairline of the same colour closes the seams between neighbours.
       cairo_fill_preserve(c);
@@ -361,7 +378,11 @@ void draw_mesh(const std::filesystem::path& file, const Mesh& mesh, const Pictur
   auto px = [&](Vec2 p) { return canvas.px(p); };
   // The colour range: the field's 1st to 99th percentile, so that a few peaks (at
   // junctions) do not wash out the rest; values beyond take the end colours.
-  const auto [least, most] = field ? percentile_range(options.field) : std::pair{0.0, 1.0};
+  auto [least, most] = field ? percentile_range(options.field) : std::pair{0.0, 1.0};
+  if (field && options.signed_field) {  // symmetric about zero: white is zero
+    const double reach = std::max({std::abs(least), std::abs(most), 1e-300});
+    least = -reach, most = reach;
+  }
   fill_mesh(c, canvas, mesh, box, options, field, least, most);
   stroke_mesh(c, canvas, mesh, box, options, field);
   cairo_reset_clip(c);

@@ -26,6 +26,10 @@ struct PictureOptions {
   // below.
   std::vector<double> field{};
   std::string field_name{};
+  // A signed field (a stress component): a diverging map instead, blue below zero, white
+  // at zero, red above, over a range symmetric about zero (the larger of the 1st and 99th
+  // percentiles' magnitudes), so that tension and compression read apart at a glance.
+  bool signed_field = false;
   // Below the picture: the name of each fill_by label's colour (a legend; labels drawn,
   // not a field), and a scale bar labelled in `length_unit` (e.g. "µm"; empty: the
   // number alone, in the caller's unit).
@@ -46,13 +50,15 @@ std::vector<double> nice_ticks(double lo, double hi);
 
 // Triangles filled by label (fill_by) or by a field, thin mesh edges when they are at
 // least a few pixels long, and thick lines along the mesh boundary and between labels
-// (outline_by). Throws IoError, also for label or field arrays not of one value per triangle.
+// (outline_by). Throws IoError when the file cannot be written, also for label or field
+// arrays not of one value per triangle; GeometryError for an empty mesh (nothing to draw).
 void write_mesh_png(const std::filesystem::path& file, const TriMesh& mesh, const PictureOptions& options = {});
 // The same for polygonal cells.
 void write_mesh_png(const std::filesystem::path& file, const CellMesh& mesh, const PictureOptions& options = {});
 
 // The cell with its regions filled by phase (holes left open), grain boundaries in thin
-// dark lines and the cell's sides in a thick one. Throws IoError.
+// dark lines and the cell's sides in a thick one. Throws IoError, or GeometryError for an
+// empty tessellation.
 void write_tessellation_png(const std::filesystem::path& file, const Tessellation& t,
                             const PictureOptions& options = {});
 

@@ -92,11 +92,12 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
   const std::string at = ", z = " + to_text(in.section_z, 3) + (in.unit.empty() ? "" : " " + in.unit);
   // A state other than a load case's own (the thermal residual) says so in its titles.
   const std::string state = suffix.empty() ? "" : "residual ";
-  for (const auto& [name, field, title] : {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)"},
-                                           std::tuple{"von_mises", &mises, "von Mises (MPa)"}})
+  for (const auto& [name, field, title, signed_field] : {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)", true},
+                                                         std::tuple{"von_mises", &mises, "von Mises (MPa)", false}})
     write_mesh_png(in.dir / (std::string(name) + suffix + ".png"), s.cells,
                    {.width_px = in.picture_width, .fill_by = {}, .outline_by = s.grain, .view = {}, .field = *field,
-                    .field_name = state + title + at, .legend = {}, .scale_bar = true, .length_unit = in.unit});
+                    .field_name = state + title + at, .signed_field = signed_field, .legend = {}, .scale_bar = true,
+                    .length_unit = in.unit});
 }
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx ... xy} (1/K,

@@ -104,6 +104,44 @@ bool key_matches(std::string_view pattern, std::string_view key) {
   }
 }
 
+// Levenshtein's edit distance.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The known key nearest `key` when it is a slip away (a letter or two: US spelling,
+// a typo), a "*" part taken as the key's own; empty otherwise.
+std::string nearest_key(const std::string& key, const std::vector<std::string>& known) {
+  std::string best;
+  std::size_t best_distance = 3;  // at most two edits
+  for (const std::string& k : known) {
+    // The pattern with its "*" parts filled from the key's.
+    std::string filled;
+    std::size_t kp = 0, pp = 0;
+    while (pp <= k.size()) {
+      const std::size_t pe = std::min(k.find('.', pp), k.size()), ke = std::min(key.find('.', kp), key.size());
+      const std::string part = k.substr(pp, pe - pp);
+      filled += (filled.empty() ? "" : ".") + (part == "*" && kp <= key.size() ? key.substr(kp, ke - kp) : part);
+      pp = pe + 1;
+      kp = ke + 1;
+    }
+    const std::size_t d = edit_distance(key, filled);
+    if (d < best_distance && 4 * d <= key.size()) best_distance = d, best = filled;  // a slip, not another short key
+  }
+  return best;
+}
+
 }  // namespace
 
 void Config::check_keys(const std::vector<std::string>& known) const {
@@ -115,8 +153,12 @@ void Config::check_keys(const std::vector<std::string>& known) const {
       std::string hint;
       for (const auto& k : known)
         if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
+      const std::string nearest = nearest_key(key, known);
       throw ConfigError((set_.count(key) ? std::string("--set") : source_) + ": unknown key '" + key + "'" +
-                        (hint.empty() ? "" : " (known here: " + hint + ")"));
+                        (!nearest.empty() ? " (did you mean " + nearest + "?)"
+                         : hint.empty()   ? ""
+                                          : " (known here: " + hint + ")") +
+                        "; grainmesh keys lists them all");
     }
   }
 }

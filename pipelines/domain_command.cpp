@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "pipelines/config_keys.hpp"
 #include "domain/shape_parser.hpp"
 #include "export/mesh_description.hpp"
 #include "export/picture.hpp"
@@ -17,20 +18,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& domain_config_keys() {
-  static const std::vector<std::string> keys{
-      "domain.shape",          "domain.bbox",
-      "interface.shape",       "size.h0",
-      "size.function",         "size.curvature_segments",
-      "size.curvature_gradient", "size.gradient", "fixed.points",
-      "fixed.polygon_vertices", "distmesh.seed",
-      "distmesh.max_iterations", "distmesh.fscale",
-      "distmesh.dt",           "distmesh.ttol",
-      "distmesh.dptol",        "distmesh.geps",
-      "distmesh.density_control_every", "distmesh.boundary_seeding",
-      "distmesh.split_long_edges",
-      "distmesh.optimize_sweeps",
-      "distmesh.optimize_below", "output.picture_width",
-      kTimeLimitKey};
+  static const std::vector<std::string> keys = keys_of(kDomainKey);
   return keys;
 }
 

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "common/errors.hpp"
+#include "pipelines/config_keys.hpp"
 #include "common/format.hpp"
 #include "common/json_error.hpp"
 #include "export/mesh_description.hpp"
@@ -18,11 +19,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& export_config_keys() {
-  static const std::vector<std::string> keys{
-      "export.thickness", "export.convert_to_meters", "export.cyclic", "export.format", "export.grain_zones", "export.cells",
-      "export.stiffness_interpolation",
-      "load.displacement", "load.traction", "load.uniaxial",          "load.plane_stress", "phase.*.E",   "phase.*.nu",
-      kUnitsCheckedKey};
+  static const std::vector<std::string> keys = keys_of(kExportKey);
   return keys;
 }
 

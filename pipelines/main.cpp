@@ -16,6 +16,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/converge_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/domain_command.hpp"
@@ -51,8 +52,10 @@ constexpr const char* kUsage =
     "      check that a mesh conforms to its tessellation (exit 0) or name the violation (exit 3)\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      mesh a domain given by distance and size functions (see data/examples/)\n"
+    "  keys [COMMAND]\n"
+    "      every config key (of run, tessellate, mesh, export, domain or sweep) with its default and meaning\n"
     "\n"
-    "grainmesh <command> --help shows the options of a command.\n";
+    "grainmesh <command> --help shows the options of a command and its config keys.\n";
 
 constexpr int kOk = kExitOk;
 
@@ -63,6 +66,27 @@ template <typename E>
 E naming_source(const E& e, const Config& c) {
   const std::string msg = e.what();
   return E(msg.rfind(c.source(), 0) == 0 || msg.rfind("--set", 0) == 0 ? msg : c.source() + ": " + msg);
+}
+
+// The config keys a command reads (config_keys.hpp); 0 for none.
+unsigned command_keys(const std::string& name) {
+  if (name == "tessellate") return kTessellateKey;
+  if (name == "mesh") return kMeshKey;
+  if (name == "export") return kExportKey;
+  if (name == "domain") return kDomainKey;
+  if (name == "run" || name == "converge") return kTessellateKey | kMeshKey | kExportKey | kRunKey;
+  if (name == "sweep") return kTessellateKey | kMeshKey | kExportKey | kRunKey | kSweepKey;
+  return 0;
+}
+
+// `grainmesh keys [COMMAND]`: the key reference, of one command or all.
+int keys_main(const std::vector<std::string>& args) {
+  if (args.size() > 1) throw ConfigError("keys: give at most one command (run, tessellate, mesh, export, domain, sweep)");
+  const unsigned keys = args.empty() ? ~0u : command_keys(args[0]);
+  if (keys == 0)
+    throw ConfigError("keys: unknown command '" + args[0] + "' (run, tessellate, mesh, export, domain, sweep)");
+  std::cout << key_reference(keys);
+  return kOk;
 }
 
 // Parses a command's arguments against `desc` (which gets --help) with the positional
@@ -87,7 +111,8 @@ std::optional<po::variables_map> parse_options(const std::string& name, po::opti
     throw ConfigError(name + ": " + e.what());
   }
   if (vm.count("help")) {
-    std::cout << desc << "\nSee README.md, section 'grainmesh " << name << "'.\n";
+    std::cout << desc << "\nConfig keys (grainmesh keys " << name << "):\n" << key_reference(command_keys(name))
+              << "\nSee README.md, section 'grainmesh " << name << "'.\n";
     return std::nullopt;
   }
   return vm;
@@ -305,6 +330,7 @@ int main(int argc, char** argv) {
     if (args[0] == "check") return check_main(rest);
     if (args[0] == "export") return export_main(rest);
     if (args[0] == "domain") return config_command("domain", rest, run_domain_command);
+    if (args[0] == "keys") return keys_main(rest);
     throw ConfigError("unknown command '" + args[0] + "' (run grainmesh --help)");
   } catch (const Error& e) {
     wait_if_interrupted();  // an error the interrupt caused (a child it stopped) is not the run's

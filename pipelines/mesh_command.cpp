@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "common/errors.hpp"
+#include "pipelines/config_keys.hpp"
 #include "common/format.hpp"
 #include "export/mesh_description.hpp"
 #include "export/picture.hpp"
@@ -21,10 +22,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& mesh_config_keys() {
-  static const std::vector<std::string> keys{
-      "mesh.size",    "mesh.h",    "mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size",
-      "mesh.gradient", "mesh.grading", "mesh.threads", "mesh.seed", "mesh.max_iterations", "phase.*.size",
-      "mesh.tets_per_grain", "output.picture_width", "output.section", kTimeLimitKey};
+  static const std::vector<std::string> keys = keys_of(kMeshKey);
   return keys;
 }
 
@@ -128,12 +126,13 @@ std::vector<std::string> mesh_warnings(const GrainMesh& m, const MeshQuality& q,
 
 void write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m, int picture_width,
                       bool detail, const std::string& length_unit) {
-  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.grain}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}});
   MeshDescription description{.cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .phases = {}};
   for (const Phase& p : t.phases) description.phases.push_back({p.name, p.youngs_modulus, p.poisson_ratio});
+  const std::vector<std::string> names = phase_names(t);  // the phase array's labels, as the 3D mesh.vtu has them
+  write_vtu(dir / "mesh.vtu", m.mesh, {{"grain", m.grain}, {"phase", m.phase}, {"quality", triangle_quality(m.mesh)}},
+            {{"phase_names", names}});
   write_mesh_description(dir / "mesh.json", description);
   if (picture_width == 0) return;
-  const std::vector<std::string> names = phase_names(t);
   write_mesh_png(dir / "mesh.png", m.mesh,
                  {.width_px = picture_width, .fill_by = m.phase, .outline_by = m.grain, .legend = names, .scale_bar = true,
                   .length_unit = length_unit});

@@ -3,6 +3,8 @@
 #include "analysis/phase_statistics.hpp"
 #include "export/picture.hpp"
 
+#include <tuple>
+
 namespace grainmesh {
 
 void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
@@ -12,17 +14,18 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
   std::vector<double> sxx, syy, sxy, d = displacement_length(fields);
   for (const StressState& s : sigma) sxx.push_back(1e-6 * s.xx), syy.push_back(1e-6 * s.yy), sxy.push_back(1e-6 * s.xy);
   for (double& v : d) v *= 1e9;
-  std::vector<std::pair<std::string, std::pair<std::vector<double>, std::string>>> pictures{
-      {"stress_xx.png", {sxx, "sigma_xx (MPa)"}}};
+  // The stress components are signed (a diverging map, white at zero); |D| is not.
+  std::vector<std::tuple<std::string, std::vector<double>, std::string, bool>> pictures{
+      {"stress_xx.png", sxx, "sigma_xx (MPa)", true}};
   if (all) {
-    pictures.push_back({"stress_yy.png", {syy, "sigma_yy (MPa)"}});
-    pictures.push_back({"stress_xy.png", {sxy, "tau_xy (MPa)"}});
-    pictures.push_back({"displacement.png", {d, "|D| (nm)"}});
+    pictures.emplace_back("stress_yy.png", syy, "sigma_yy (MPa)", true);
+    pictures.emplace_back("stress_xy.png", sxy, "tau_xy (MPa)", true);
+    pictures.emplace_back("displacement.png", d, "|D| (nm)", false);
   }
-  for (const auto& [name, field] : pictures)
+  for (const auto& [name, field, title, signed_field] : pictures)
     write_mesh_png(dir / name, m.mesh,
-                   {.width_px = picture_width, .fill_by = {}, .outline_by = m.grain, .view = {}, .field = field.first,
-                    .field_name = field.second, .legend = {}, .scale_bar = true, .length_unit = unit});
+                   {.width_px = picture_width, .fill_by = {}, .outline_by = m.grain, .view = {}, .field = field,
+                    .field_name = title, .signed_field = signed_field, .legend = {}, .scale_bar = true, .length_unit = unit});
 }
 
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,

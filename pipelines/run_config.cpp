@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "pipelines/config_keys.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
@@ -14,8 +15,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& run_own_config_keys() {
-  static const std::vector<std::string> keys{"homogenise.boundary", "output.pictures", "output.cases", "load.delta_T",
-                                             "solve.processes"};
+  static const std::vector<std::string> keys = keys_of(kRunKey);
   return keys;
 }
 

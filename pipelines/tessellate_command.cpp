@@ -10,6 +10,7 @@
 #include "export/picture.hpp"
 #include "export/vtu.hpp"
 #include "domain/shape_parser.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/material_units.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
@@ -19,14 +20,7 @@
 namespace grainmesh {
 
 const std::vector<std::string>& tessellate_config_keys() {
-  static const std::vector<std::string> keys{
-      "domain.width",           "domain.height",           "domain.depth",            "domain.periodic",
-      "tessellation.grains",    "tessellation.grain_size", "tessellation.seeds", "tessellation.seed",
-      "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
-      "tessellation.phase_mode", "tessellation.arrangement", "tessellation.matrix_phase",
-      "tessellation.contiguity", "tessellation.contiguity_phase",
-      "phase.*.fraction",       "phase.*.E",               "phase.*.nu",              "phase.*.alpha",
-      "output.picture_width",   "output.section",          kTimeLimitKey,             kUnitsCheckedKey};
+  static const std::vector<std::string> keys = keys_of(kTessellateKey);
   return keys;
 }
 

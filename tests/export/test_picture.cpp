@@ -78,3 +78,24 @@ TEST_CASE("a legend or a scale bar adds a row under the picture", "[export][pict
   CHECK(png_height(dir / "key.png") == png_height(dir / "bare.png") + 30);
   CHECK(png_height(dir / "bare.png") == 600 / 2 + 20);  // 560 px for 2 x 1, the margins
 }
+
+TEST_CASE("a signed field is drawn with a diverging map about zero, a magnitude with a sequential one", "[export][picture]") {
+  test::ScratchDir dir("picture-signed");
+  // Two triangles of a unit square, one in tension and one in compression.
+  TriMesh mesh;
+  mesh.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const std::vector<double> field{-3.0, 1.0};
+  write_mesh_png(dir / "sequential.png", mesh, {.width_px = 200, .field = field, .field_name = "sigma_xx (MPa)"});
+  write_mesh_png(dir / "signed.png", mesh,
+                 {.width_px = 200, .field = field, .field_name = "sigma_xx (MPa)", .signed_field = true});
+  CHECK(test::read_file(dir / "signed.png") != test::read_file(dir / "sequential.png"));
+  // The range is symmetric about zero: the same picture whatever the sign of the field
+  // but for the colours swapped, so a field and its negation differ, and a field of zeros
+  // (no range at all) is drawn too.
+  write_mesh_png(dir / "negated.png", mesh,
+                 {.width_px = 200, .field = {3.0, -1.0}, .field_name = "sigma_xx (MPa)", .signed_field = true});
+  CHECK(test::read_file(dir / "negated.png") != test::read_file(dir / "signed.png"));
+  CHECK_NOTHROW(write_mesh_png(dir / "zero.png", mesh,
+                               {.width_px = 200, .field = {0.0, 0.0}, .field_name = "tau_xy (MPa)", .signed_field = true}));
+}

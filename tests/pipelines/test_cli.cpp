@@ -122,3 +122,47 @@ TEST_CASE("help and version", "[cli]") {
   CHECK(help.out.find("--set") != std::string::npos);
   CHECK(run_grainmesh({}).exit_code == 2);
 }
+
+TEST_CASE("grainmesh keys and a command's --help list every config key with its default and meaning", "[cli][config]") {
+  const auto all = run_grainmesh({"keys"});
+  REQUIRE(all.exit_code == 0);
+  // Every key a command's reader checks against (config_keys.hpp), each once, with a default
+  // and a meaning: the reference cannot drift from what is read.
+  for (const char* key : {"domain.width", "tessellation.seed", "phase.*.alpha", "mesh.tets_per_grain", "export.cells",
+                          "load.plane_stress", "homogenise.boundary", "output.cases", "units.checked", "limits.seconds",
+                          "distmesh.dptol", "sweep.realisations"}) {
+    CAPTURE(key);
+    const auto at = all.out.find(std::string("  ") + key + " ");
+    REQUIRE(at != std::string::npos);
+    const std::string line = all.out.substr(at, all.out.find('\n', at) - at);
+    CHECK(line.find(" = ") != std::string::npos);
+    CHECK(line.size() > 60);  // a meaning after the default
+    CHECK(all.out.find(std::string("  ") + key + " ", at + 1) == std::string::npos);
+  }
+  // One command's: its keys, not the others'.
+  const auto mesh = run_grainmesh({"keys", "mesh"});
+  REQUIRE(mesh.exit_code == 0);
+  CHECK(mesh.out.find("mesh.triangles_per_grain") != std::string::npos);
+  CHECK(mesh.out.find("homogenise.boundary") == std::string::npos);
+  const auto help = run_grainmesh({"run", "--help"});
+  CHECK(help.exit_code == 0);
+  CHECK(help.out.find("homogenise.boundary") != std::string::npos);
+  CHECK(help.out.find("tessellation.lloyd_iterations") != std::string::npos);
+  const auto bad = run_grainmesh({"keys", "solve"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err == "grainmesh: error: keys: unknown command 'solve' (run, tessellate, mesh, export, domain, sweep)\n");
+  // A key a letter or two off (US spelling) is met with the one meant.
+  const auto us = run_grainmesh({"run", "-o", "x", "--set", "homogenize.boundary=periodic"});
+  CHECK(us.exit_code == 2);
+  CHECK(us.err.find("unknown key 'homogenize.boundary' (did you mean homogenise.boundary?)") != std::string::npos);
+}
+
+TEST_CASE("a 2D mesh.vtu names its phases, as the 3D one does", "[cli][vtu]") {
+  test::ScratchDir dir("mesh-phase-names");
+  REQUIRE(run_grainmesh({"run", "-o", (dir / "out").string(), "--set", "tessellation.grains=10", "--set",
+                         "output.pictures=none"})
+              .exit_code == 0);
+  const std::string vtu = test::read_file(dir / "out/mesh.vtu");
+  CHECK(vtu.find("phase_names") != std::string::npos);
+  CHECK(vtu.find("particulate") != std::string::npos);
+}

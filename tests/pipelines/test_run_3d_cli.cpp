@@ -171,3 +171,20 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   REQUIRE(column("thermal_expansion_xx_mean") >= 0);
   CHECK(std::stod(rows[1][column("thermal_expansion_xx_mean")]) < std::stod(rows[2][column("thermal_expansion_xx_mean")]));
 }
+
+TEST_CASE("3D pictures' scale bars carry the run's length unit", "[cli][run3d]") {
+  // The same cell in micrometres and in millimetres: the same geometry, the pictures' scale
+  // bars labelled apart (they read "1" alone before).
+  test::ScratchDir dir("scale-unit");
+  std::ofstream(dir / "cell.ini") << "[domain]\nwidth = 1\nheight = 1\ndepth = 1\n[tessellation]\ngrains = 8\n"
+                                     "[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.2\n[mesh]\ntets_per_grain = 60\n";
+  for (const char* unit : {"1e-6", "1e-3"})
+    REQUIRE(test::run_grainmesh({"run", (dir / "cell.ini").string(), "-o", (dir / unit).string(), "--quiet", "--set",
+                                 std::string("export.convert_to_meters=") + unit})
+                .exit_code == 0);
+  for (const char* picture : {"tessellation.png", "mesh.png"}) {
+    CAPTURE(picture);
+    CHECK(test::read_file(dir / "1e-6" / picture) != test::read_file(dir / "1e-3" / picture));
+  }
+  CHECK(test::read_file(dir / "1e-6/mesh.vtu") == test::read_file(dir / "1e-3/mesh.vtu"));  // the same mesh
+}

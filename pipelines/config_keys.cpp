@@ -1,0 +1,126 @@
+#include "pipelines/config_keys.hpp"
+
+#include <cstdio>
+
+namespace grainmesh {
+
+namespace {
+constexpr unsigned T = kTessellateKey, M = kMeshKey, E = kExportKey, R = kRunKey, D = kDomainKey, S = kSweepKey;
+}  // namespace
+
+const std::vector<ConfigKey>& config_key_table() {
+  static const std::vector<ConfigKey> table{
+      // The cell and its grains.
+      {"domain.width", T, "-", "cell width W (required), in the config's length unit (micrometres with export.convert_to_meters = 1e-6)"},
+      {"domain.height", T, "-", "cell height H (required)"},
+      {"domain.depth", T, "-", "cell depth D: a 3D cell (W x H x D box); leave it out for 2D"},
+      {"domain.periodic", T, "true", "periodic in every direction; false cuts a plane (or box) tessellation by the cell"},
+      {"tessellation.grains", T, "100", "number of seeds (grains), at least 1"},
+      {"tessellation.grain_size", T, "-", "instead of grains: the mean equivalent-circle (2D) or -sphere (3D) diameter"},
+      {"tessellation.seeds", T, "-", "instead of drawing them: the generator points, 'x y, x y, ...' (2D) or 'x y z, ...' (3D)"},
+      {"tessellation.seed", T, "1", "the only source of randomness: the same seed gives the same bytes"},
+      {"tessellation.lloyd_iterations", T, "0", "centroidal (Lloyd) relaxation steps; 3 or more give no 2D corner below 30 degrees"},
+      {"tessellation.size_cv", T, "0", "above 0: a Laguerre tessellation, lognormal radii of this coefficient of variation"},
+      {"tessellation.min_edge", T, "0.1", "edges shorter than this x the mean grain diameter are merged away; 0 = off"},
+      {"tessellation.phase_mode", T, "grain", "grain (each grain one phase) or binder (2D: the matrix phase a layer between shrunk grains)"},
+      {"tessellation.arrangement", T, "random", "random, dispersed (a phase's grains avoid each other) or clustered (they grow together)"},
+      {"tessellation.matrix_phase", T, "matrix or binder", "binder mode: the matrix phase's name"},
+      {"tessellation.contiguity", T, "-", "grain mode (2D): the contiguity to reach for tessellation.contiguity_phase (0 < C < 1)"},
+      {"tessellation.contiguity_phase", T, "the rest phase", "the phase whose contiguity tessellation.contiguity sets"},
+      {"phase.*.fraction", T, "-", "a phase's area (2D) or volume (3D) fraction, in (0, 1], or rest; required for every phase"},
+      {"phase.*.E", T | E, "-", "a phase's Young's modulus, Pa (WC 700e9); below 1 MPa refused unless units.checked"},
+      {"phase.*.nu", T | E, "-", "a phase's Poisson ratio, in (-1, 0.5)"},
+      {"phase.*.alpha", T, "-", "a phase's linear thermal expansion, 1/K (WC 5.2e-6); needed with load.delta_T; above 1e-3 refused unless units.checked"},
+      {"units.checked", T | E, "false", "true: take moduli below 1 MPa and expansions above 1e-3/K as given (they are refused as unit slips otherwise)"},
+      {"output.picture_width", T | M | D, "1200", "width of the pictures in pixels"},
+      {"output.section", T | M, "0.5", "3D: the height of the pictured section, a fraction of domain.depth (moved off a layer of vertices)"},
+      {"limits.seconds", T | M | D, "21600", "wall-clock limit of the run in seconds, or none; reached: exit 5, nothing written"},
+      // The mesh.
+      {"mesh.size", M, "-", "element edge length, the tessellation's unit (mesh.h in a run)"},
+      {"mesh.h", M, "-", "the same as mesh.size"},
+      {"mesh.triangles_per_grain", M, "100", "2D, instead of mesh.size: the size for about this many triangles per grain"},
+      {"mesh.tets_per_grain", M, "500", "3D, instead of mesh.size: the size for about this many tetrahedra per grain"},
+      {"mesh.boundary_size", M, "0", "2D: element size along grain boundaries; 0 = none"},
+      {"mesh.junction_size", M, "0", "2D: element size at triple junctions; 0 = none"},
+      {"mesh.gradient", M, "0.3", "2D: how fast sizes grow away from boundaries, junctions and thin features (0.05 to 10)"},
+      {"mesh.grading", M, "0.3", "the same as mesh.gradient"},
+      {"mesh.threads", M, "0", "threads; 0 = all cores (the mesh is the same either way)"},
+      {"mesh.seed", M, "1", "2D: seed of the regions' random streams"},
+      {"mesh.max_iterations", M, "1000", "2D: force iterations per region (a valid mesh is returned at the limit)"},
+      {"phase.*.size", M, "-", "2D: a phase's own element size"},
+      // The OpenFOAM case and its load.
+      {"export.convert_to_meters", E, "1e-6", "the mesh's length unit in metres (configs in micrometres)"},
+      {"export.thickness", E, "mean edge length", "2D: extrusion thickness, mesh units"},
+      {"export.cyclic", E, "false", "periodic meshes: cyclic pairs instead of side patches (homogenise.boundary = periodic sets it)"},
+      {"export.format", E, "ascii", "ascii or binary (a run: binary above 100,000 cells)"},
+      {"export.grain_zones", E, "false", "a cellZone per grain as well as per phase"},
+      {"export.cells", E, "triangles (3D: polyhedra)", "2D: triangles or polygons (the dual); 3D: polyhedra (the dual, converges) or tetrahedra"},
+      {"export.stiffness_interpolation", E, "auto", "2D: auto, harmonic or linear interpolation of the stiffness to faces"},
+      {"load.displacement", E, "0.001", "x displacement of right (mixed), or the periodic cases' strain x width, mesh units"},
+      {"load.traction", E, "0", "2D mixed load: when not 0, the normal traction on right in Pa instead of the displacement"},
+      {"load.uniaxial", E, "false", "mixed load: top traction-free instead of a symmetry plane"},
+      {"load.plane_stress", E, "false", "2D: plane stress instead of plane strain (report.json: plane_state)"},
+      // What a run does with it.
+      {"homogenise.boundary", R, "mixed", "mixed (the thesis' load, one modulus) or periodic (load cases on cyclic pairs, the stiffness tensor)"},
+      {"load.delta_T", R, "0", "periodic: a uniform temperature change in K (e.g. -1000): thermal residual stress and expansion"},
+      {"solve.processes", R, "1", "MPI processes for each solve (decomposePar, mpirun, reconstructPar)"},
+      {"output.pictures", R, "all", "none (no pictures, no results.vtu), basic or all"},
+      {"output.cases", R, "keep", "keep every case as solved, or answers (--solve): drop the case directories once solved"},
+      // grainmesh domain.
+      {"domain.shape", D, "-", "the domain's distance function (required; several lines are united)"},
+      {"domain.bbox", D, "the shape's bounds", "'x1 y1 x2 y2': where the initial lattice is spread"},
+      {"interface.shape", D, "-", "an internal boundary the mesh must follow; several lines are united"},
+      {"size.h0", D, "-", "the smallest element size (required)"},
+      {"size.function", D, "1", "relative size h(x, y) > 0: a number or a muparser expression in x, y"},
+      {"size.curvature_segments", D, "48", "curved boundaries get at least this many edges per full turn; 0 = off"},
+      {"size.curvature_gradient", D, "0.1", "how fast that refinement relaxes away from the curve"},
+      {"size.gradient", D, "0.3", "size functions growing faster than this are graded first; 0 = as given"},
+      {"fixed.points", D, "-", "'x y, x y, ...': nodes that never move"},
+      {"fixed.polygon_vertices", D, "true", "polygon corners on the boundary or interface become fixed points"},
+      {"distmesh.seed", D, "1", "seed of the rejection step's random numbers"},
+      {"distmesh.max_iterations", D, "5000", "bound on force iterations (a valid mesh is returned at it)"},
+      {"distmesh.fscale", D, "1.2", "the bars' rest length over their size"},
+      {"distmesh.dt", D, "0.2", "time step of the force iteration"},
+      {"distmesh.ttol", D, "0.1", "retriangulate once a point moved this x its size"},
+      {"distmesh.dptol", D, "0.001", "converged when no point moves more than this x its size"},
+      {"distmesh.geps", D, "0.001", "a point farther than this x h0 outside the boundary is outside"},
+      {"distmesh.density_control_every", D, "30", "every so many iterations, drop points on bars shorter than half their size; 0 = never"},
+      {"distmesh.boundary_seeding", D, "true", "start with points on the boundary and the interface"},
+      {"distmesh.split_long_edges", D, "true", "density control also splits boundary and interface edges longer than 1.5 x their size"},
+      {"distmesh.optimize_sweeps", D, "50", "final local quality optimisation sweeps; 0 = none"},
+      {"distmesh.optimize_below", D, "0.99", "... of points with a triangle of quality below this"},
+      // grainmesh sweep.
+      {"sweep.realisations", S, "1", "runs of each point, each its own seed"},
+      {"sweep.*", S, "-", "a run key swept: its comma-separated values (e.g. sweep.phase.Co.fraction = 0.1, 0.2)"},
+  };
+  return table;
+}
+
+std::vector<std::string> keys_of(unsigned commands) {
+  std::vector<std::string> keys;
+  for (const ConfigKey& k : config_key_table())
+    if ((k.commands & commands) != 0) keys.emplace_back(k.key);
+  return keys;
+}
+
+std::string key_reference(unsigned commands) {
+  // Sections in the order they first appear, each with all its keys.
+  std::vector<std::string> sections;
+  std::vector<std::string> bodies;
+  for (const ConfigKey& k : config_key_table()) {
+    if ((k.commands & commands) == 0) continue;
+    const std::string key = k.key;
+    const std::string section = key.substr(0, key.find('.'));
+    std::size_t s = 0;
+    while (s < sections.size() && sections[s] != section) ++s;
+    if (s == sections.size()) sections.push_back(section), bodies.emplace_back();
+    char line[96];
+    std::snprintf(line, sizeof line, "  %-30s = %-18s ", k.key, k.default_text);
+    bodies[s] += std::string(line) + k.meaning + "\n";
+  }
+  std::string text;
+  for (std::size_t s = 0; s < sections.size(); ++s) text += (s ? "\n[" : "[") + sections[s] + "]\n" + bodies[s];
+  return text;
+}
+
+}  // namespace grainmesh
