@@ -20,11 +20,11 @@ void die_with_parent(pid_t parent, int signal) {
   if (getppid() != parent) _exit(128 + signal);  // it died before the line above
 }
 
-int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
-              const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
-              const std::vector<std::string>& environment, const LogWatcher& watch, const ChildBudget& budget) {
-  deadline.check("before " + what + " started");
-  // The child's environment, built before fork (the child may only exec).
+namespace {
+
+// A child's environment: this process's with `environment` (NAME=value) added, replacing
+// variables of the same name. Built before fork: the child may only exec.
+std::vector<std::string> child_environment(const std::vector<std::string>& environment) {
   std::vector<std::string> variables = environment;
   auto replaced = [&](std::string_view entry) {
     const std::string_view name = entry.substr(0, entry.find('=') + 1);
@@ -34,6 +34,32 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   };
   for (char** e = environ; *e != nullptr; ++e)
     if (!replaced(*e)) variables.emplace_back(*e);
+  return variables;
+}
+
+// In the child just forked from `parent`: the program `args` in `dir`, its output into
+// `out`; exit code 127 when it cannot be started.
+[[noreturn]] void exec_child(pid_t parent, const std::filesystem::path& dir, int out, std::vector<char*>& args,
+                             std::vector<char*>& envp) {
+  die_with_parent(parent);
+  // The program gets the signals this process leaves to its interrupt thread (interrupt.hpp).
+  sigset_t all;
+  sigfillset(&all);
+  sigprocmask(SIG_UNBLOCK, &all, nullptr);
+  if (chdir(dir.c_str()) != 0) _exit(127);
+  dup2(out, STDOUT_FILENO);  // dup2 clears close-on-exec on the copies
+  dup2(out, STDERR_FILENO);
+  execvpe(args[0], args.data(), envp.data());
+  _exit(127);
+}
+
+}  // namespace
+
+int run_child(const std::vector<std::string>& argv, const std::filesystem::path& dir,
+              const std::filesystem::path& log, const Deadline& deadline, const std::string& what,
+              const std::vector<std::string>& environment, const LogWatcher& watch, const ChildBudget& budget) {
+  deadline.check("before " + what + " started");
+  std::vector<std::string> variables = child_environment(environment);
   std::vector<char*> envp;
   for (std::string& v : variables) envp.push_back(v.data());
   envp.push_back(nullptr);
@@ -52,18 +78,7 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
     if (in >= 0) close(in);
     throw IoError(what + ": cannot start it (fork failed)");
   }
-  if (pid == 0) {
-    die_with_parent(parent);
-    // The program gets the signals this process leaves to its interrupt thread (interrupt.hpp).
-    sigset_t all;
-    sigfillset(&all);
-    sigprocmask(SIG_UNBLOCK, &all, nullptr);
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    dup2(out, STDOUT_FILENO);  // dup2 clears close-on-exec on the copies
-    dup2(out, STDERR_FILENO);
-    execvpe(args[0], args.data(), envp.data());
-    _exit(127);
-  }
+  if (pid == 0) exec_child(parent, dir, out, args, envp);
   close(out);
   // mpirun is stopped with SIGTERM first, so that it takes the solver's ranks with it.
   const bool graceful = argv.front() == "mpirun";
@@ -85,7 +100,6 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   auto last_output = started;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   int status = 0;
-  bool killed = false;
   // Polled, so the deadline is noticed within a tenth of a second.
   while (true) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
@@ -100,9 +114,8 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
       deadline.check("while " + what + " ran (it was stopped)");
     }
     wrote = false;
-    if (follow() && !killed) {
+    if (follow()) {  // the watcher says stop
       status = stop_child(pid, graceful);
-      killed = true;
       break;
     }
     if (wrote) last_output = Clock::now();

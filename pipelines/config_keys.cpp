@@ -6,10 +6,10 @@ namespace grainmesh {
 
 namespace {
 constexpr unsigned T = kTessellateKey, M = kMeshKey, E = kExportKey, R = kRunKey, D = kDomainKey, S = kSweepKey;
-}  // namespace
 
-const std::vector<ConfigKey>& config_key_table() {
-  static const std::vector<ConfigKey> table{
+// The cell, its grains and their mesh.
+std::vector<ConfigKey> cell_keys() {
+  return {
       // The cell and its grains.
       {"domain.width", T, "-", "cell width W (required), in the config's length unit (micrometres with export.convert_to_meters = 1e-6)"},
       {"domain.height", T, "-", "cell height H (required)"},
@@ -48,6 +48,12 @@ const std::vector<ConfigKey>& config_key_table() {
       {"mesh.seed", M, "1", "2D: seed of the regions' random streams"},
       {"mesh.max_iterations", M, "1000", "2D: force iterations per region (a valid mesh is returned at the limit)"},
       {"phase.*.size", M, "-", "2D: a phase's own element size"},
+  };
+}
+
+// The case, its solve, the domain mesher and the sweep.
+std::vector<ConfigKey> case_keys() {
+  return {
       // The OpenFOAM case and its load.
       {"export.convert_to_meters", E, "1e-6", "the mesh's length unit in metres (configs in micrometres)"},
       {"export.thickness", E, "mean edge length", "2D: extrusion thickness, mesh units"},
@@ -93,6 +99,16 @@ const std::vector<ConfigKey>& config_key_table() {
       {"sweep.realisations", S, "1", "runs of each point, each its own seed"},
       {"sweep.*", S, "-", "a run key swept: its comma-separated values (e.g. sweep.phase.Co.fraction = 0.1, 0.2)"},
   };
+}
+
+}  // namespace
+
+const std::vector<ConfigKey>& config_key_table() {
+  static const std::vector<ConfigKey> table = [] {
+    std::vector<ConfigKey> all = cell_keys();
+    for (const ConfigKey& k : case_keys()) all.push_back(k);
+    return all;
+  }();
   return table;
 }
 

@@ -93,6 +93,27 @@ std::vector<std::string> write_cases(const std::filesystem::path& dir, const Exp
   return case_dirs;
 }
 
+// The run's tessellation, its seconds and memory, its warnings.
+Tessellation tessellate_stage(const RunPlan& plan, const StageLine& stage, StageMemoryLog& memory, Json& seconds,
+                              Warnings& warnings) {
+  const auto clock = Clock::now();
+  memory.begin();
+  stage.show("tessellating");
+  Tessellation t = run_tessellate_job(plan.tess_job, plan.tess_config);
+  check_phases_have_grains(t, plan.tess_job, plan.tess_config);
+  seconds["tessellate"] = since(clock);
+  memory.end("tessellate");
+  stage.end();
+  for (const std::string& w : tessellation_warnings(t)) warnings.add(w);
+  return t;
+}
+
+// config.ini's note of what the defaults meant: the out-of-plane condition.
+std::string plane_state_note(const FoamOptions& foam) {
+  return std::string("2D: solved in ") + (foam.plane_stress ? "plane stress (load.plane_stress = true)"
+                                                            : "plane strain (load.plane_stress = false, the default)");
+}
+
 // report.json of a run before the solve: what was made and how long each stage took.
 Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, const GrainMesh& m, const MeshQuality& q,
                 const ExportMesh& e, const std::vector<std::string>& case_dirs, const Json& seconds, const Json& memory,
@@ -212,17 +233,9 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   StageMemoryLog memory;
   Json seconds;
 
-  auto clock = Clock::now();
-  memory.begin();
-  stage.show("tessellating");
-  const Tessellation t = run_tessellate_job(tess_job, plan.tess_config);
-  check_phases_have_grains(t, tess_job, plan.tess_config);
-  seconds["tessellate"] = since(clock);
-  memory.end("tessellate");
-  stage.end();
-  for (const std::string& w : tessellation_warnings(t)) warnings.add(w);
+  const Tessellation t = tessellate_stage(plan, stage, memory, seconds, warnings);
 
-  clock = Clock::now();
+  auto clock = Clock::now();
   memory.begin();
   MeshJob mesh_job = read_mesh_job(plan.mesh_config, t);
   mesh_job.options.distmesh.deadline = tess_job.options.deadline;  // one guard for the whole run
@@ -262,9 +275,7 @@ void run_run_command(const Config& c, const std::filesystem::path& out, bool sol
   const std::vector<std::string> case_dirs = write_cases(dir, e, foam, plan.boundary, pm);
   seconds["export"] = since(clock);
   memory.end("export");
-  write_text_file(dir / "config.ini",
-                  config_ini(c, {std::string("2D: solved in ") + (foam.plane_stress ? "plane stress (load.plane_stress = true)"
-                                                                                    : "plane strain (load.plane_stress = false, the default)")}));
+  write_text_file(dir / "config.ini", config_ini(c, {plane_state_note(foam)}));
   Json report = run_report(c, plan, t, m, q, e, case_dirs, seconds, memory.json(), solve);
 
   const double solve_seconds =

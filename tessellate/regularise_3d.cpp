@@ -214,16 +214,7 @@ class Collapser {
     if (alive < 4) return false;
     for (const auto& [e, count] : edges)
       if (!edges.contains({e.second, e.first})) return false;
-    double v = 0.0;
-    const Vec3 o = t_.vertices[t_.faces[t_.regions[r].faces[0]].ring[0]];
-    for (int f : t_.regions[r].faces) {
-      if (dead_[f]) continue;
-      const Face3& face = t_.faces[f];
-      const double sign = face.back == r ? 1.0 : -1.0;
-      for (const auto& [a, b, c] : triangles(face.ring))
-        v += sign * dot(t_.vertices[a] - o, cross(t_.vertices[b] - o, t_.vertices[c] - o));
-    }
-    return v > 0.0;
+    return volume(r) > 0.0;
   }
 
   // A face's triangles as finish() will make them: a fan from its first vertex when
@@ -474,33 +465,7 @@ class Collapser {
         faces.push_back({.ring = {a, b, c}, .back = face.back, .front = face.front});
       }
     }
-    std::vector<int> region_id(t_.regions.size(), -1);
-    std::vector<Region3> regions;
-    for (std::size_t r = 0; r < t_.regions.size(); ++r) {
-      if (dead_region_[r]) continue;
-      region_id[r] = static_cast<int>(regions.size());
-      Region3 region = t_.regions[r];
-      region.faces.clear();
-      for (int f : t_.regions[r].faces) region.faces.insert(region.faces.end(), replaced[f].begin(), replaced[f].end());
-      regions.push_back(std::move(region));
-    }
-    for (Face3& f : faces) {
-      f.back = region_id[f.back];
-      if (f.front >= 0) f.front = region_id[f.front];
-    }
-    t_.regions = std::move(regions);
-    t_.faces = std::move(faces);
-    std::vector<int> id(t_.vertices.size(), -1);
-    std::vector<Vec3> kept;
-    for (Face3& f : t_.faces)
-      for (int& v : f.ring) {
-        if (id[v] < 0) {
-          id[v] = static_cast<int>(kept.size());
-          kept.push_back(t_.vertices[v]);
-        }
-        v = id[v];
-      }
-    t_.vertices = std::move(kept);
+    renumber(t_, std::move(faces), replaced, dead_region_);
   }
 
   Tessellation3& t_;

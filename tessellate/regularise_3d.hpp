@@ -24,4 +24,10 @@ struct Regularisation {
 };
 Regularisation collapse_short_edges(Tessellation3& t, double threshold);
 
+// The tessellation once its faces are `faces` (old face f became faces replaced[f], their
+// regions still the old numbers) and the regions `removed` are gone: regions and
+// vertices renumbered, the vertices no face uses dropped (regularise_3d_renumber.cpp).
+void renumber(Tessellation3& t, std::vector<Face3> faces, const std::vector<std::vector<int>>& replaced,
+              const std::vector<bool>& removed);
+
 }  // namespace grainmesh

@@ -308,6 +308,27 @@ void measure(Tessellation3& t) {
   }
 }
 
+// Lloyd's relaxation of `seeds` (o.lloyd_iterations steps, each seed to its cell's
+// centroid); the moments of the diagram it leaves.
+CellMoments relax(const Tessellation3Options& o, const std::vector<double>& weights, std::vector<Vec3>& seeds) {
+  const Vec3 box{o.width, o.height, o.depth};
+  CellMoments m = laguerre_moments(seeds, weights, box, o.periodic);
+  for (int it = 0; it < o.lloyd_iterations; ++it) {
+    if (o.deadline.passed()) o.deadline.check("after " + std::to_string(it) + " Lloyd iterations");
+    for (int i = 0; i < o.grains; ++i) {
+      // A move below a trillionth of the box is rounding, not relaxation: a lattice of
+      // seeds (cells that meet eight at a vertex) stays exactly one, where rounding would
+      // leave vertices a rounding apart that no double can tell apart.
+      if (m.volume[i] <= 0.0 || norm(m.centroid[i] - seeds[i]) < 1e-12 * norm(box)) continue;
+      seeds[i] = m.centroid[i];
+      if (o.periodic)
+        for (int a = 0; a < 3; ++a) seeds[i][a] = reduce(seeds[i][a], box[a]);
+    }
+    m = laguerre_moments(seeds, weights, box, o.periodic);
+  }
+  return m;
+}
+
 }  // namespace
 
 double face_area(const Tessellation3& t, const Face3& f) { return 0.5 * norm(ring_normal(t.vertices, f.ring)); }
@@ -333,20 +354,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
   std::vector<Vec3> seeds;
   std::vector<double> weights;
   draw_seeds(o, rng, seeds, weights);
-  CellMoments m = laguerre_moments(seeds, weights, box, o.periodic);
-  for (int it = 0; it < o.lloyd_iterations; ++it) {
-    if (o.deadline.passed()) o.deadline.check("after " + std::to_string(it) + " Lloyd iterations");
-    for (int i = 0; i < o.grains; ++i) {
-      // A move below a trillionth of the box is rounding, not relaxation: a lattice of
-      // seeds (cells that meet eight at a vertex) stays exactly one, where rounding would
-      // leave vertices a rounding apart that no double can tell apart.
-      if (m.volume[i] <= 0.0 || norm(m.centroid[i] - seeds[i]) < 1e-12 * norm(box)) continue;
-      seeds[i] = m.centroid[i];
-      if (o.periodic)
-        for (int a = 0; a < 3; ++a) seeds[i][a] = reduce(seeds[i][a], box[a]);
-    }
-    m = laguerre_moments(seeds, weights, box, o.periodic);
-  }
+  const CellMoments m = relax(o, weights, seeds);
 
   Tessellation3 t;
   t.width = o.width;
