@@ -80,9 +80,9 @@ PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
 // manifold at a point).
 FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
 
-// A 3D polyMesh face's area vector (normal by its points' turning, right hand) and
-// centre as OpenFOAM computes them: a triangle's own; a polygon's from the triangles
-// about its points' mean, centres weighted by area (mesh units).
+// A polyMesh face's area vector (normal by its points' turning, right hand) and centre
+// as OpenFOAM computes them: a triangle's own; a polygon's from the triangles about its
+// points' mean, centres weighted by area (mesh units; a 2D mesh's faces as extruded).
 struct FoamFace {
   Vec3 area, centre;
 };

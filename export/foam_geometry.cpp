@@ -9,7 +9,14 @@ namespace grainmesh {
 
 FoamFace foam_face(const PolyMesh& pm, int f) {
   const int first = pm.face_start[f], n = pm.face_start[f + 1] - first;
-  auto point = [&](int k) { return pm.points3d[pm.face_points[first + k % n]]; };
+  // A 2D mesh's points are extruded: its points at z = 0, then at z = thickness.
+  const int n2 = static_cast<int>(pm.points2d.size());
+  auto point = [&](int k) {
+    const int p = pm.face_points[first + k % n];
+    if (pm.points2d.empty()) return pm.points3d[p];
+    const Vec2 q = pm.points2d[p % n2];
+    return Vec3{q.x, q.y, p < n2 ? 0.0 : pm.thickness};
+  };
   if (n == 3) return {0.5 * cross(point(1) - point(0), point(2) - point(0)), (point(0) + point(1) + point(2)) / 3.0};
   Vec3 mean;
   for (int k = 0; k < n; ++k) mean += point(k);

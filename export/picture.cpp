@@ -34,18 +34,23 @@ Rgb region_colour(int region) {
   return palette[static_cast<std::size_t>(((region % n) + n) % n)];
 }
 
-// Viridis, by five stops: t in [0, 1].
+// A colour map of five stops, linear between them: t in [0, 1] (`fallback` for NaN).
+Rgb ramp(const std::array<Rgb, 5>& stops, double t, double fallback) {
+  t = std::clamp(std::isfinite(t) ? t : fallback, 0.0, 1.0) * (stops.size() - 1);
+  const auto k = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+  const double u = t - static_cast<double>(k);
+  const Rgb a = stops[k], b = stops[k + 1];
+  return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
+}
+
+// Viridis, by five stops.
 Rgb viridis(double t) {
   static constexpr std::array<Rgb, 5> stops{{{0.267, 0.005, 0.329},
                                              {0.230, 0.322, 0.546},
                                              {0.128, 0.567, 0.551},
                                              {0.369, 0.789, 0.383},
                                              {0.993, 0.906, 0.144}}};
-  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * (stops.size() - 1);
-  const auto k = std::min(static_cast<std::size_t>(t), stops.size() - 2);
-  const double u = t - static_cast<double>(k);
-  const Rgb a = stops[k], b = stops[k + 1];
-  return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
+  return ramp(stops, t, 0.0);
 }
 
 // A diverging map (after Moreland's cool-warm): blue at 0, near white at 0.5, red at 1.
@@ -55,11 +60,7 @@ Rgb cool_warm(double t) {
                                              {0.865, 0.865, 0.865},
                                              {0.958, 0.604, 0.482},
                                              {0.706, 0.016, 0.150}}};
-  t = std::clamp(std::isfinite(t) ? t : 0.5, 0.0, 1.0) * (stops.size() - 1);
-  const auto k = std::min(static_cast<std::size_t>(t), stops.size() - 2);
-  const double u = t - static_cast<double>(k);
-  const Rgb a = stops[k], b = stops[k + 1];
-  return {a.r + u * (b.r - a.r), a.g + u * (b.g - a.g), a.b + u * (b.b - a.b)};
+  return ramp(stops, t, 0.5);
 }
 
 // A field's colour at t in [0, 1] of its range.

@@ -8,34 +8,6 @@ namespace grainmesh {
 
 namespace {
 
-// Point p of the polyMesh (mesh units): a 3D mesh's, or an extruded 2D mesh's (its points
-// at z = 0, then at z = thickness).
-Vec3 point_of(const PolyMesh& pm, int p) {
-  if (!pm.points3d.empty()) return pm.points3d[p];
-  const int n = static_cast<int>(pm.points2d.size());
-  const Vec2 q = pm.points2d[p % n];
-  return {q.x, q.y, p < n ? 0.0 : pm.thickness};
-}
-
-// Face f's area vector and centre as OpenFOAM computes them (foam_face's formulas).
-FoamFace face_of(const PolyMesh& pm, int f) {
-  const int first = pm.face_start[f], n = pm.face_start[f + 1] - first;
-  auto point = [&](int k) { return point_of(pm, pm.face_points[first + k % n]); };
-  if (n == 3) return {0.5 * cross(point(1) - point(0), point(2) - point(0)), (point(0) + point(1) + point(2)) / 3.0};
-  Vec3 mean;
-  for (int k = 0; k < n; ++k) mean += point(k);
-  mean = mean / n;
-  Vec3 S, sum_c;
-  double sum_a = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const Vec3 t = cross(point(k + 1) - point(k), mean - point(k));
-    S += 0.5 * t;
-    sum_c += norm(t) * (point(k) + point(k + 1) + mean);
-    sum_a += norm(t);
-  }
-  return {S, sum_c / (3.0 * sum_a)};
-}
-
 // Cell c's centre as OpenFOAM computes it: pyramids from the mean of its face centres.
 Vec3 cell_centre(const PolyMesh& pm, int c) {
   std::vector<std::pair<FoamFace, double>> faces;  // each face, and +1 owned / -1 neighboured
@@ -43,7 +15,7 @@ Vec3 cell_centre(const PolyMesh& pm, int c) {
   for (int f = 0; f < pm.faces(); ++f) {
     const bool owned = pm.owner[f] == c, neighboured = f < pm.internal_faces() && pm.neighbour[f] == c;
     if (!owned && !neighboured) continue;
-    faces.push_back({face_of(pm, f), owned ? 1.0 : -1.0});
+    faces.push_back({foam_face(pm, f), owned ? 1.0 : -1.0});
     estimate += faces.back().first.centre;
   }
   estimate = estimate / static_cast<double>(faces.size());
@@ -64,7 +36,7 @@ Vec3 cell_centre(const PolyMesh& pm, int c) {
 // square on it would take a wrong force even on one material (measured: 6e-5 of C11 on
 // tetrahedra, a 0.4 % residual stress beside it in 2D).
 Vec3 pinned_point(const PolyMesh& pm, int f) {
-  const FoamFace face = face_of(pm, f);
+  const FoamFace face = foam_face(pm, f);
   const Vec3 n = face.area / norm(face.area), centre = cell_centre(pm, pm.owner[f]);
   return centre + dot(face.centre - centre, n) * n;
 }

@@ -55,6 +55,11 @@ fs::path stand_in_tetgen(const fs::path& dir, const std::string& on_r0) {
   return bin;
 }
 
+// grainmesh run on small_cell with the stand-in tetgen of DIR/bin first on PATH and
+// DIR/tmp as the temporary directory; limits.seconds = 60 the run's bound, should the
+// budget not work.
+test::CommandResult run_with_stand_in(const fs::path& dir, const fs::path& bin);
+
 // A small 3D cell to mesh; no warnings of its own.
 fs::path small_cell(const fs::path& dir) {
   const fs::path ini = dir / "cell.ini";
@@ -62,6 +67,15 @@ fs::path small_cell(const fs::path& dir) {
                         "[tessellation]\ngrains = 8\nseed = 3\nlloyd_iterations = 3\n"
                         "[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.2\n[mesh]\ntets_per_grain = 100\n";
   return ini;
+}
+
+test::CommandResult run_with_stand_in(const fs::path& dir, const fs::path& bin) {
+  fs::create_directories(dir / "tmp");
+  return test::run_grainmesh({"run", small_cell(dir).string(), "-o", (dir / "out").string(), "--quiet", "--set",
+                              "limits.seconds=60"},
+                             {},
+                             "TMPDIR=" + test::shell_quote((dir / "tmp").string()) + " PATH=" +
+                                 test::shell_quote(bin.string()) + ":$PATH");
 }
 
 }  // namespace
@@ -98,13 +112,8 @@ TEST_CASE("TetGen: a surface that hangs its default order is filled by the next,
 TEST_CASE("TetGen hanging on one region: the run completes past the hung try", "[mesh3d][tetgen][cli]") {
   test::ScratchDir dir("tetgen-stand-in");
   const fs::path bin = stand_in_tetgen(dir.path(), "case \"$1\" in *b/*) ;; *) exec sleep 1000 ;; esac");
-  fs::create_directories(dir / "tmp");
   const auto t0 = Clock::now();
-  const auto r = test::run_grainmesh({"run", small_cell(dir.path()).string(), "-o", (dir / "out").string(), "--quiet",
-                                      "--set", "limits.seconds=60"},  // the run's bound, should the budget not work
-                                     {},
-                                     "TMPDIR=" + test::shell_quote((dir / "tmp").string()) + " PATH=" +
-                                         test::shell_quote(bin.string()) + ":$PATH");
+  const auto r = run_with_stand_in(dir.path(), bin);
   INFO(r.err);
   CHECK(r.exit_code == 0);
   CHECK(seconds_since(t0) < 30.0);
@@ -116,13 +125,8 @@ TEST_CASE("TetGen hanging on every try of a region: the run fails in one line na
           "[mesh3d][tetgen][cli]") {
   test::ScratchDir dir("tetgen-always-hangs");
   const fs::path bin = stand_in_tetgen(dir.path(), "exec sleep 1000");
-  fs::create_directories(dir / "tmp");
   const auto t0 = Clock::now();
-  const auto r = test::run_grainmesh({"run", small_cell(dir.path()).string(), "-o", (dir / "out").string(), "--quiet",
-                                      "--set", "limits.seconds=60"},  // the run's bound, should the budget not work
-                                     {},
-                                     "TMPDIR=" + test::shell_quote((dir / "tmp").string()) + " PATH=" +
-                                         test::shell_quote(bin.string()) + ":$PATH");
+  const auto r = run_with_stand_in(dir.path(), bin);
   const double took = seconds_since(t0);
   INFO(r.err);
   CHECK(r.exit_code == 3);

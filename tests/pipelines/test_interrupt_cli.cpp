@@ -57,32 +57,23 @@ pid_t spawn_grainmesh(const std::vector<std::string>& args, const fs::path& err 
 }
 
 // Sends `pid` `signal` after `delay` seconds (nothing when it has ended by then) and waits
-// for it; its wait status.
-int signal_after(pid_t pid, int signal, double delay) {
+// for it; its wait status, and whether the signal was sent.
+std::pair<int, bool> signalled_after(pid_t pid, int signal, double delay) {
   const auto t0 = Clock::now();
   int status = 0;
   while (seconds_since(t0) < delay) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    if (waitpid(pid, &status, WNOHANG) == pid) return {status, false};
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ::kill(pid, signal);
   waitpid(pid, &status, 0);
-  return status;
+  return {status, true};
 }
+int signal_after(pid_t pid, int signal, double delay) { return signalled_after(pid, signal, delay).first; }
 
 // Kills `pid` with SIGKILL after `delay` seconds (at once when it has already ended);
 // true when it was still running.
-bool kill_after(pid_t pid, double delay) {
-  const auto t0 = Clock::now();
-  int status = 0;
-  while (seconds_since(t0) < delay) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ::kill(pid, SIGKILL);
-  waitpid(pid, &status, 0);
-  return true;
-}
+bool kill_after(pid_t pid, double delay) { return signalled_after(pid, SIGKILL, delay).second; }
 
 // Processes whose command line mentions `dir`, or which run in it or below (children that
 // outlived their parent: TetGen and the solver run in directories of the output's staging
