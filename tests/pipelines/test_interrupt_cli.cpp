@@ -260,7 +260,12 @@ TEST_CASE("grainmesh run interrupted (Ctrl-C, SIGTERM) at random moments says so
   fs::create_directories(dir / ".out.partial-999999999/case_xx");
   std::mt19937_64 rng(11);
   int interrupted = 0;
-  for (int trial = 0; trial < 5; ++trial) {
+#ifdef GRAINMESH_SANITIZED
+  const int trials = 3;  // the point there is memory, not coverage of moments
+#else
+  const int trials = 5;
+#endif
+  for (int trial = 0; trial < trials; ++trial) {
     const int signal = trial % 2 == 0 ? SIGINT : SIGTERM;
     const double at = std::uniform_real_distribution<double>(0.05, 0.95)(rng) * full;
     INFO("trial " << trial << ": signal " << signal << " after " << at << " s of " << full);
@@ -286,7 +291,7 @@ TEST_CASE("grainmesh run interrupted (Ctrl-C, SIGTERM) at random moments says so
     }
     fs::remove_all(out);
   }
-  CHECK(interrupted >= 3);
+  CHECK(interrupted >= trials - 2);
   // The next run succeeds.
   CHECK(signal_after(spawn_grainmesh(args, dir / "err", env), SIGKILL, 600.0) == 0);
   CHECK(fs::exists(out / "report.json"));

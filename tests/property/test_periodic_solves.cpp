@@ -32,7 +32,11 @@ const std::vector<int> kDensities2{50}, kDensities3{60};
 const std::vector<int> kSeeds2{1, 2, 3}, kSeeds3{1, 2};
 const std::vector<int> kDensities2{30, 60}, kDensities3{60, 150};
 #endif
+#ifdef GRAINMESH_SANITIZED
+const std::vector<double> kContrasts{1.0, 20.0};
+#else
 const std::vector<double> kContrasts{1.0, 1.01, 3.0, 20.0};
+#endif
 
 struct Cell {
   int dimensions;
