@@ -260,6 +260,9 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   }
   CHECK(value("bulk_modulus_mean") == Approx((K[0] + K[1] + K[2]) / 3).epsilon(1e-9));
   CHECK(value("runs_with_warnings") == warned);
+  // The runs' warnings were said by the sweep itself, not left in their logs alone.
+  REQUIRE(warned > 0);
+  CHECK(r.err.find("grainmesh: warning: sweep: grains=20-r0") != std::string::npos);
   CHECK(values[static_cast<std::size_t>(std::find(names.begin(), names.end(), "plane_state") - names.begin())] ==
         "plane_strain");
   CHECK(fs::exists(dir / "out/summary.png"));

@@ -129,8 +129,13 @@ echo "cancelled with $done_before of 6 runs complete; resubmitted: 6 complete, n
 mkdir "$work/only-script"
 cp "$installed/grainmesh-slurm-sweep" "$work/only-script/"
 status=0
-PATH="$work/only-script:/usr/bin:/bin" sbatch --wait --quiet --array=1-1 --output="$work/lost-%a.log" \
-  "$work/only-script/grainmesh-slurm-sweep" sweep.ini "$work/lost" 1 || status=$?
+PATH="$work/only-script:/usr/bin:/bin" sbatch --wait --parsable --array=1-1 --output="$work/lost-%a.log" \
+  "$work/only-script/grainmesh-slurm-sweep" sweep.ini "$work/lost" 1 > "$work/lost.id" || status=$?
 [[ $status -ne 0 ]] || fail "an array task without grainmesh left sbatch --wait with exit 0"
 grep -q "grainmesh is not on PATH" "$work/lost-1.log" || fail "the task's log does not say why: $(cat "$work/lost-1.log")"
-echo "a task without grainmesh: sbatch --wait exit $status, its log says grainmesh is not on PATH"
+# The job's own record (this cluster keeps no accounting database for sacct): FAILED, 127.
+lost=$(head -1 "$work/lost.id" | cut -d';' -f1)
+record=$(scontrol show job "$lost" 2>/dev/null || true)
+grep -q "JobState=FAILED" <<< "$record" || fail "the job of a task without grainmesh is not FAILED: $record"
+grep -q "ExitCode=127:0" <<< "$record" || fail "the job of a task without grainmesh did not exit 127: $record"
+echo "a task without grainmesh: sbatch --wait exit $status, the job FAILED with 127, its log says grainmesh is not on PATH"
