@@ -1,45 +1,43 @@
-// Bounds on effective elastic properties from the phases and their area fractions:
-// Voigt (uniform strain) and Reuss (uniform stress) for every microstructure, and the
-// two-dimensional Hashin-Shtrikman bounds on the bulk and shear moduli of two isotropic
-// phases (for a statistically isotropic microstructure).
+// Bounds on effective elastic properties from the phases and their area (2D) or volume
+// (3D) fractions: Voigt (uniform strain) and Reuss (uniform stress) tensors for every
+// microstructure, and the Hashin-Shtrikman bounds on the bulk and shear moduli of two
+// isotropic phases (for a statistically isotropic microstructure), in the dimension of the
+// stiffness: N = 3 in 2D (plane strain or plane stress), N = 6 in 3D. Defined for N = 3, 6.
 #pragma once
 
-#include <array>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
-#include "export/foam.hpp"
+#include "analysis/voigt.hpp"
+#include "export/foam_material.hpp"
 
 namespace grainmesh {
 
-// An in-plane stiffness in Voigt notation: rows and columns xx, yy, xy, the shear as
-// engineering strain (sigma_xy = C66 gamma_xy), in Pa; plane strain or plane stress.
-using Stiffness = std::array<std::array<double, 3>, 3>;
+// The stiffness of an isotropic phase: lambda + 2 mu on the normal diagonal, lambda off
+// it, mu for each shear; in 2D lambda is plane strain's or plane stress's (lame), in 3D
+// plane_stress is not used.
+template <std::size_t N>
+Stiffness<N> isotropic_stiffness(const FoamPhase& phase, bool plane_stress = false);
 
-// The stiffness of an isotropic phase.
-Stiffness isotropic_stiffness(const FoamPhase& phase, bool plane_stress);
-
-// The inverse of a stiffness (a compliance, and back). Throws GeometryError when singular.
-Stiffness inverse(const Stiffness& c);
-
-// Whether upper - lower is positive semidefinite (its symmetric part), to `rounding`
-// relative to the largest entry.
-bool semidefinite_order(const Stiffness& lower, const Stiffness& upper, double rounding = 1e-6);
-
+template <std::size_t N>
 struct TensorBounds {
-  Stiffness voigt{}, reuss{};
+  Stiffness<N> voigt{}, reuss{};
   std::optional<double> bulk_lower, bulk_upper, shear_lower, shear_upper;  // Hashin-Shtrikman, two phases
 };
-TensorBounds tensor_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
-                           bool plane_stress);
+// The bounds of `phases` at `fractions` (one per phase, summing to 1). Hashin-Shtrikman
+// when there are two phases, the one stiffer in shear stiffer in bulk too (well-ordered);
+// in d dimensions, with the reference phase r and the other o:
+//   K = K_r + f_o / (1 / (K_o - K_r) + f_r / (K_r + 2 (d - 1) mu_r / d)),
+//   mu = mu_r + f_o / (1 / (mu_o - mu_r) + f_r / (mu_r + H_r)),
+//   H_r = mu_r (d K_r / 2 + (d + 1)(d - 2) mu_r / d) / (K_r + 2 mu_r),
+// the upper bound with the stiffer phase as reference, the lower with the softer (K the
+// 2D bulk modulus lambda + mu in 2D, lambda + 2 mu / 3 in 3D).
+template <std::size_t N>
+TensorBounds<N> tensor_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
+                              bool plane_stress = false);
 
-// The in-plane bulk and shear moduli of a stiffness, isotropic in the mean: K the mean
-// stress over the area strain, (C11 + C22 + C12 + C21) / 4; mu the mean of the shear
-// stiffness in the axes and at 45 degrees, C66 / 2 + (C11 + C22 - C12 - C21) / 8.
-double bulk_modulus(const Stiffness& c);
-double shear_modulus(const Stiffness& c);
-
-// Bounds on sigma_xx / eps_xx for the thesis' load (the `mixed` boundary): eps_xx
+// Bounds on sigma_xx / eps_xx for the thesis' 2D load (the `mixed` boundary): eps_xx
 // imposed, the mean eps_yy zero (symmetry top and bottom), plane strain (or stress).
 struct ElasticBounds {
   double voigt = 0.0;     // uniform strain: <M>

@@ -7,7 +7,7 @@
 #include "common/format.hpp"
 #include "common/process.hpp"
 #include "common/text_file.hpp"
-#include "export/foam.hpp"
+#include "export/foam_solver.hpp"
 
 namespace grainmesh {
 

@@ -6,7 +6,9 @@
 
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
-#include "export/foam.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
+#include "export/foam_solver.hpp"
 
 namespace grainmesh {
 

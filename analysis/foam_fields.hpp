@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "analysis/stress_measures.hpp"
-#include "export/foam.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
 
 namespace grainmesh {
 
@@ -34,7 +35,7 @@ FieldValues read_patch_field(const std::filesystem::path& file, const std::strin
 // The cell fields of a solved case, read once (CASE/TIME/D and CASE/TIME/sigmaD,
 // kStressField) and carried to everything that uses them: the area average, the face
 // forces, the pictures, results.vtu. The stress is the whole stress: under a temperature
-// change sigmaD leaves out the thermal part, threeK alpha delta_T (export/foam.hpp), taken
+// change sigmaD leaves out the thermal part, threeK alpha delta_T (export/foam_material.hpp), taken
 // off its diagonal here.
 struct CaseFields {
   FieldValues displacement;  // vector

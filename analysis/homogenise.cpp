@@ -140,8 +140,8 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
   return h;
 }
 
-EngineeringConstants engineering_constants(const Stiffness& c) {
-  const Stiffness s = inverse(c);
+EngineeringConstants engineering_constants(const Stiffness<3>& c) {
+  const Stiffness<3> s = inverse(c);
   return {.E_x = 1 / s[0][0],
           .E_y = 1 / s[1][1],
           .nu_xy = -s[1][0] / s[0][0],

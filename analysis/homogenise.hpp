@@ -12,10 +12,12 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
-#include "analysis/stress_measures.hpp"
 #include "analysis/solve.hpp"
+#include "analysis/stress_measures.hpp"
 #include "common/deadline.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh.hpp"
 
 namespace grainmesh {
 
@@ -79,8 +81,8 @@ struct LoadCaseResult {
 
 struct PeriodicHomogenised {
   std::vector<LoadCaseResult> cases;     // as periodic_load_cases: xx, yy, xy (, thermal)
-  Stiffness stiffness{};                 // column j from load case j (the shear per engineering strain)
-  Stiffness volume_average_stiffness{};  // the same from the area averages
+  Stiffness<3> stiffness{};                 // column j from load case j (the shear per engineering strain)
+  Stiffness<3> volume_average_stiffness{};  // the same from the area averages
 };
 
 // Solves the periodic load cases written by write_foam_case into `case_dirs` (in the
@@ -100,6 +102,6 @@ struct EngineeringConstants {
   double E_x, E_y, nu_xy, nu_yx, G_xy;
   double anisotropy_normal, anisotropy_shear;
 };
-EngineeringConstants engineering_constants(const Stiffness& c);
+EngineeringConstants engineering_constants(const Stiffness<3>& c);
 
 }  // namespace grainmesh

@@ -7,6 +7,7 @@
 #include "analysis/traction.hpp"
 #include "common/errors.hpp"
 #include "common/side_by_side.hpp"
+#include "export/foam_geometry.hpp"
 
 namespace grainmesh {
 
@@ -146,25 +147,8 @@ Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& 
   return r;
 }
 
-Stiffness6 symmetric_part(const Stiffness6& c) {
-  Stiffness6 s{};
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j) s[i][j] = 0.5 * (c[i][j] + c[j][i]);
-  return s;
-}
-
-double symmetry_error(const Stiffness6& c) {
-  double largest = 0.0, asymmetry = 0.0;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j) {
-      largest = std::max(largest, std::abs(c[i][j]));
-      asymmetry = std::max(asymmetry, std::abs(c[i][j] - c[j][i]));
-    }
-  return largest > 0.0 ? asymmetry / largest : 0.0;
-}
-
-EngineeringConstants3 engineering_constants_3d(const Stiffness6& c) {
-  const Stiffness6 s = inverse(c);
+EngineeringConstants3 engineering_constants_3d(const Stiffness<6>& c) {
+  const Stiffness<6> s = inverse(c);
   // The tensor's own Reuss averages, from its compliance.
   const double K_R = 1.0 / (s[0][0] + s[1][1] + s[2][2] + 2 * (s[0][1] + s[0][2] + s[1][2]));
   const double G_R =
@@ -178,7 +162,7 @@ EngineeringConstants3 engineering_constants_3d(const Stiffness6& c) {
           .nu_xy = -s[1][0] / s[0][0],
           .nu_xz = -s[2][0] / s[0][0],
           .nu_yz = -s[2][1] / s[1][1],
-          .universal_anisotropy = 5 * shear_modulus_3d(c) / G_R + bulk_modulus_3d(c) / K_R - 6};
+          .universal_anisotropy = 5 * shear_modulus(c) / G_R + bulk_modulus(c) / K_R - 6};
 }
 
 }  // namespace grainmesh

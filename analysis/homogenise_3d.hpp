@@ -10,11 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bounds_3d.hpp"
+#include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
 #include "analysis/solve.hpp"
 #include "common/deadline.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 
@@ -47,8 +49,8 @@ struct LoadCaseResult3 {
 
 struct PeriodicHomogenised3 {
   std::vector<LoadCaseResult3> cases;  // as periodic_load_cases_3d (the thermal case last)
-  Stiffness6 stiffness{};              // column j from load case j (per engineering strain), as solved
-  Stiffness6 volume_average_stiffness{};
+  Stiffness<6> stiffness{};              // column j from load case j (per engineering strain), as solved
+  Stiffness<6> volume_average_stiffness{};
 };
 
 // Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
@@ -74,11 +76,6 @@ Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& 
                       const FoamOptions& o, const Deadline& deadline = {},
                       const std::filesystem::path& case_shown_as = {});
 
-// The stiffness made symmetric, each Cij the mean of Cij and Cji (of the two load cases
-// that give it), and how far it was from symmetric: max |Cij - Cji| / max |Cij|.
-Stiffness6 symmetric_part(const Stiffness6& c);
-double symmetry_error(const Stiffness6& c);
-
 // Engineering constants of a 3D stiffness from its compliance S = C^-1: E_i = 1 / S_ii,
 // G_yz = 1 / S44, G_xz = 1 / S55, G_xy = 1 / S66, nu_ij = -S_ji / S_ii; and the universal
 // anisotropy index A^U = 5 G_V / G_R + K_V / K_R - 6 of the tensor's own Voigt (C) and
@@ -87,6 +84,6 @@ struct EngineeringConstants3 {
   double E_x, E_y, E_z, G_yz, G_xz, G_xy, nu_xy, nu_xz, nu_yz;
   double universal_anisotropy;
 };
-EngineeringConstants3 engineering_constants_3d(const Stiffness6& c);
+EngineeringConstants3 engineering_constants_3d(const Stiffness<6>& c);
 
 }  // namespace grainmesh

@@ -2,8 +2,8 @@
 
 #include "analysis/phase_statistics_3d.hpp"
 #include "analysis/stress_measures.hpp"
-#include "export/picture.hpp"
-#include "export/vtu.hpp"
+#include "view/picture.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 

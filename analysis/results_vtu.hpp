@@ -8,8 +8,8 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "export/foam.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 

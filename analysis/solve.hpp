@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "common/deadline.hpp"
-#include "export/foam.hpp"
+#include "export/foam_load.hpp"
+#include "export/foam_options.hpp"
+#include "export/foam_solver.hpp"
 
 namespace grainmesh {
 

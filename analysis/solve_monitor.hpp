@@ -11,9 +11,9 @@
 
 #include <array>
 #include <deque>
-#include <vector>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace grainmesh {
 
@@ -27,7 +27,7 @@ class SolveMonitor {
     // Diverging: a displacement range above this (metres), a thousand times what the load
     // can produce; 0 = not checked.
     double diverged_range = 0.0;
-    // The case's own stop (export/foam.hpp, CaseStop): OpenFOAM's residual of the watched
+    // The case's own stop (export/foam_solver.hpp, CaseStop): OpenFOAM's residual of the watched
     // components below case_tolerance. After the measure converged, the case gets
     // case_patience corrections to halve its own; else it is stuck (a component near zero).
     std::array<bool, 3> case_watches{true, true, true};

@@ -14,7 +14,8 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
 
 namespace grainmesh {
 

@@ -28,7 +28,7 @@ ThermalResidual thermal_residual(const PeriodicHomogenised& h) {
   r.delta_T = thermal.load.delta_T;
   // The strain that takes the thermal case's mean stress off: C e = -sigma_T, e in Voigt
   // (engineering shear).
-  const Stiffness S = inverse(h.stiffness);
+  const Stiffness<3> S = inverse(h.stiffness);
   const std::array<double, 3> sigma{thermal.stress.xx, thermal.stress.yy, thermal.stress.xy};
   std::array<double, 3> e{};
   for (int i = 0; i < 3; ++i)
@@ -58,7 +58,7 @@ ThermalResidual thermal_residual(const PeriodicHomogenised& h) {
   return r;
 }
 
-std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness& c,
+std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness<3>& c,
                                                      bool plane_stress) {
   if (phases.size() != 2) return std::nullopt;
   std::array<double, 2> k{}, b{};
@@ -71,7 +71,7 @@ std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase
   if (std::abs(dk) <= 1e-12 * (1 / (2 * k[0]) + 1 / (2 * k[1]))) return std::nullopt;
   const double P = -(b[0] - b[1]) / dk;
   const double uniform = b[0] + P / (2 * k[0]);
-  const Stiffness S = inverse(c);
+  const Stiffness<3> S = inverse(c);
   std::array<double, 3> a{};
   for (int i = 0; i < 3; ++i) a[i] = (i < 2 ? uniform : 0.0) - P * (S[i][0] + S[i][1]);
   a[2] *= 0.5;  // engineering to tensor shear

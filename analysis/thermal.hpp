@@ -18,7 +18,7 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
 #include "analysis/stress_measures.hpp"
-#include "export/foam.hpp"
+#include "export/foam_material.hpp"
 
 namespace grainmesh {
 
@@ -44,7 +44,7 @@ ThermalResidual thermal_residual(const PeriodicHomogenised& h);
 //   P = -(b1 - b2) / (1 / (2 k1) - 1 / (2 k2)),
 //   a = (b1 + P / (2 k1)) (1, 1, 0) - P S (1, 1, 0)   (Voigt: a11, a22, 2 a12),
 // here with a12 the tensor component. None unless two phases with different k.
-std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness& c,
+std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness<3>& c,
                                                      bool plane_stress);
 
 }  // namespace grainmesh

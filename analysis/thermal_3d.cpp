@@ -6,14 +6,14 @@
 
 namespace grainmesh {
 
-ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffness6& stiffness) {
+ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffness<6>& stiffness) {
   if (h.cases.size() != 7 || h.cases[6].load.delta_T == 0.0)
     throw GeometryError("thermal_residual_3d: the load cases hold no thermal case");
   const LoadCaseResult3& thermal = h.cases[6];
   ThermalResidual3 r;
   r.delta_T = thermal.load.delta_T;
   // The (engineering) strain that takes the thermal case's mean stress off: C e = -sigma_T.
-  const Stiffness6 S = inverse(stiffness);
+  const Stiffness<6> S = inverse(stiffness);
   Voigt6 e{};
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j) e[i] -= S[i][j] * thermal.stress[j];
@@ -35,7 +35,7 @@ ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffn
   return r;
 }
 
-std::optional<Voigt6> levin_expansion_3d(const std::vector<FoamPhase>& phases, const Stiffness6& c) {
+std::optional<Voigt6> levin_expansion_3d(const std::vector<FoamPhase>& phases, const Stiffness<6>& c) {
   if (phases.size() != 2) return std::nullopt;
   std::array<double, 2> compliance{};  // 1 / (3 K)
   for (int i = 0; i < 2; ++i) {
@@ -46,7 +46,7 @@ std::optional<Voigt6> levin_expansion_3d(const std::vector<FoamPhase>& phases, c
   if (std::abs(dk) <= 1e-12 * (compliance[0] + compliance[1])) return std::nullopt;
   const double s = (phases[1].alpha - phases[0].alpha) / dk;
   const double uniform = phases[0].alpha + s * compliance[0];
-  const Stiffness6 S = inverse(c);
+  const Stiffness<6> S = inverse(c);
   Voigt6 a{};
   for (int i = 0; i < 6; ++i) a[i] = (i < 3 ? uniform : 0.0) - s * (S[i][0] + S[i][1] + S[i][2]) * (i < 3 ? 1.0 : 0.5);
   return a;

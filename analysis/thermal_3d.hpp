@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/bounds_3d.hpp"
+#include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise_3d.hpp"
 
@@ -30,7 +30,7 @@ struct ThermalResidual3 {
 // From solved periodic cases with a thermal case (periodic_load_cases_3d with delta_T), and
 // the stiffness to free it with (their symmetric part). Throws GeometryError when there
 // is no thermal case.
-ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffness6& stiffness);
+ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffness<6>& stiffness);
 
 // Levin's exact relation for two isotropic phases in any microstructure: a uniform
 // pressure that strains both phases alike, s / (3 K_i) + alpha_i equal for both (per
@@ -39,6 +39,6 @@ ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffn
 //   s = (alpha_2 - alpha_1) / (1 / (3 K_1) - 1 / (3 K_2)),
 //   alpha = (alpha_1 + s / (3 K_1)) I - s C^-1 I   (tensor components).
 // None unless two phases with different K.
-std::optional<Voigt6> levin_expansion_3d(const std::vector<FoamPhase>& phases, const Stiffness6& c);
+std::optional<Voigt6> levin_expansion_3d(const std::vector<FoamPhase>& phases, const Stiffness<6>& c);
 
 }  // namespace grainmesh

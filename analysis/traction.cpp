@@ -4,6 +4,8 @@
 #include <limits>
 
 #include "common/errors.hpp"
+#include "export/foam_geometry.hpp"
+#include "export/foam_solver.hpp"
 #include "export/pin_translation.hpp"
 
 namespace grainmesh {

@@ -21,8 +21,11 @@
 #include "analysis/stress_measures.hpp"
 #include "common/geometry.hpp"
 #include "common/vec3.hpp"
-#include "export/foam.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_load.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "bench/peers.hpp"
-#include "export/vtu.hpp"
 #include "pipelines/output_dir.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

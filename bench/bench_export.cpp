@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "bench/child.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
 
 using namespace grainmesh;
 

@@ -19,7 +19,8 @@
 
 #include "bench/child.hpp"
 #include "bench/peers.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
 #include "grains/conformity.hpp"
 #include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"

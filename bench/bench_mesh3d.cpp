@@ -9,16 +9,17 @@
 // Prints a table and writes bench/results.json ("mesh3d").
 #include <array>
 #include <chrono>
-#include <fstream>
-#include <map>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "bench/child.hpp"
 #include "bench/peers.hpp"
+#include "grains3d/conformity_3d.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "grains3d/surface_mesh.hpp"
 #include "tessellate/tessellation_3d.hpp"

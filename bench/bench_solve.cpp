@@ -10,11 +10,15 @@
 #include <string>
 #include <vector>
 
+#include "analysis/homogenise.hpp"
 #include "bench/child.hpp"
 #include "common/errors.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh.hpp"
 #include "pipelines/config.hpp"
-#include "analysis/homogenise.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"

@@ -18,7 +18,7 @@ PeriodicPairs pair_by_position(const std::vector<Vec2>& points, const Box& cell)
     std::size_t on_high = 0;
     for (int v = 0; v < static_cast<int>(points.size()); ++v)
       if (across(points[v]) == high) image[along(points[v])] = v, ++on_high;
-    auto& out = axis == 0 ? pairs.x : pairs.y;
+    auto& out = axis == 0 ? pairs.axis[0] : pairs.axis[1];
     for (int v = 0; v < static_cast<int>(points.size()); ++v) {
       if (across(points[v]) != low) continue;
       const auto it = image.find(along(points[v]));

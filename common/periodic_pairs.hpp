@@ -1,10 +1,12 @@
 // The points of a periodic cell's sides paired with their images across the cell, by
-// index: x holds (left, right) with right = left + (W, 0), y holds (bottom, top) with
-// top = bottom + (0, H). The cut makes them for the tessellation's vertices; the mesh
-// stage extends them to the edge seeds it copies across; the export pairs the cyclic
-// faces with them.
+// index, one list per axis, 2D and 3D alike: axis[0] holds (left, right) with right =
+// left + the cell's width along x, axis[1] (bottom, top) along y, axis[2] (back, front)
+// along z (empty in 2D); every other coordinate bit for bit the same. The cut makes them
+// for the tessellation's vertices; the mesh stage extends them to the points it copies
+// across; the export pairs the cyclic faces with them.
 #pragma once
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -13,7 +15,7 @@
 namespace grainmesh {
 
 struct PeriodicPairs {
-  std::vector<std::pair<int, int>> x, y;
+  std::array<std::vector<std::pair<int, int>>, 3> axis;
 
   friend bool operator==(const PeriodicPairs&, const PeriodicPairs&) = default;
 };

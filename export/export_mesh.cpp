@@ -1,10 +1,13 @@
 // The export's mesh: a grain mesh's triangles with the tessellation's cell and phases, or
 // their dual's polygonal cells (export.cells).
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
 
 #include <optional>
 
 #include "common/errors.hpp"
+#include "export/foam_load.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
 #include "mesh/dual_mesh.hpp"
 
 namespace grainmesh {
@@ -50,5 +53,12 @@ ExportMesh export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::C
 }
 
 FoamCell foam_cell(const ExportMesh& m) { return {m.phases, {m.cell.width(), m.cell.height(), 0.0}, m.periodic}; }
+
+ExportMesh3 grain_export_mesh_3d(const Tessellation3& t, const GrainMesh3& m) {
+  return {.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases), .box = t.size(),
+          .periodic = t.periodic, .pairs = m.pairs};
+}
+
+FoamCell foam_cell(const ExportMesh3& m) { return {m.phases, m.box, m.periodic}; }
 
 }  // namespace grainmesh

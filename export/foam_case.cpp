@@ -1,4 +1,4 @@
-#include "export/foam.hpp"
+#include "export/foam_case.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "export/foam_file.hpp"
+#include "export/foam_solver.hpp"
 #include "export/pin_translation.hpp"
 
 namespace grainmesh {
@@ -137,49 +138,6 @@ void write_schemes(const std::filesystem::path& dir, const FoamCell& cell, const
   write_fv_solution(dir, cell, o);
 }
 
-}  // namespace
-
-FoamOptions::LinearSolver linear_solver(const FoamCell& cell, const FoamOptions& o) {
-  if (o.linear_solver != FoamOptions::LinearSolver::automatic) return o.linear_solver;
-  return cell.dimensions() == 2 ? FoamOptions::LinearSolver::multigrid : FoamOptions::LinearSolver::conjugate_gradients;
-}
-
-const char* linear_solver_name(FoamOptions::LinearSolver solver) {
-  return solver == FoamOptions::LinearSolver::multigrid ? "GAMG" : "PCG";
-}
-
-void write_fv_solution(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& o) {
-  const bool thermal = o.delta_T != 0.0;
-  const bool multigrid = linear_solver(cell, o) == FoamOptions::LinearSolver::multigrid;
-  write_text(dir / "system/fvSolution",
-             dictionary_header("system", "fvSolution") +
-                 "solvers\n{\n    D\n    {\n" +
-                 (multigrid ? "        solver          GAMG;\n        tolerance       1e-12;\n"
-                              "        relTol          0.1;\n        smoother        GaussSeidel;\n    }\n"
-                            : std::string(o.linear_solver == FoamOptions::LinearSolver::automatic
-                                              ? "        // Not GAMG: in 3D it blew up on the rounding noise of a component whose\n"
-                                                "        // solution is zero.\n"
-                                              : "        // Not GAMG: it diverged on this case (grainmesh's solve fell back on PCG).\n") +
-                                  "        solver          PCG;\n        preconditioner  DIC;\n        tolerance       1e-12;\n"
-                                  "        relTol          0.1;\n    }\n") +
-                 (thermal ? "    // T is uniform: met at once, never iterated.\n    T\n    {\n        solver          PCG;\n"
-                            "        preconditioner  none;\n        tolerance       1e300;\n        relTol          0;\n    }\n"
-                          : "") +
-                 "}\n\n"
-                 "// One correction per (pseudo-)time step: system/controlDict says when to stop.\n" +
-                 (compact_normal_stress(cell, o)
-                      ? std::string()
-                      : "// The force through a face S . sigma_f (sigma interpolated linearly), the implicit\n"
-                        "// Laplacian only a predictor that cancels at convergence: the compact form diverges on\n"
-                        "// tetrahedra with least-squares gradients, and with Gauss ones is not exact for a\n"
-                        "// uniform strain (one material: C44 7 % low at 11k tetrahedra).\n") +
-                 "stressAnalysis\n{\n    compactNormalStress " + (compact_normal_stress(cell, o) ? "yes" : "no") +
-                 ";\n    nCorrectors     1;\n    D               " +
-                 number_text(kSolverTolerance) + ";\n}\n");
-}
-
-namespace {
-
 // Allrun: checkMesh and the solve (decomposed and put together again on several
 // processes), each step's output in its log, in the environment --solve gives them.
 void write_allrun(const std::filesystem::path& dir, const FoamCell& cell, const FoamOptions& o) {
@@ -208,14 +166,6 @@ void write_allrun(const std::filesystem::path& dir, const FoamCell& cell, const 
 }
 
 }  // namespace
-
-Vec3 cyclic_jump(const std::array<double, 6>& e, const std::string& name, const FoamCell& cell, double scale) {
-  const int axis = name == "left" || name == "right" ? 0 : name == "bottom" || name == "top" ? 1 : 2;
-  // Row `axis` of the symmetric strain: xx xy xz, xy yy yz, xz yz zz.
-  static constexpr int kRow[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};
-  const double L = cell.size[axis] * scale;
-  return {e[kRow[axis][0]] * L, e[kRow[axis][1]] * L, e[kRow[axis][2]] * L};
-}
 
 void check_case(const FoamCell& cell, const std::vector<int>& grain, const std::vector<int>& phase, std::size_t cells,
                 const FoamOptions& o) {
@@ -259,16 +209,22 @@ void write_case_files(const std::filesystem::path& dir, const FoamCell& cell, co
 }
 
 PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+  check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);
+  const PolyMesh pm = build_polymesh(m, o);
+  write_foam_case(dir, m, pm, o);
+  return pm;
+}
+
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
+                     const std::filesystem::path& polymesh_from) {
   const FoamCell cell = foam_cell(m);
   check_case(cell, m.grain, m.phase, m.mesh.cells(), o);
-  const PolyMesh pm = build_polymesh(m, o);
   std::vector<Vec3> centroid(m.mesh.cells());
   for (std::size_t t = 0; t < centroid.size(); ++t) {
     const Vec2 c = cell_centroid(m.mesh, t) - m.cell.lo;
     centroid[t] = {c.x, c.y, 0.0};
   }
-  write_case_files(dir, cell, m.phase, centroid, pm, o);
-  return pm;
+  write_case_files(dir, cell, m.phase, centroid, pm, o, polymesh_from);
 }
 
 }  // namespace grainmesh

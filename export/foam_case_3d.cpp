@@ -1,11 +1,15 @@
+#include "export/foam_case_3d.hpp"
+
 #include <string>
 
 #include "common/errors.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh_3d.hpp"
+#include "export/polymesh_dual_3d.hpp"
 
 namespace grainmesh {
-
-FoamCell foam_cell(const ExportMesh3& m) { return {m.phases, m.box, m.periodic}; }
 
 namespace {
 

@@ -14,7 +14,7 @@
 
 #include "common/errors.hpp"
 #include "common/geometry.hpp"
-#include "export/foam.hpp"
+#include "export/polymesh.hpp"
 
 namespace grainmesh {
 

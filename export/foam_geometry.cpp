@@ -1,9 +1,12 @@
 // OpenFOAM's geometry of a 3D polyMesh (primitiveMesh's face centres and areas, cell
 // centres and volumes), so that what grainmesh computes from a case's fields uses the
 // centres and volumes the solver used.
+#include "export/foam_geometry.hpp"
+
 #include <algorithm>
 
-#include "export/foam_3d.hpp"
+#include "export/polymesh.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 

@@ -1,4 +1,4 @@
-#include "export/foam.hpp"
+#include "export/foam_material.hpp"
 
 #include <algorithm>
 
@@ -37,10 +37,10 @@ double stiffness_contrast(const std::vector<FoamPhase>& phases, const FoamOption
   return stiff_max / stiff_min;
 }
 
-bool harmonic_stiffness(const FoamCell& cell, const FoamOptions& o) {
-  return o.interpolation == FoamOptions::Interpolation::harmonic ||
-         (o.interpolation == FoamOptions::Interpolation::automatic && cell.dimensions() == 2 &&
-          stiffness_contrast(cell.phases, o) <= 3.0);
+std::vector<FoamPhase> foam_phases(const std::vector<Phase>& phases) {
+  std::vector<FoamPhase> out;
+  for (const Phase& p : phases) out.push_back({p.name, p.youngs_modulus, p.poisson_ratio, p.alpha.value_or(0.0)});
+  return out;
 }
 
 }  // namespace grainmesh

@@ -2,7 +2,8 @@
 
 #include <cstdlib>
 
-#include "export/foam_3d.hpp"
+#include "export/foam_geometry.hpp"
+#include "export/polymesh.hpp"
 
 namespace grainmesh {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "export/foam.hpp"
+#include "export/polymesh.hpp"
 
 namespace grainmesh {
 

@@ -1,4 +1,4 @@
-#include "export/foam.hpp"
+#include "export/polymesh.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,12 +10,14 @@
 #include "common/cell_side.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "export/export_mesh.hpp"
 #include "export/foam_file.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
 #include "export/pin_translation.hpp"
 
 namespace grainmesh {
 namespace {
-
 
 // The side of the cell a boundary edge lies on; within 1e-9 of the cell's size, so that
 // meshes whose sides were projected (domain meshes) count too.
@@ -95,7 +97,7 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
   if (cyclic) {
     if (!sides[kNoSide].empty())
       throw GeometryError("export: cyclic patches need every boundary edge on a side of the cell");
-    for (CellSide s : {kLeft, kBottom}) pair_cyclic_faces(sides[s], sides[s ^ 1], s == kLeft ? m.pairs.x : m.pairs.y, s);
+    for (CellSide s : {kLeft, kBottom}) pair_cyclic_faces(sides[s], sides[s ^ 1], s == kLeft ? m.pairs.axis[0] : m.pairs.axis[1], s);
   }
   const bool top_free = o.uniaxial;
   for (CellSide s : {kLeft, kRight, kBottom, kTop, kNoSide}) {

@@ -1,11 +1,15 @@
+#include "export/polymesh_3d.hpp"
+
 #include <algorithm>
 #include <array>
 #include <map>
 #include <string>
 
 #include "common/errors.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
 #include "export/pin_translation.hpp"
+#include "export/polymesh.hpp"
 
 namespace grainmesh {
 
@@ -84,11 +88,6 @@ PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
     p.type = "symmetryPlane";
   }
   return p;
-}
-
-ExportMesh3 grain_export_mesh_3d(const Tessellation3& t, const GrainMesh3& m) {
-  return {.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases), .box = t.size(),
-          .periodic = t.periodic, .pairs = m.pairs};
 }
 
 PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {

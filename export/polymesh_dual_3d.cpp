@@ -1,16 +1,23 @@
 // The median dual of a tetrahedral grain mesh as OpenFOAM's polyhedral cells, split at
 // grain boundaries (foam_3d.hpp: build_dual_polymesh_3d).
+#include "export/polymesh_dual_3d.hpp"
+
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <boost/pending/disjoint_sets.hpp>
 
 #include "common/errors.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_geometry.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
 #include "export/pin_translation.hpp"
+#include "export/polymesh.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 

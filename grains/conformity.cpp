@@ -89,11 +89,11 @@ Conformity check_cells(const Tessellation& t, const Mesh& mesh, const std::vecto
       left += p.x == 0.0 ? 1 : 0;
       bottom += p.y == 0.0 ? 1 : 0;
     }
-    if (pairs.x.size() != left || pairs.y.size() != bottom)
+    if (pairs.axis[0].size() != left || pairs.axis[1].size() != bottom)
       throw GeometryError("conformity: not every node on the left or bottom side is paired");
-    for (const auto& [a, b] : pairs.x)
+    for (const auto& [a, b] : pairs.axis[0])
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{W, 0.0}));
-    for (const auto& [a, b] : pairs.y)
+    for (const auto& [a, b] : pairs.axis[1])
       c.max_pair_mismatch = std::max(c.max_pair_mismatch, norm(mesh.points[b] - mesh.points[a] - Vec2{0.0, H}));
     if (c.max_pair_mismatch > tol) throw GeometryError("conformity: periodic node pairs do not match");
   }

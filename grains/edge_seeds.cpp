@@ -131,8 +131,8 @@ std::vector<SidePartner> side_partners(const Tessellation& t, const EdgeIndex& i
   std::vector<SidePartner> partner(t.edges.size());
   if (!t.periodic) return partner;
   std::unordered_map<int, int> to_left, to_bottom;  // right -> left, top -> bottom vertex
-  for (const auto& [l, r] : t.partners.x) to_left[r] = l;
-  for (const auto& [b, u] : t.partners.y) to_bottom[u] = b;
+  for (const auto& [l, r] : t.partners.axis[0]) to_left[r] = l;
+  for (const auto& [b, u] : t.partners.axis[1]) to_bottom[u] = b;
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const CellSide side = edge_side(t, t.edges[e]);
     if (side != kRight && side != kTop) continue;
@@ -151,12 +151,12 @@ PeriodicPairs node_pairs(const Tessellation& t, const std::vector<SidePartner>& 
   PeriodicPairs pairs = t.partners;  // the vertices: mesh node v is vertex v
   for (std::size_t e = 0; e < partner.size(); ++e) {
     if (partner[e].low < 0) continue;
-    auto& out = edge_side(t, t.edges[e]) == kRight ? pairs.x : pairs.y;
+    auto& out = edge_side(t, t.edges[e]) == kRight ? pairs.axis[0] : pairs.axis[1];
     const int n = static_cast<int>(seeds[e].size());
     for (int k = 0; k < n; ++k)
       out.emplace_back(first_id[partner[e].low] + (partner[e].reversed ? n - 1 - k : k), first_id[e] + k);
   }
-  for (auto* side : {&pairs.x, &pairs.y}) std::sort(side->begin(), side->end());
+  for (auto* side : {&pairs.axis[0], &pairs.axis[1]}) std::sort(side->begin(), side->end());
   return pairs;
 }
 

@@ -210,7 +210,7 @@ class FeatureSampler {
       while (cls[v] != v) v = cls[v] = cls[cls[v]];
       return v;
     };
-    for (const auto* pairs : {&t.partners.x, &t.partners.y})
+    for (const auto* pairs : {&t.partners.axis[0], &t.partners.axis[1]})
       for (const auto& [a, b] : *pairs) cls[root(a)] = root(b);
     for (int v = 0; v < static_cast<int>(cls.size()); ++v) cls[v] = root(v);
     return cls;

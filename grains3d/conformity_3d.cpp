@@ -1,4 +1,6 @@
 // check_conformity(Tessellation3, GrainMesh3): the 3D conformity checker.
+#include "grains3d/conformity_3d.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -6,7 +8,6 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "grains3d/grain_mesh_3d.hpp"
 
 namespace grainmesh {
 

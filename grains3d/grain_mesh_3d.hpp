@@ -30,7 +30,7 @@ struct GrainMesh3 {
   std::vector<int> region; // #T
   // Each tessellation face's triangles (point ids), turning as its ring does.
   std::vector<std::vector<std::array<int, 3>>> faces;
-  PeriodicPairs3 pairs;    // surface points on the box's sides and their images
+  PeriodicPairs pairs;    // surface points on the box's sides and their images
   int surface_points = 0;
   int surface_triangles = 0;
   double seconds = 0.0, surface_seconds = 0.0, fill_seconds = 0.0;
@@ -46,12 +46,5 @@ GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options&
 // tetrahedra per regular one of its volume bound (measured: 645 and 657 per grain for
 // 500 nominal on Lloyd-relaxed cells of 100 and 1,000 grains).
 double size_for_tets_per_grain(const Tessellation3& t, double per_grain);
-
-// The 3D conformity checker: every tetrahedron positive; every triangle of the mesh
-// shared by two tetrahedra, or by one on the box; the tessellation's faces made of
-// triangles with a tetrahedron of each region on their sides; each grain's tetrahedra
-// summing to its volume (1e-9 relative); paired points images across the box (1e-12 of
-// it). Throws GeometryError naming the first violation.
-void check_conformity(const Tessellation3& t, const GrainMesh3& m);
 
 }  // namespace grainmesh

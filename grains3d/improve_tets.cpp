@@ -101,9 +101,93 @@ void Improver::compact() {
   q_.resize(kept);
 }
 
+// The tetrahedra around each inner edge, as runs of (edge key lo << 32 | hi, tetrahedron)
+// in `incidence`: the shells of 3 to kMaxRing tetrahedra with one poorer than kWorkBelow,
+// poorest first.
+struct Shell {
+  double worst;
+  std::size_t begin, end;
+};
+
+// The ring of an edge ab's shell: the points around ab in turning order, each tetrahedron
+// (a, b, c, d) turned positively giving a step c -> d. Empty when a tetrahedron of the
+// shell was replaced already or the ring is open (an edge on the surface).
+std::vector<int> edge_ring(const std::vector<Tet>& tets, const std::vector<int>& shell, int a, int b) {
+  const int m = static_cast<int>(shell.size());
+  std::array<int, kMaxRing> from{}, to{};
+  for (int k = 0; k < m; ++k) {
+    const Tet& tet = tets[shell[k]];
+    int ia = 0, ib = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (tet[i] == a) ia = i;
+      if (tet[i] == b) ib = i;
+    }
+    std::array<int, 4> order{ia, ib, 0, 0};
+    for (int i = 0, n = 2; i < 4; ++i)
+      if (i != ia && i != ib) order[n++] = i;
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) inversions += order[i] > order[j];
+    if (inversions % 2 != 0) std::swap(order[2], order[3]);
+    from[k] = tet[order[2]];
+    to[k] = tet[order[3]];
+  }
+  std::vector<int> ring{from[0]};
+  int next = to[0];
+  for (int k = 1; k < m; ++k) {
+    ring.push_back(next);
+    const int* at = std::find(from.begin(), from.begin() + m, next);
+    if (at == from.begin() + m) return {};
+    next = to[at - from.begin()];
+  }
+  if (next != ring[0]) return {};
+  return ring;
+}
+
+// The best triangulation of a closed ring around edge ab (Shewchuk's dynamic programme):
+// its smallest quality, and the triangles (ring positions) that reach it.
+struct RingTriangulation {
+  double worst = -2.0;
+  std::vector<std::array<int, 3>> triangles;
+};
+RingTriangulation best_triangulation(const std::vector<Vec3>& points, const std::vector<int>& ring, int a, int b) {
+  const int m = static_cast<int>(ring.size());
+  // best[i][j]: the best smallest quality triangulating ring points i..j (with the chord ij).
+  double best[kMaxRing][kMaxRing];
+  int split[kMaxRing][kMaxRing];
+  auto pair_quality = [&](int i, int k, int j) {
+    const Vec3 ri = points[ring[i]], rk = points[ring[k]], rj = points[ring[j]];
+    return std::min(quality(ri, rk, rj, points[b]), quality(ri, rj, rk, points[a]));
+  };
+  for (int i = 0; i + 1 < m; ++i) best[i][i + 1] = 2.0;
+  for (int gap = 2; gap < m; ++gap)
+    for (int i = 0; i + gap < m; ++i) {
+      const int j = i + gap;
+      best[i][j] = -2.0;
+      for (int k = i + 1; k < j; ++k) {
+        const double v = std::min({best[i][k], best[k][j], pair_quality(i, k, j)});
+        if (v > best[i][j]) {
+          best[i][j] = v;
+          split[i][j] = k;
+        }
+      }
+    }
+  RingTriangulation r{best[0][m - 1], {}};
+  std::vector<std::pair<int, int>> todo{{0, m - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j - i < 2) continue;
+    const int k = split[i][j];
+    r.triangles.push_back({i, k, j});
+    todo.push_back({i, k});
+    todo.push_back({k, j});
+  }
+  return r;
+}
+
 // Edge removal: the tetrahedra around an inner edge ab (its ring of m points closed) are
-// replaced by the best triangulation of the ring, each triangle joined to a and to b
-// (Shewchuk's dynamic programme over the ring's triangulations).
+// replaced by the best triangulation of the ring, each triangle joined to a and to b.
 int Improver::remove_edges() {
   std::vector<std::pair<std::uint64_t, int>> incidence;
   incidence.reserve(tets_.size() * 6);
@@ -115,10 +199,6 @@ int Improver::remove_edges() {
         incidence.emplace_back(lo << 32 | hi, t);
       }
   std::sort(incidence.begin(), incidence.end());
-  struct Shell {
-    double worst;
-    std::size_t begin, end;
-  };
   std::vector<Shell> shells;
   for (std::size_t b = 0, e; b < incidence.size(); b = e) {
     double worst = 2.0;
@@ -129,75 +209,19 @@ int Improver::remove_edges() {
 
   int removed = 0;
   for (const Shell& s : shells) {
-    const int m = static_cast<int>(s.end - s.begin);
     const int a = static_cast<int>(incidence[s.begin].first >> 32), b = static_cast<int>(incidence[s.begin].first & 0xffffffffu);
-    // Each tetrahedron as (a, b, c, d) turned positively gives a ring step c -> d.
-    std::array<int, kMaxRing> from{}, to{};
-    bool stale = false;
-    for (int k = 0; k < m; ++k) {
-      const int t = incidence[s.begin + k].second;
-      if (q_[t] == kDead) stale = true;
-      const Tet& tet = tets_[t];
-      int ia = 0, ib = 0;
-      for (int i = 0; i < 4; ++i) {
-        if (tet[i] == a) ia = i;
-        if (tet[i] == b) ib = i;
-      }
-      std::array<int, 4> order{ia, ib, 0, 0};
-      for (int i = 0, n = 2; i < 4; ++i)
-        if (i != ia && i != ib) order[n++] = i;
-      int inversions = 0;
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) inversions += order[i] > order[j];
-      if (inversions % 2 != 0) std::swap(order[2], order[3]);
-      from[k] = tet[order[2]];
-      to[k] = tet[order[3]];
-    }
-    if (stale) continue;
-    std::array<int, kMaxRing> ring{};
-    ring[0] = from[0];
-    int next = to[0];
-    bool closed = true;
-    for (int k = 1; k < m && closed; ++k) {
-      ring[k] = next;
-      const int* at = std::find(from.begin(), from.begin() + m, next);
-      closed = at != from.begin() + m;
-      if (closed) next = to[at - from.begin()];
-    }
-    if (!closed || next != ring[0]) continue;  // an edge on the surface: its ring is open
-    // best[i][j]: the best smallest quality triangulating ring points i..j (with the chord ij).
-    double best[kMaxRing][kMaxRing];
-    int split[kMaxRing][kMaxRing];
-    auto pair_quality = [&](int i, int k, int j) {
-      const Vec3 ri = points_[ring[i]], rk = points_[ring[k]], rj = points_[ring[j]];
-      return std::min(quality(ri, rk, rj, points_[b]), quality(ri, rj, rk, points_[a]));
-    };
-    for (int i = 0; i + 1 < m; ++i) best[i][i + 1] = 2.0;
-    for (int gap = 2; gap < m; ++gap)
-      for (int i = 0; i + gap < m; ++i) {
-        const int j = i + gap;
-        best[i][j] = -2.0;
-        for (int k = i + 1; k < j; ++k) {
-          const double v = std::min({best[i][k], best[k][j], pair_quality(i, k, j)});
-          if (v > best[i][j]) {
-            best[i][j] = v;
-            split[i][j] = k;
-          }
-        }
-      }
-    if (!(best[0][m - 1] > s.worst + kGain)) continue;
-    for (std::size_t k = s.begin; k < s.end; ++k) q_[incidence[k].second] = kDead;
-    std::vector<std::pair<int, int>> todo{{0, m - 1}};
-    while (!todo.empty()) {
-      const auto [i, j] = todo.back();
-      todo.pop_back();
-      if (j - i < 2) continue;
-      const int k = split[i][j];
+    std::vector<int> shell;
+    for (std::size_t k = s.begin; k < s.end; ++k) shell.push_back(incidence[k].second);
+    if (std::any_of(shell.begin(), shell.end(), [&](int t) { return q_[t] == kDead; })) continue;
+    const std::vector<int> ring = edge_ring(tets_, shell, a, b);
+    if (ring.empty()) continue;
+    const RingTriangulation best = best_triangulation(points_, ring, a, b);
+    if (!(best.worst > s.worst + kGain)) continue;
+    for (int t : shell) q_[t] = kDead;
+    for (const auto& [i, k, j] : best.triangles) {
       const Tet up{ring[i], ring[k], ring[j], b}, down{ring[i], ring[j], ring[k], a};
       add(up, q(up));
       add(down, q(down));
-      todo.push_back({i, k});
-      todo.push_back({k, j});
     }
     ++removed;
   }

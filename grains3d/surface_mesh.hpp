@@ -19,7 +19,7 @@ struct SurfaceMesh {
   // #F: each face's triangles, turning as its ring does (right-hand normal from the
   // face's back region into its front).
   std::vector<std::vector<std::array<int, 3>>> faces;
-  PeriodicPairs3 pairs;  // surface points on the box's sides with their images; empty when bounded
+  PeriodicPairs pairs;  // surface points on the box's sides with their images; empty when bounded
 };
 
 // Triangles of edge length about `h` (the tessellation's unit) on every face: edges cut

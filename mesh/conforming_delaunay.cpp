@@ -34,7 +34,7 @@ class Conformer {
     std::iota(out_.origin.begin(), out_.origin.end(), 0);
     for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) enter(t);
     for (int axis : {0, 1})
-      for (const auto& [lo, hi] : axis == 0 ? pairs.x : pairs.y) {
+      for (const auto& [lo, hi] : axis == 0 ? pairs.axis[0] : pairs.axis[1]) {
         image_[axis][lo] = hi;
         image_[axis][hi] = lo;
         low_[axis].insert(lo);
@@ -146,7 +146,7 @@ class Conformer {
         const auto it = midpoint_.find(edge_key(std::min(ia->second, ib->second), std::max(ia->second, ib->second)));
         if (it == midpoint_.end()) continue;
         const int lo = midpoint_.at(edge_key(std::min(a, b), std::max(a, b))), hi = it->second;
-        (axis == 0 ? out_.pairs.x : out_.pairs.y).push_back({lo, hi});
+        (axis == 0 ? out_.pairs.axis[0] : out_.pairs.axis[1]).push_back({lo, hi});
         image_[axis][lo] = hi;
         image_[axis][hi] = lo;
         low_[axis].insert(lo);

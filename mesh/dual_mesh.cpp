@@ -285,7 +285,7 @@ class DualBuilder {
 
   // The pairs of nodes, and of the midpoints of the side edges whose ends are paired.
   void carry_pairs(const std::vector<int>& id, PeriodicPairs& out) const {
-    for (const auto& [from, to] : {std::pair{&in_.pairs.x, &out.x}, std::pair{&in_.pairs.y, &out.y}}) {
+    for (const auto& [from, to] : {std::pair{&in_.pairs.axis[0], &out.axis[0]}, std::pair{&in_.pairs.axis[1], &out.axis[1]}}) {
       std::unordered_map<int, int> image;
       for (const auto& [lo, hi] : *from) {
         image[lo] = hi;

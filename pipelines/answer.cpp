@@ -141,7 +141,7 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
 // stresses.thermal (the residual stress, free expansion) and stresses.thermal_xx (cooled,
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
 // relation by more than 1 % is a warning.
-void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffness& C, const Tessellation& t,
+void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffness<3>& C, const Tessellation& t,
                         const ExportMesh& e, const FoamOptions& foam,
                         std::vector<std::string>& warnings) {
   const auto expansion_json = [](const std::array<double, 3>& a) {
@@ -150,13 +150,13 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
   Json& effective = answer.effective;
   effective["thermal_expansion"] = expansion_json(r.expansion);
   // In plane strain the cell is held out of plane: one material expands (1 + nu) alpha in
-  // plane, and carries sigma_zz; in plane stress alpha (README, Thermal residual stress).
+  // plane, and carries sigma_zz; in plane stress alpha (docs/run.md, Thermal residual stress).
   Json thermal{{"delta_T", r.delta_T}, {"plane_state", plane_state(foam)}};
   if (const auto levin = levin_expansion(e.phases, C, foam.plane_stress)) {
     thermal["levin"] = expansion_json(*levin);
     thermal["levin_difference"] =
         levin_difference({r.expansion.begin(), r.expansion.end()}, {levin->begin(), levin->end()}, warnings,
-                         "refine the mesh at the interfaces (mesh.boundary_size; see README, Thermal residual stress)");
+                         "refine the mesh at the interfaces (mesh.boundary_size; see docs/run.md, Thermal residual stress)");
   }
   effective["thermal"] = thermal;
   const Json stresses = phase_stresses_json(
@@ -166,7 +166,7 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
 }
 
 
-Json stiffness_json(const Stiffness& c) {
+Json stiffness_json(const Stiffness<3>& c) {
   return {{"C11", c[0][0]}, {"C22", c[1][1]}, {"C12", c[0][1]}, {"C21", c[1][0]}, {"C66", c[2][2]},
           {"C16", c[0][2]}, {"C26", c[1][2]}, {"C61", c[2][0]}, {"C62", c[2][1]}};
 }
@@ -175,16 +175,16 @@ Json stiffness_json(const Stiffness& c) {
 // The Voigt and Reuss tensors and Hashin-Shtrikman's bulk and shear bounds beside the
 // stiffness C in `effective`, with whether C keeps them to `tolerance` (a broken one a
 // warning).
-void check_tensor_bounds(const Stiffness& C, const TensorBounds& b, double tolerance, Json& effective,
+void check_tensor_bounds(const Stiffness<3>& C, const TensorBounds<3>& b, double tolerance, Json& effective,
                          std::vector<std::string>& warnings) {
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
   effective["bounds_tolerance"] = tolerance;
   note_voigt_reuss(semidefinite_order(b.reuss, C, tolerance) && semidefinite_order(C, b.voigt, tolerance), effective,
-                   warnings, "see README, Homogenisation");
+                   warnings, "see docs/run.md, Homogenisation");
   if (b.bulk_upper)
     check_hashin_shtrikman(bulk_modulus(C), shear_modulus(C), {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper},
-                           effective, warnings, "a finite cell is not isotropic; see README, Homogenisation", tolerance);
+                           effective, warnings, "a finite cell is not isotropic; see docs/run.md, Homogenisation", tolerance);
 }
 
 }  // namespace
@@ -225,7 +225,7 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
     effective["inside_bounds"]["hashin_shtrikman"] = !broken[2] && !broken[3];
   }
   for (const auto& w : broken)
-    if (w) warnings.push_back(*w + " (a finite cell is not isotropic; see README, Homogenisation)");
+    if (w) warnings.push_back(*w + " (a finite cell is not isotropic; see docs/run.md, Homogenisation)");
   return answer;
 }
 
@@ -240,7 +240,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   // As many solves side by side as there are cores for their processes.
   const int parallel = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / foam.processes);
   const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
-  const Stiffness& C = h.stiffness;
+  const Stiffness<3>& C = h.stiffness;
   const EngineeringConstants ec = engineering_constants(C);
   std::vector<StressedCase> stressed;
   for (int k = 0; k < 3; ++k)
@@ -253,7 +253,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
                  {"stiffness", stiffness_json(C)},
                  {"engineering", {{"E_x", ec.E_x}, {"E_y", ec.E_y}, {"nu_xy", ec.nu_xy}, {"nu_yx", ec.nu_yx}, {"G_xy", ec.G_xy}}},
                  {"anisotropy", {{"normal", ec.anisotropy_normal}, {"shear", ec.anisotropy_shear}}},
-                 {"symmetry_error", std::abs(C[0][1] - C[1][0]) / C[0][0]},
+                 {"symmetry_error", symmetry_error(C)},
                  {"bulk_modulus", bulk_modulus(C)},
                  {"shear_modulus", shear_modulus(C)},
                  {"volume_average", {{"stiffness", stiffness_json(h.volume_average_stiffness)}}}};
@@ -284,7 +284,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
 
-  check_tensor_bounds(C, tensor_bounds(e.phases, achieved_fractions(t), foam.plane_stress),
+  check_tensor_bounds(C, tensor_bounds<3>(e.phases, achieved_fractions(t), foam.plane_stress),
                       bounds_tolerance(effective["symmetry_error"].get<double>()), effective, warnings);
   return answer;
 }

@@ -6,14 +6,14 @@
 #include <thread>
 #include <tuple>
 
-#include "analysis/bounds_3d.hpp"
+#include "analysis/bounds.hpp"
 #include "analysis/phase_statistics_3d.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal_3d.hpp"
 #include "common/format.hpp"
-#include "export/picture.hpp"
-#include "export/section.hpp"
 #include "pipelines/result_pictures.hpp"
+#include "view/picture.hpp"
+#include "view/section.hpp"
 
 namespace grainmesh {
 
@@ -39,7 +39,7 @@ Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in, const 
 }
 
 // Cij for 1 <= i <= j <= 6.
-Json stiffness_json(const Stiffness6& c) {
+Json stiffness_json(const Stiffness<6>& c) {
   Json out;
   for (int i = 0; i < 6; ++i)
     for (int j = i; j < 6; ++j) {
@@ -104,7 +104,7 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
 // tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
-ThermalResidual3 add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness6& C,
+ThermalResidual3 add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness<6>& C,
                                        const SolveInput3& in, std::vector<std::string>& warnings) {
   const ThermalResidual3 r = thermal_residual_3d(h, C);
   answer.effective["thermal_expansion"] = voigt_json(r.expansion);
@@ -113,7 +113,7 @@ ThermalResidual3 add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised
     thermal["levin"] = voigt_json(*levin);
     thermal["levin_difference"] =
         levin_difference({r.expansion.begin(), r.expansion.end()}, {levin->begin(), levin->end()}, warnings,
-                         "refine the mesh (mesh.tets_per_grain; see README, 3D cases and solves)");
+                         "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)");
   }
   answer.effective["thermal"] = thermal;
   answer.stresses["thermal"] = phase_stresses_json(r.fields, in, &r.virial_stress);
@@ -154,7 +154,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   effective["strain_xx"] = h.strain_xx;
   if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways
   // Uniaxial strain: between the Reuss and Voigt tensors' C11 for every microstructure.
-  const TensorBounds3 b = tensor_bounds_3d(
+  const TensorBounds<6> b = tensor_bounds<6>(
       in.e.phases, phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size())));
   effective["voigt"] = b.voigt[0][0];
   effective["reuss"] = b.reuss[0][0];
@@ -162,7 +162,7 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   const auto below = outside("effective.modulus", h.modulus, b.reuss[0][0], "the Reuss bound", false);
   effective["inside_bounds"]["voigt_reuss"] = !above && !below;
   for (const auto& w : {above, below})
-    if (w) warnings.push_back(*w + ": check the solve (see README, 3D cases and solves)");
+    if (w) warnings.push_back(*w + ": check the solve (see docs/3d.md, 3D cases and solves)");
   return answer;
 }
 
@@ -189,7 +189,7 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   }
   effective["corrections"] = corrections;
   write_state_pictures(in, h.cases[0].fields, "xx", "");
-  const Stiffness6 C = symmetric_part(h.stiffness);
+  const Stiffness<6> C = symmetric_part(h.stiffness);
   effective["stiffness"] = stiffness_json(C);
   effective["symmetry_error"] = symmetry_error(h.stiffness);
   const EngineeringConstants3 k = engineering_constants_3d(C);
@@ -199,23 +199,23 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   std::optional<ThermalResidual3> thermal;
   if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, C, in, warnings);
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);
-  effective["bulk_modulus"] = bulk_modulus_3d(C);
-  effective["shear_modulus"] = shear_modulus_3d(C);
+  effective["bulk_modulus"] = bulk_modulus(C);
+  effective["shear_modulus"] = shear_modulus(C);
   const std::vector<double> fractions =
       phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
   effective["volume_fractions"] = fractions;
-  const TensorBounds3 b = tensor_bounds_3d(in.e.phases, fractions);
+  const TensorBounds<6> b = tensor_bounds<6>(in.e.phases, fractions);
   effective["voigt"] = stiffness_json(b.voigt);
   effective["reuss"] = stiffness_json(b.reuss);
   const double tolerance = bounds_tolerance(symmetry_error(h.stiffness));
   effective["bounds_tolerance"] = tolerance;
   note_voigt_reuss(semidefinite_order(b.reuss, C, tolerance) && semidefinite_order(C, b.voigt, tolerance), effective,
-                   warnings, "see README, 3D cases and solves");
+                   warnings, "see docs/3d.md, 3D cases and solves");
   if (b.bulk_upper)
-    check_hashin_shtrikman(bulk_modulus_3d(C), shear_modulus_3d(C),
+    check_hashin_shtrikman(bulk_modulus(C), shear_modulus(C),
                            {*b.bulk_lower, *b.bulk_upper, *b.shear_lower, *b.shear_upper}, effective, warnings,
                            "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
-                           "order in the mesh size; see README, 3D cases and solves", tolerance);
+                           "order in the mesh size; see docs/3d.md, 3D cases and solves", tolerance);
   return answer;
 }
 

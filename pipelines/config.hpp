@@ -68,4 +68,8 @@ inline constexpr double kDefaultTimeLimitSeconds = 6 * 3600.0;
 // Its value (infinity for "none"). Throws ConfigError naming the key.
 double read_time_limit(const Config& config);
 
+// The dimension of the cell a config describes, decided here and nowhere else: 3 when it
+// sets domain.depth (a W x H x D box), 2 otherwise.
+inline int cell_dimensions(const Config& config) { return config.has("domain.depth") ? 3 : 2; }
+
 }  // namespace grainmesh

@@ -1,6 +1,7 @@
 #include "pipelines/config_keys.hpp"
 
 #include <cstdio>
+#include <utility>
 
 namespace grainmesh {
 
@@ -17,30 +18,37 @@ std::vector<ConfigKey> cell_keys() {
       {"domain.periodic", T, "true", "periodic in every direction; false cuts a plane (or box) tessellation by the cell"},
       {"tessellation.grains", T, "100", "number of seeds (grains), at least 1"},
       {"tessellation.grain_size", T, "-", "instead of grains: the mean equivalent-circle (2D) or -sphere (3D) diameter"},
-      {"tessellation.seeds", T, "-", "instead of drawing them: the generator points, 'x y, x y, ...' (2D) or 'x y z, ...' (3D)"},
+      {"tessellation.seeds", T, "-", "instead of drawing them: the generator points, 'x y, x y, ...' (2D) or 'x y z, ...' (3D)",
+       R"md(instead of drawing them: the generator points, `x y, x y, ...` (in the cell); `grains` may be left out or must match)md"},
       {"tessellation.seed", T, "1", "the only source of randomness: the same seed gives the same bytes"},
       {"tessellation.lloyd_iterations", T, "0", "centroidal (Lloyd) relaxation steps; 3 or more give no 2D corner below 30 degrees"},
-      {"tessellation.size_cv", T, "0", "above 0: a Laguerre tessellation, lognormal radii of this coefficient of variation"},
+      {"tessellation.size_cv", T, "0", "above 0: a Laguerre tessellation, lognormal radii of this coefficient of variation",
+       R"md(> 0: Laguerre tessellation with lognormal radii of this coefficient of variation (weights r², scaled so the disks cover half the cell))md"},
       {"tessellation.min_edge", T, "0.1", "edges shorter than this x the mean grain diameter are merged away; 0 = off"},
       {"tessellation.phase_mode", T, "grain", "grain (each grain one phase) or binder (2D: the matrix phase a layer between shrunk grains)"},
-      {"tessellation.arrangement", T, "random", "random, dispersed (a phase's grains avoid each other) or clustered (they grow together)"},
+      {"tessellation.arrangement", T, "random", "random, dispersed (a phase's grains avoid each other) or clustered (they grow together)",
+       R"md(grain mode: `random`, `dispersed` (grains of a phase avoid each other) or `clustered` (they grow together))md"},
       {"tessellation.matrix_phase", T, "matrix or binder", "binder mode: the matrix phase's name"},
       {"tessellation.contiguity", T, "-", "grain mode (2D): the contiguity to reach for tessellation.contiguity_phase (0 < C < 1)"},
       {"tessellation.contiguity_phase", T, "the rest phase", "the phase whose contiguity tessellation.contiguity sets"},
       {"phase.*.fraction", T, "-", "a phase's area (2D) or volume (3D) fraction, in (0, 1], or rest; required for every phase"},
-      {"phase.*.E", T | E, "-", "a phase's Young's modulus, Pa (WC 700e9); below 1 MPa refused unless units.checked"},
+      {"phase.*.E", T | E, "-", "a phase's Young's modulus, Pa (WC 700e9); below 1 MPa refused unless units.checked",
+       R"md(a phase's moduli (required for domain meshes, whose phases are `matrix` and `inclusion`, or `solid`))md"},
       {"phase.*.nu", T | E, "-", "a phase's Poisson ratio, in (-1, 0.5)"},
-      {"phase.*.alpha", T, "-", "a phase's linear thermal expansion, 1/K (WC 5.2e-6); needed with load.delta_T; above 1e-3 refused unless units.checked"},
+      {"phase.*.alpha", T, "-", "a phase's linear thermal expansion, 1/K (WC 5.2e-6); needed with load.delta_T; above 1e-3 refused unless units.checked",
+       R"md(linear thermal expansion (1/K; WC about 5e-6, Co about 14e-6), carried in `tessellation.json`; required (≥ 0) by a thermal load (`run`'s `load.delta_T`))md"},
       {"units.checked", T | E, "false", "true: take moduli below 1 MPa and expansions above 1e-3/K as given (they are refused as unit slips otherwise)"},
       {"output.picture_width", T | M | D, "1200", "width of the pictures in pixels"},
       {"output.section", T | M, "0.5", "3D: the height of the pictured section, a fraction of domain.depth (moved off a layer of vertices)"},
-      {"limits.seconds", T | M | D, "21600", "wall-clock limit of the run in seconds, or none; reached: exit 5, nothing written"},
+      {"limits.seconds", T | M | D, "21600", "wall-clock limit of the run in seconds, or none; reached: exit 5, nothing written",
+       R"md(wall-clock limit of the run, or `none`; `tessellate`, `mesh`, `domain` and `run` (its solver included) stop at it with exit code 5 and write nothing; reports give `time_limit_seconds`. The default is 6 h.)md"},
       // The mesh.
       {"mesh.size", M, "-", "element edge length, the tessellation's unit (mesh.h in a run)"},
       {"mesh.h", M, "-", "the same as mesh.size"},
       {"mesh.triangles_per_grain", M, "100", "2D, instead of mesh.size: the size for about this many triangles per grain"},
       {"mesh.tets_per_grain", M, "500", "3D, instead of mesh.size: the size for about this many tetrahedra per grain"},
-      {"mesh.boundary_size", M, "0", "2D: element size along grain boundaries; 0 = none"},
+      {"mesh.boundary_size", M, "0", "2D: element size along grain boundaries; 0 = none",
+       R"md(element size along grain boundaries (cell sides excluded))md"},
       {"mesh.junction_size", M, "0", "2D: element size at triple junctions; 0 = none"},
       {"mesh.gradient", M, "0.3", "2D: how fast sizes grow away from boundaries, junctions and thin features (0.05 to 10)"},
       {"mesh.grading", M, "0.3", "the same as mesh.gradient"},
@@ -51,47 +59,70 @@ std::vector<ConfigKey> cell_keys() {
   };
 }
 
-// The case, its solve, the domain mesher and the sweep.
+// The case and its solve.
 std::vector<ConfigKey> case_keys() {
   return {
       // The OpenFOAM case and its load.
       {"export.convert_to_meters", E, "1e-6", "the mesh's length unit in metres (configs in micrometres)"},
       {"export.thickness", E, "mean edge length", "2D: extrusion thickness, mesh units"},
       {"export.cyclic", E, "false", "periodic meshes: cyclic pairs instead of side patches (homogenise.boundary = periodic sets it)"},
-      {"export.format", E, "ascii", "ascii or binary (a run: binary above 100,000 cells)"},
+      {"export.format", E, "ascii", "ascii or binary (a run: binary above 100,000 cells)",
+       R"md(`ascii` or `binary` (polyMesh, zones and fields); a run's `report.json` says which in `case_format`. Default: `ascii` (`grainmesh run`: `binary` above 100,000 cells, where an ASCII 2D case is about 45 MB, twice its binary size).)md"},
       {"export.grain_zones", E, "false", "a cellZone per grain as well as per phase"},
-      {"export.cells", E, "triangles (3D: polyhedra)", "2D: triangles or polygons (the dual); 3D: polyhedra (the dual, converges) or tetrahedra"},
+      {"export.cells", E, "triangles (3D: polyhedra)", "2D: triangles or polygons (the dual); 3D: polyhedra (the dual, converges) or tetrahedra",
+       R"md(`triangles`, or `polygons`: the dual of the triangle mesh (the thesis' §4.2), one cell per node — its Voronoi cell, bounded by its triangles' circumcentres — cut along grain boundaries and the cell's sides, so that every cell lies in one grain (see *Polygonal cells* above); a run's `report.json` gives their number in `case_cells`, and `output.pictures = all` draws them in `cells_detail.png`. A mesh file of polygonal cells (an export's `mesh.vtu`) is exported as it is, and needs `polygons`)md"},
       {"export.stiffness_interpolation", E, "auto", "2D: auto, harmonic or linear interpolation of the stiffness to faces"},
       {"load.displacement", E, "0.001", "x displacement of right (mixed), or the periodic cases' strain x width, mesh units"},
       {"load.traction", E, "0", "2D mixed load: when not 0, the normal traction on right in Pa instead of the displacement"},
       {"load.uniaxial", E, "false", "mixed load: top traction-free instead of a symmetry plane"},
       {"load.plane_stress", E, "false", "2D: plane stress instead of plane strain (report.json: plane_state)"},
       // What a run does with it.
-      {"homogenise.boundary", R, "mixed", "mixed (the thesis' load, one modulus) or periodic (load cases on cyclic pairs, the stiffness tensor)"},
-      {"load.delta_T", R, "0", "periodic: a uniform temperature change in K (e.g. -1000): thermal residual stress and expansion"},
-      {"solve.processes", R, "1", "MPI processes for each solve (decomposePar, mpirun, reconstructPar)"},
-      {"output.pictures", R, "all", "none (no pictures, no results.vtu), basic or all"},
-      {"output.cases", R, "keep", "keep every case as solved, or answers (--solve): drop the case directories once solved"},
+      {"homogenise.boundary", R, "mixed", "mixed (the thesis' load, one modulus) or periodic (load cases on cyclic pairs, the stiffness tensor)",
+       R"md(`mixed` (the thesis' load, one modulus) or `periodic` (three load cases on cyclic pairs, the stiffness tensor); see docs/run.md, Homogenisation)md"},
+      {"load.delta_T", R, "0", "periodic: a uniform temperature change in K (e.g. -1000): thermal residual stress and expansion",
+       R"md(a uniform temperature change in K (e.g. `-1000`, cooling from sintering) for the thermal residual stress: needs `homogenise.boundary = periodic` and every phase's `phase.NAME.alpha` (≥ 0); adds the load case `thermal` (2D and 3D), see docs/run.md, Thermal residual stress)md"},
+      {"solve.processes", R, "1", "MPI processes for each solve (decomposePar, mpirun, reconstructPar)",
+       R"md(MPI processes for each solve: above 1, `decomposePar`, `mpirun --oversubscribe -np N solidDisplacementFoam -parallel`, `reconstructPar` (see The solve on several processes))md"},
+      {"output.pictures", R, "all", "none (no pictures, no results.vtu), basic or all",
+       R"md(what a run draws for a look: `none`: no PNG picture and no `results.vtu`; `basic`: `tessellation.png`, `mesh.png` and, solved, `stress_xx.png` and `results.vtu`; `all`: also `mesh_detail.png` (and with `export.cells = polygons` `cells_detail.png`), `stress_yy.png`, `stress_xy.png`, `displacement.png` (`true` and `false` are `all` and `none`). The default cell with `--solve` takes 1.31 s with all, 1.03 s basic, 0.62 s none; a 1,000-grain cell 6.42, 5.53 and 4.14 s (median of three, `bench_pictures` in `make bench`): a sweep's runs are much faster without)md"},
+      {"output.cases", R, "keep", "keep every case as solved, or answers (--solve): drop the case directories once solved",
+       R"md(what a solved run keeps of its cases: `keep` every case as solved; `answers` its report, `results.vtu`, pictures, mesh and config, the case directories dropped once solved (report.json: `cases`), for sweeps of hundreds of runs: the default 2D periodic run's 21 MB become 6.6 MB, and with `output.pictures = none` 0.4 MB. Needs `--solve` (refused without it, naming the key))md"},
+  };
+}
+
+// The domain mesher's keys and the sweep's.
+std::vector<ConfigKey> domain_and_sweep_keys() {
+  return {
       // grainmesh domain.
       {"domain.shape", D, "-", "the domain's distance function (required; several lines are united)"},
       {"domain.bbox", D, "the shape's bounds", "'x1 y1 x2 y2': where the initial lattice is spread"},
-      {"interface.shape", D, "-", "an internal boundary the mesh must follow; several lines are united"},
+      {"interface.shape", D, "-", "an internal boundary the mesh must follow; several lines are united",
+       R"md(an internal boundary dI = 0 the mesh must follow (Algorithm 3); several lines are united)md"},
       {"size.h0", D, "-", "the smallest element size (required)"},
-      {"size.function", D, "1", "relative size h(x, y) > 0: a number or a muparser expression in x, y"},
-      {"size.curvature_segments", D, "48", "curved boundaries get at least this many edges per full turn; 0 = off"},
-      {"size.curvature_gradient", D, "0.1", "how fast that refinement relaxes away from the curve"},
-      {"size.gradient", D, "0.3", "size functions growing faster than this are graded first; 0 = as given"},
-      {"fixed.points", D, "-", "'x y, x y, ...': nodes that never move"},
-      {"fixed.polygon_vertices", D, "true", "polygon corners on the boundary or interface become fixed points"},
+      {"size.function", D, "1", "relative size h(x, y) > 0: a number or a muparser expression in x, y",
+       R"md(relative size h(x, y) > 0: a number or a [muparser](https://beltoforion.de/en/muparser/) expression in `x`, `y` (e.g. `min(4*sqrt(x^2+y^2) - 1, 2)`); several lines give their minimum)md"},
+      {"size.curvature_segments", D, "48", "curved boundaries get at least this many edges per full turn; 0 = off",
+       R"md(curved boundaries and interfaces get at least this many edges per full turn (edge ≤ 2πR/48, chord area error ≤ 0.3 % on a circle); `0` turns it off)md"},
+      {"size.curvature_gradient", D, "0.1", "how fast that refinement relaxes away from the curve",
+       R"md(how fast that refinement relaxes away from the curve (size grows by this × distance))md"},
+      {"size.gradient", D, "0.3", "size functions growing faster than this are graded first; 0 = as given",
+       R"md(a size function growing faster than this (absolute size per unit distance, its least value being h0) is graded first: min over y of h(y) + 0.3·\|x − y\|, on a grid of spacing h0; `0` = as given (the thesis). A 1000-fold step meshes with q_min 0.82 instead of 0.002; the thesis' graded examples are below it and unchanged)md"},
+      {"fixed.points", D, "-", "'x y, x y, ...': nodes that never move",
+       R"md(`x y, x y, ...`: nodes that never move (corners, where curves meet))md"},
+      {"fixed.polygon_vertices", D, "true", "polygon corners on the boundary or interface become fixed points",
+       R"md(polygon and rectangle corners lying on the boundary (or on the interface) become fixed points)md"},
       {"distmesh.seed", D, "1", "seed of the rejection step's random numbers"},
-      {"distmesh.max_iterations", D, "5000", "bound on force iterations (a valid mesh is returned at it)"},
-      {"distmesh.fscale", D, "1.2", "the bars' rest length over their size"},
+      {"distmesh.max_iterations", D, "5000", "bound on force iterations (a valid mesh is returned at it)",
+       R"md(hard bound on force iterations; reaching it is reported, and a valid mesh is still returned)md"},
+      {"distmesh.fscale", D, "1.2", "the bars' rest length over their size",
+       R"md(the thesis' constants: spring inflation (eq. 2.9), Euler step, retriangulation and convergence tolerances (× h0), boundary tolerance (× h0))md"},
       {"distmesh.dt", D, "0.2", "time step of the force iteration"},
       {"distmesh.ttol", D, "0.1", "retriangulate once a point moved this x its size"},
       {"distmesh.dptol", D, "0.001", "converged when no point moves more than this x its size"},
       {"distmesh.geps", D, "0.001", "a point farther than this x h0 outside the boundary is outside"},
       {"distmesh.density_control_every", D, "30", "every so many iterations, drop points on bars shorter than half their size; 0 = never"},
-      {"distmesh.boundary_seeding", D, "true", "start with points on the boundary and the interface"},
+      {"distmesh.boundary_seeding", D, "true", "start with points on the boundary and the interface",
+       R"md(start with points on the boundary and the interface, spaced by the size)md"},
       {"distmesh.split_long_edges", D, "true", "density control also splits boundary and interface edges longer than 1.5 x their size"},
       {"distmesh.optimize_sweeps", D, "50", "final local quality optimisation sweeps; 0 = none"},
       {"distmesh.optimize_below", D, "0.99", "... of points with a triangle of quality below this"},
@@ -107,6 +138,7 @@ const std::vector<ConfigKey>& config_key_table() {
   static const std::vector<ConfigKey> table = [] {
     std::vector<ConfigKey> all = cell_keys();
     for (const ConfigKey& k : case_keys()) all.push_back(k);
+    for (const ConfigKey& k : domain_and_sweep_keys()) all.push_back(k);
     return all;
   }();
   return table;
@@ -136,6 +168,56 @@ std::string key_reference(unsigned commands) {
   }
   std::string text;
   for (std::size_t s = 0; s < sections.size(); ++s) text += (s ? "\n[" : "[") + sections[s] + "]\n" + bodies[s];
+  return text;
+}
+
+namespace {
+
+// The commands that read a key, as the reference lists them.
+std::string command_names(unsigned commands) {
+  static const std::pair<unsigned, const char*> kNames[] = {{kTessellateKey, "tessellate"}, {kMeshKey, "mesh"},
+                                                            {kExportKey, "export"},         {kRunKey, "run"},
+                                                            {kDomainKey, "domain"},         {kSweepKey, "sweep"}};
+  std::string names;
+  for (const auto& [bit, name] : kNames)
+    if (commands & bit) names += (names.empty() ? "" : ", ") + std::string(name);
+  return names;
+}
+
+// A table cell: '|' escaped.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|' && (out.empty() || out.back() != '\\')) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string key_reference_markdown() {
+  std::string text =
+      "# Config keys\n\n"
+      "Every key grainmesh reads, generated from the table its config readers check keys against\n"
+      "(`pipelines/config_keys.cpp`): `grainmesh keys --markdown` prints this page, and a test fails\n"
+      "when it and the code disagree. `run` reads the keys of tessellate, mesh and export and its\n"
+      "own; `sweep` a run's and its own. `phase.*.KEY` stands for any phase's name. Lengths are in\n"
+      "the config's unit (micrometres with the default `export.convert_to_meters = 1e-6`), moduli\n"
+      "in Pa. `grainmesh keys [COMMAND]` prints the same as one line per key.\n";
+  std::string section;
+  for (const ConfigKey& k : config_key_table()) {
+    const std::string key = k.key;
+    const std::string s = key.substr(0, key.find('.'));
+    if (s != section) {
+      section = s;
+      text += "\n## [" + s + "]\n\n| key | read by | default | meaning |\n| --- | --- | --- | --- |\n";
+    }
+    std::string def = "–";  // en dash: none, or required
+    if (std::string(k.default_text) != "-") def.assign("`").append(k.default_text).append("`");
+    text += "| `" + key + "` | " + command_names(k.commands) + " | " + cell(def) + " | " +
+            cell(k.details != nullptr ? k.details : k.meaning) + " |\n";
+  }
   return text;
 }
 

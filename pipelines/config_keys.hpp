@@ -23,7 +23,8 @@ struct ConfigKey {
   const char* key;          // "section.name"; "*" stands for any one name (a phase's)
   unsigned commands;        // KeyCommands
   const char* default_text; // what applies when the key is not given ("-": nothing, or required)
-  const char* meaning;
+  const char* meaning;       // one line: what `grainmesh keys` prints
+  const char* details = nullptr;  // markdown, for the reference (docs/keys.md): more than the line says
 };
 
 // The table, in the order the reference lists it.
@@ -35,5 +36,10 @@ std::vector<std::string> keys_of(unsigned commands);
 // The reference as text: for the commands in `commands`, each key with its default and
 // meaning, a line each, grouped by section.
 std::string key_reference(unsigned commands);
+
+// The whole reference as markdown (docs/keys.md is this, and a test holds it so): a table
+// per section, each key with the commands that read it, its default, its meaning and
+// details.
+std::string key_reference_markdown();
 
 }  // namespace grainmesh

@@ -11,10 +11,10 @@
 #include "analysis/richardson.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "export/picture.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_command.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 
@@ -26,15 +26,14 @@ constexpr double kWithin = 1e-3;
 
 // The quantities a level's report gives: the mixed modulus (and the biased area average
 // beside it), or the periodic tensor's components.
-std::vector<std::pair<std::string, double>> quantities(const Json& effective) {
+std::vector<std::pair<std::string, double>> quantities(const Json& effective, int dimensions) {
   if (effective.at("boundary") == "mixed" && !effective.contains("volume_average"))  // 3D: the force's alone
     return {{"modulus", effective.at("modulus").get<double>()}};
   if (effective.at("boundary") == "mixed")
     return {{"modulus", effective.at("modulus").get<double>()},
             {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};
   std::vector<std::pair<std::string, double>> q;
-  const bool three = effective.at("stiffness").contains("C33");
-  for (const char* c : three ? std::vector<const char*>{"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}
+  for (const char* c : dimensions == 3 ? std::vector<const char*>{"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}
                              : std::vector<const char*>{"C11", "C22", "C12", "C21", "C66"})
     q.emplace_back(c, effective.at("stiffness").at(c).get<double>());
   return q;
@@ -42,7 +41,7 @@ std::vector<std::pair<std::string, double>> quantities(const Json& effective) {
 
 // The key the study's levels set: triangles per grain, or tetrahedra per grain in 3D.
 std::string level_key(const Config& c) {
-  return c.has("domain.depth") ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
+  return cell_dimensions(c) == 3 ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
 }
 // The column of the levels' elements per grain in convergence.csv and the report.
 const char* per_grain_name(int dimensions) { return dimensions == 3 ? "tets_per_grain" : "triangles_per_grain"; }
@@ -79,7 +78,7 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
   std::vector<std::vector<double>>& values = l.values;
   std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
   Json& levels = l.json;
-  l.dimensions = c.has("domain.depth") ? 3 : 2;
+  l.dimensions = cell_dimensions(c);
   for (int k = 0; k < o.levels; ++k) {
     const int n = o.start << k;
     const std::string name = "tpg-" + std::to_string(n);
@@ -100,7 +99,7 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       throw SolveError(what);
     }
     const Json report = Json::parse(read_text_file(dir / name / "report.json"));
-    const auto q = quantities(report.at("effective"));
+    const auto q = quantities(report.at("effective"), l.dimensions);
     if (names.empty()) {
       for (const auto& [qn, v] : q) names.push_back(qn);
       values.resize(names.size());

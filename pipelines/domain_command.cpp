@@ -5,15 +5,15 @@
 #include <numbers>
 
 #include "common/errors.hpp"
-#include "pipelines/config_keys.hpp"
 #include "domain/shape_parser.hpp"
-#include "export/mesh_description.hpp"
-#include "export/picture.hpp"
-#include "export/vtu.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "view/mesh_description.hpp"
+#include "view/picture.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 

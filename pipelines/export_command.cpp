@@ -7,14 +7,15 @@
 #include <variant>
 
 #include "common/errors.hpp"
-#include "pipelines/config_keys.hpp"
 #include "common/format.hpp"
 #include "common/json_error.hpp"
-#include "export/mesh_description.hpp"
-#include "export/vtu.hpp"
+#include "export/foam_case.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/material_units.hpp"
 #include "pipelines/report.hpp"
+#include "view/mesh_description.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 

@@ -8,10 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "export/foam.hpp"
-#include "export/mesh_description.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/output_dir.hpp"
+#include "view/mesh_description.hpp"
 
 namespace grainmesh {
 

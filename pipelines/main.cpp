@@ -1,6 +1,6 @@
 // grainmesh: synthetic microstructures to solver-ready meshes.
 // main() is the only place that catches errors: it prints one line and maps the error
-// family to the exit code documented in README.md.
+// family to the exit code documented in docs/errors.md.
 #include <boost/program_options.hpp>
 
 #include <algorithm>
@@ -52,7 +52,7 @@ constexpr const char* kUsage =
     "      check that a mesh conforms to its tessellation (exit 0) or name the violation (exit 3)\n"
     "  domain CONFIG -o OUT [--set KEY=VALUE ...]\n"
     "      mesh a domain given by distance and size functions (see data/examples/)\n"
-    "  keys [COMMAND]\n"
+    "  keys [COMMAND | --markdown]\n"
     "      every config key (of run, tessellate, mesh, export, domain or sweep) with its default and meaning\n"
     "\n"
     "grainmesh <command> --help shows the options of a command and its config keys.\n";
@@ -79,8 +79,13 @@ unsigned command_keys(const std::string& name) {
   return 0;
 }
 
-// `grainmesh keys [COMMAND]`: the key reference, of one command or all.
+// `grainmesh keys [COMMAND]`: the key reference, of one command or all; `--markdown`:
+// all of it as docs/keys.md.
 int keys_main(const std::vector<std::string>& args) {
+  if (args.size() == 1 && args[0] == "--markdown") {
+    std::cout << key_reference_markdown();
+    return kOk;
+  }
   if (args.size() > 1) throw ConfigError("keys: give at most one command (run, tessellate, mesh, export, domain, sweep)");
   const unsigned keys = args.empty() ? ~0u : command_keys(args[0]);
   if (keys == 0)
@@ -112,7 +117,7 @@ std::optional<po::variables_map> parse_options(const std::string& name, po::opti
   }
   if (vm.count("help")) {
     std::cout << desc << "\nConfig keys (grainmesh keys " << name << "):\n" << key_reference(command_keys(name))
-              << "\nSee README.md, section 'grainmesh " << name << "'.\n";
+              << "\nSee docs/" << (name == "check" ? std::string("mesh") : name) << ".md.\n";
     return std::nullopt;
   }
   return vm;

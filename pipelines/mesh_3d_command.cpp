@@ -4,12 +4,13 @@
 #include <cstdio>
 
 #include "common/format.hpp"
-#include "export/picture.hpp"
-#include "export/section.hpp"
-#include "export/vtu.hpp"
+#include "grains3d/conformity_3d.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "view/picture.hpp"
+#include "view/section.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 

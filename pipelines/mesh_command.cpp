@@ -6,18 +6,18 @@
 #include <variant>
 
 #include "common/errors.hpp"
-#include "pipelines/config_keys.hpp"
 #include "common/format.hpp"
-#include "export/mesh_description.hpp"
-#include "export/picture.hpp"
-#include "export/vtu.hpp"
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/mesh_3d_command.hpp"
 #include "pipelines/output_dir.hpp"
-#include "pipelines/result_pictures.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/result_pictures.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/mesh_description.hpp"
+#include "view/picture.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 
@@ -174,8 +174,8 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   add_quality(report, q);
   report["max_grain_area_error"] = conformity.max_area_error;
   report["max_pair_mismatch"] = conformity.max_pair_mismatch;
-  report["pairs_x"] = m.pairs.x.size();
-  report["pairs_y"] = m.pairs.y.size();
+  report["pairs_x"] = m.pairs.axis[0].size();
+  report["pairs_y"] = m.pairs.axis[1].size();
   report["boundary_edges"] = conformity.boundary_edges;
   report["iterations_max"] = m.iterations_max;
   report["unconverged_regions"] = m.unconverged_regions;
@@ -213,7 +213,7 @@ void run_check_command(const std::filesystem::path& tessellation, const std::fil
               "pairs within %.1e, %zu edges on the cell's sides\n",
               mesh_file.string().c_str(), tessellation.string().c_str(), m.mesh.cells(),
               triangles ? "triangles" : "polygonal cells", c.max_area_error,
-              m.pairs.x.size(), m.pairs.y.size(), c.max_pair_mismatch, c.boundary_edges);
+              m.pairs.axis[0].size(), m.pairs.axis[1].size(), c.max_pair_mismatch, c.boundary_edges);
 }
 
 }  // namespace grainmesh

@@ -1,9 +1,9 @@
 #include "pipelines/result_pictures.hpp"
 
-#include "analysis/phase_statistics.hpp"
-#include "export/picture.hpp"
-
 #include <tuple>
+
+#include "analysis/phase_statistics.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 

@@ -8,7 +8,7 @@
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/stress_measures.hpp"
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {

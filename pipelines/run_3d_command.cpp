@@ -7,7 +7,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/memory.hpp"
-#include "export/picture.hpp"
+#include "export/foam_case_3d.hpp"
 #include "pipelines/answer_3d.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_3d_command.hpp"
@@ -18,6 +18,7 @@
 #include "pipelines/stage_line.hpp"
 #include "pipelines/tessellate_3d_command.hpp"
 #include "pipelines/tessellate_command.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 

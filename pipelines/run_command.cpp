@@ -8,8 +8,12 @@
 
 #include "common/errors.hpp"
 #include "common/memory.hpp"
-#include "export/foam.hpp"
-#include "export/picture.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/foam_load.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh.hpp"
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/answer.hpp"
@@ -22,6 +26,7 @@
 #include "pipelines/stage_line.hpp"
 #include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 
@@ -85,10 +90,18 @@ std::vector<std::string> write_cases(const std::filesystem::path& dir, const Exp
     pm = write_foam_case(dir / "case", e, foam);
     return case_dirs;
   }
+  // One mesh for the load cases (their options differ in the strain and temperature
+  // alone), its files written once and copied.
   for (const LoadCase& lc : periodic_load_cases(e, foam)) {
+    const bool first = case_dirs.empty();
     case_dirs.push_back(periodic_case_dir(lc));
     std::filesystem::create_directories(dir / case_dirs.back());
-    pm = write_foam_case(dir / case_dirs.back(), e, load_case_options(foam, lc));
+    if (first) {
+      pm = write_foam_case(dir / case_dirs.back(), e, load_case_options(foam, lc));
+      continue;
+    }
+    write_foam_case(dir / case_dirs.back(), e, pm, load_case_options(foam, lc),
+                    dir / case_dirs.front() / "constant" / "polyMesh");
   }
   return case_dirs;
 }
@@ -211,7 +224,7 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
       std::printf("  thermal (%s): free in-plane expansion a11 %.4g, a22 %.4g 1/K%s; residual stresses in report.json "
                   "(stresses.thermal)\n",
                   plan.foam.plane_stress ? "plane stress" : "plane strain", a["a11"].get<double>(), a["a22"].get<double>(),
-                  plan.foam.plane_stress ? "" : " (held out of plane: not a 3D expansion, see README)");
+                  plan.foam.plane_stress ? "" : " (held out of plane: not a 3D expansion, see docs/run.md)");
     }
   }
   if (!warnings.all().empty())
@@ -222,7 +235,7 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
 
 void run_run_command(const Config& c, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   c.check_keys(run_config_keys());
-  if (c.has("domain.depth")) return run_run_3d_command(c, out, solve, quiet, summary);
+  if (cell_dimensions(c) == 3) return run_run_3d_command(c, out, solve, quiet, summary);
   claim_output(out, "run");
   Warnings warnings;
   RunPlan plan = read_run_plan(c, solve, warnings);

@@ -134,7 +134,7 @@ FoamOptions read_run_foam_options(const Config& c) {
 
 void check_run_config(const Config& c) {
   c.check_keys(run_config_keys());
-  if (c.has("domain.depth")) return check_run_3d_config(c);
+  if (cell_dimensions(c) == 3) return check_run_3d_config(c);
   read_pictures(c);
   read_tessellate_job(c.subset(tessellate_config_keys()));
   read_run_foam_options(c);

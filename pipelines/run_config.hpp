@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "analysis/homogenise.hpp"
-#include "export/foam.hpp"
+#include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/report.hpp"
 

@@ -7,11 +7,12 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "export/picture.hpp"
+#include "export/foam_options.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/sweep_command.hpp"
 #include "pipelines/sweep_plan.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 

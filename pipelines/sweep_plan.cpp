@@ -88,7 +88,7 @@ void make_runs(const Config& base, const SweepOptions& o, SweepPlan& plan) {
       // and wherever the values stand in the lists; 53 bits, so a JSON number holds it exactly.
       const std::uint64_t seed = derived_seed(base_seed, static_cast<std::uint64_t>(r), identity) >> 11;
       o2.push_back("tessellation.seed=" + std::to_string(seed));
-      if (!base.has("domain.depth")) o2.push_back("mesh.seed=" + std::to_string(seed));  // 3D meshes draw nothing
+      if (cell_dimensions(base) == 2) o2.push_back("mesh.seed=" + std::to_string(seed));  // 3D meshes draw nothing
       // Runs side by side mesh on one thread each (the mesh is the same either way).
       if (o.jobs > 1 && !base.has("mesh.threads")) o2.push_back("mesh.threads=1");
       plan.runs.push_back({run_name(keys, point_values, r), p, r, seed, o2, {}});
@@ -135,7 +135,7 @@ SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
   SweepPlan plan;
   read_lists(c, plan);
   const Config base = c.subset(run_config_keys());
-  plan.dimensions = base.has("domain.depth") ? 3 : 2;
+  plan.dimensions = cell_dimensions(base);
   make_runs(base, o, plan);
   const std::vector<std::string>& keys = plan.keys;
   plan.base_text = config_ini(base);

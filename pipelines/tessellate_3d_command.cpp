@@ -9,13 +9,13 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "domain/shape_parser.hpp"
-#include "export/picture.hpp"
-#include "export/section.hpp"
-#include "export/vtu.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/picture.hpp"
+#include "view/section.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 

@@ -7,8 +7,6 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "export/picture.hpp"
-#include "export/vtu.hpp"
 #include "domain/shape_parser.hpp"
 #include "pipelines/config_keys.hpp"
 #include "pipelines/material_units.hpp"
@@ -16,6 +14,8 @@
 #include "pipelines/report.hpp"
 #include "pipelines/tessellate_3d_command.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/picture.hpp"
+#include "view/vtu.hpp"
 
 namespace grainmesh {
 
@@ -177,7 +177,7 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 
 TessellateJob read_tessellate_job(const Config& c) {
   c.check_keys(tessellate_config_keys());
-  if (c.has("domain.depth"))
+  if (cell_dimensions(c) == 3)
     c.fail("domain.depth", "3D cells go through grainmesh tessellate, mesh, run, sweep and converge; export takes "
                            "2D meshes (leave domain.depth out)");
   if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
@@ -277,7 +277,7 @@ std::vector<std::string> tessellation_warnings(const Tessellation& t) {
 }
 
 void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
-  if (c.has("domain.depth")) return run_tessellate_3d_command(c, out);
+  if (cell_dimensions(c) == 3) return run_tessellate_3d_command(c, out);
   claim_output(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();

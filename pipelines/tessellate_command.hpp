@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "export/picture.hpp"
 #include "pipelines/config.hpp"
 #include "tessellate/tessellation.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 max_fn=${1:-80}
 max_file=${2:-500}
-dirs="common tessellate mesh domain grains export analysis pipelines"
+dirs="common domain tessellate mesh grains grains3d export view analysis pipelines"
 files=$(for d in $dirs; do [ -d "$d" ] && find "$d" -name '*.cpp' -o -name '*.hpp' -o -name '*.hpp.in'; done | sort)
 found=0
 for f in $files; do

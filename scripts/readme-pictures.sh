@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the pictures in docs/images/ that README.md shows, with the built tool.
+# Regenerates the pictures in docs/images/ that README.md and docs/ show, with the built tool.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d)

@@ -3,7 +3,8 @@
 # at BASE (a commit, default HEAD) beside the working tree's build/grainmesh, runs both on
 # the default cell (solved: the mixed load, and the periodic one with the thermal load),
 # every data/examples/*.ini (grain configs through run and through tessellate, mesh and
-# export; domain configs through domain; 3D configs left out) and a solved sweep with its summary, and compares
+# export; 3D configs through run, mixed and periodic, and through tessellate and mesh;
+# domain configs through domain) and a solved sweep with its summary, and compares
 # the output trees. Only what differs between two runs of one binary is left out:
 # report.json's seconds, memory and config path, OpenFOAM's and the sweep's logs. Exit 0
 # when all match.
@@ -38,7 +39,12 @@ outputs() {
     local name
     name=$(basename "$f" .ini)
     if grep -q '^depth *=' "$f"; then
-      continue  # 3D cells: only tessellated so far, by test_tessellate_3d_cli.cpp
+      # 3D cells: through run (the mixed case, and the periodic load cases on one mesh) and
+      # through the stage commands.
+      "$gm" run "$f" -o "$out/$name" -q 2> /dev/null
+      "$gm" run "$f" -o "$out/$name-periodic" -q --set homogenise.boundary=periodic 2> /dev/null
+      "$gm" tessellate "$f" -o "$out/$name-t" > /dev/null
+      "$gm" mesh "$out/$name-t/tessellation.json" -o "$out/$name-m" > /dev/null
     elif grep -q '^shape *=' "$f"; then
       "$gm" domain "$f" -o "$out/$name" > /dev/null
     else

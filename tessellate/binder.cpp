@@ -1,10 +1,14 @@
+#include "tessellate/binder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "tessellate/steps.hpp"
+#include "tessellate/cut.hpp"
+#include "tessellate/phases.hpp"
+#include "tessellate/window.hpp"
 
 namespace grainmesh {
 namespace {
@@ -113,6 +117,21 @@ BinderGrains binder_grains(TorusGraph& g, const std::vector<int>& cells, const T
   out.matrix_grain = static_cast<int>(shrunk.size());
   for (Vec2& s : g.seeds) s = o.periodic ? reduce_periodic(s - st.window_origin, W, H) : s;
   return out;
+}
+
+std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t) {
+  std::vector<Vec2> poly = ring;
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n && poly.size() >= 3; ++k) {
+    const Vec2 a = ring[k], b = ring[(k + 1) % n];
+    const Vec2 dir = b - a;
+    const double len = norm(dir);
+    if (len == 0.0) continue;
+    const Vec2 inward = perp(dir) / len;  // left of a counter-clockwise edge
+    poly = clip_half_plane(poly, inward, dot(inward, a) + t);
+  }
+  if (poly.size() < 3 || !(polygon_area(poly) > 0.0)) return {};
+  return poly;
 }
 
 }  // namespace grainmesh

@@ -1,9 +1,9 @@
 // Phase labels rearranged toward a contiguity: like-sized grains of the phase and of the
 // others trade labels, the best trade for each grain in turn.
+#include "tessellate/contiguity.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "tessellate/steps.hpp"
 
 namespace grainmesh {
 

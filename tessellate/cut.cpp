@@ -1,6 +1,8 @@
 // Cutting grains by the cell's sides. Every cut point is computed from the canonical
 // endpoints of its edge, in the frame of that edge, so a point on a shared edge and its
 // periodic partner on the opposite side come out with the same bits.
+#include "tessellate/cut.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,7 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/point_key.hpp"
-#include "tessellate/steps.hpp"
+#include "tessellate/regularise.hpp"
 
 namespace grainmesh {
 

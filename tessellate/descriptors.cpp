@@ -34,8 +34,8 @@ std::vector<PhaseDescriptors> phase_descriptors(const Tessellation& t) {
 
   // Each left (bottom) side vertex's partner on the right (top) side, and the edges along
   // the right and top sides by their vertices: the region across a periodic side.
-  std::map<int, int> partner_x(t.partners.x.begin(), t.partners.x.end());
-  std::map<int, int> partner_y(t.partners.y.begin(), t.partners.y.end());
+  std::map<int, int> partner_x(t.partners.axis[0].begin(), t.partners.axis[0].end());
+  std::map<int, int> partner_y(t.partners.axis[1].begin(), t.partners.axis[1].end());
   std::map<std::pair<int, int>, int> side_edge;  // (v0, v1) sorted -> edge
   for (std::size_t k = 0; k < t.edges.size(); ++k) {
     const TessEdge& e = t.edges[k];

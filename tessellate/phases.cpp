@@ -1,11 +1,11 @@
-// Phase labels: which grains make up each phase's area fraction, and the binder offset.
+// Phase labels: which grains make up each phase's area fraction.
+#include "tessellate/phases.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <queue>
 #include <tuple>
-
-#include "tessellate/steps.hpp"
 
 namespace grainmesh {
 
@@ -170,19 +170,11 @@ std::vector<int> assign_phases(const std::vector<double>& areas, const std::vect
   return label;
 }
 
-std::vector<Vec2> shrink_polygon(const std::vector<Vec2>& ring, double t) {
-  std::vector<Vec2> poly = ring;
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n && poly.size() >= 3; ++k) {
-    const Vec2 a = ring[k], b = ring[(k + 1) % n];
-    const Vec2 dir = b - a;
-    const double len = norm(dir);
-    if (len == 0.0) continue;
-    const Vec2 inward = perp(dir) / len;  // left of a counter-clockwise edge
-    poly = clip_half_plane(poly, inward, dot(inward, a) + t);
-  }
-  if (poly.size() < 3 || !(polygon_area(poly) > 0.0)) return {};
-  return poly;
+double target_fraction(const std::vector<Phase>& phases, int p) {
+  if (!phases[p].rest) return phases[p].fraction;
+  double sum = 0.0;
+  for (const Phase& q : phases) sum += q.rest ? 0.0 : q.fraction;
+  return 1.0 - sum;
 }
 
 }  // namespace grainmesh

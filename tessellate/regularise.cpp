@@ -1,8 +1,8 @@
 // Short-edge removal on the torus graph.
+#include "tessellate/regularise.hpp"
+
 #include <algorithm>
 #include <tuple>
-
-#include "tessellate/steps.hpp"
 
 namespace grainmesh {
 

@@ -10,52 +10,16 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/binder.hpp"
+#include "tessellate/contiguity.hpp"
+#include "tessellate/cut.hpp"
 #include "tessellate/descriptors.hpp"
-#include "tessellate/steps.hpp"
+#include "tessellate/phases.hpp"
+#include "tessellate/radii.hpp"
+#include "tessellate/regularise.hpp"
+#include "tessellate/window.hpp"
 
 namespace grainmesh {
-
-// The best `count` cell origins on the torus: x first, then y for each x, keeping clear
-// of where the x side crosses boundaries and of the x side itself.
-std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std::vector<Vec2>& points, double W,
-                                    double H, double scale, int count) {
-  std::vector<Vec2> out;
-  for (double ox : best_line_offsets(segs, points, 0, W, H, true, scale, {}, count)) {
-    std::vector<Vec2> pts = points;
-    for (const Vec2& p : line_crossings(segs, 0, ox, W, H)) pts.push_back(p);
-    for (double oy : best_line_offsets(segs, pts, 1, H, W, true, scale, {ox}, count)) out.push_back({ox, oy});
-  }
-  return out;
-}
-
-
-// The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
-std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
-  poly = clip_half_plane(poly, {1.0, 0.0}, 0.0);
-  poly = clip_half_plane(poly, {-1.0, 0.0}, -W);
-  poly = clip_half_plane(poly, {0.0, 1.0}, 0.0);
-  return clip_half_plane(poly, {0.0, -1.0}, -H);
-}
-
-
-double target_fraction(const std::vector<Phase>& phases, int p) {
-  if (!phases[p].rest) return phases[p].fraction;
-  double sum = 0.0;
-  for (const Phase& q : phases) sum += q.rest ? 0.0 : q.fraction;
-  return 1.0 - sum;
-}
-
-std::vector<double> lognormal_radii(int n, double cv, Rng& rng) {
-  const double sigma = std::sqrt(std::log1p(cv * cv));
-  std::vector<double> radii(n);
-  for (double& r : radii) {
-    const double u1 = 1.0 - uniform01(rng);  // (0, 1]
-    const double u2 = uniform01(rng);
-    const double normal = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    r = std::exp(sigma * normal);
-  }
-  return radii;
-}
 
 namespace {
 
@@ -182,7 +146,6 @@ SharedBoundaries shared_boundaries(const TorusGraph& g, const std::vector<int>& 
   for (const auto& m : lengths) out.emplace_back(m.begin(), m.end());
   return out;
 }
-
 
 std::vector<Segment> graph_segments(const TorusGraph& g);
 

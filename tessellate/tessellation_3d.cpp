@@ -13,8 +13,10 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "tessellate/laguerre_3d.hpp"
+#include "tessellate/phases.hpp"
+#include "tessellate/radii.hpp"
+#include "tessellate/regularise.hpp"
 #include "tessellate/regularise_3d.hpp"
-#include "tessellate/steps.hpp"
 
 namespace grainmesh {
 
@@ -173,8 +175,8 @@ void assemble(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tes
 
 // Each vertex on a low side of the box with the vertex at its position plus the box's
 // edge; GeometryError naming a side vertex without its image.
-PeriodicPairs3 box_partners(const Tessellation3& t) {
-  PeriodicPairs3 pairs;
+PeriodicPairs box_partners(const Tessellation3& t) {
+  PeriodicPairs pairs;
   const Vec3 box = t.size();
   for (int a = 0; a < 3; ++a) {
     const int u = (a + 1) % 3, v = (a + 2) % 3;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/deadline.hpp"
+#include "common/periodic_pairs.hpp"
 #include "common/random.hpp"
 #include "common/vec3.hpp"
 #include "tessellate/tessellation.hpp"
@@ -56,14 +57,6 @@ struct Grain3 {
   std::vector<int> neighbours;  // grain ids sharing a face, ascending (on the torus when periodic)
 };
 
-// Vertices of the box's faces paired with their images: axis a holds (low, high) with
-// high = low + the box's edge along a, every other coordinate bit for bit the same.
-struct PeriodicPairs3 {
-  std::array<std::vector<std::pair<int, int>>, 3> axis;
-
-  friend bool operator==(const PeriodicPairs3&, const PeriodicPairs3&) = default;
-};
-
 struct Tessellation3Stats {
   int grains = 0;                    // with a cell (hidden Laguerre cells do not count)
   int removed_grains = 0;            // hidden Laguerre cells
@@ -94,7 +87,7 @@ struct Tessellation3 {
   std::vector<Vec3> vertices;
   std::vector<Face3> faces;
   std::vector<Region3> regions;
-  PeriodicPairs3 partners;  // empty when not periodic
+  PeriodicPairs partners;  // empty when not periodic
   Tessellation3Stats stats;
 
   Vec3 size() const { return {width, height, depth}; }

@@ -148,7 +148,7 @@ std::string tessellation_to_json(const Tessellation& t) {
   Json regions = Json::array();
   for (const Region& r : t.regions) regions.push_back({{"grain", r.grain}, {"phase", r.phase}, {"rings", r.rings}});
   j["regions"] = regions;
-  j["partners"] = {{"x", t.partners.x}, {"y", t.partners.y}};
+  j["partners"] = {{"x", t.partners.axis[0]}, {"y", t.partners.axis[1]}};
   j["statistics"] = statistics(t.stats, t.phases);
   j["statistics"].update(descriptors_json(t));
   return j.dump(1) + "\n";
@@ -191,8 +191,8 @@ Tessellation tessellation_from_json(const std::string& text, const std::string& 
       for (const Json& ring : r.at("rings")) region.rings.push_back(read_ints(ring));
       t.regions.push_back(std::move(region));
     }
-    t.partners.x = read_pairs(j.at("partners").at("x"));
-    t.partners.y = read_pairs(j.at("partners").at("y"));
+    t.partners.axis[0] = read_pairs(j.at("partners").at("x"));
+    t.partners.axis[1] = read_pairs(j.at("partners").at("y"));
     const Json& s = j.at("statistics");
     t.stats.grains = read_int(s.at("grains"));
     t.stats.sharpest_corner_deg = s.at("sharpest_corner_deg").get<double>();

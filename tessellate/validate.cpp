@@ -40,7 +40,7 @@ void check_indices(const Tessellation& t) {
     if (!vertex(e.v0) || !vertex(e.v1) || e.left < -1 || e.left >= nr || e.right < -1 || e.right >= nr)
       throw GeometryError("tessellation: edge " + std::to_string(k) + " names a vertex or region that does not exist");
   }
-  for (const auto* pairs : {&t.partners.x, &t.partners.y})
+  for (const auto* pairs : {&t.partners.axis[0], &t.partners.axis[1]})
     for (const auto& [a, b] : *pairs)
       if (!vertex(a) || !vertex(b)) throw GeometryError("tessellation: a periodic partner names a vertex that does not exist");
 }
@@ -114,14 +114,13 @@ void check_edges(const Tessellation& t) {
     if (uses[k] != (t.edges[k].left >= 0) + (t.edges[k].right >= 0))
       throw GeometryError("tessellation: edge " + std::to_string(k) + " is not a segment of the regions it names");
   const double tol = 1e-12 * std::max(W, H);
-  for (const auto& [l, r] : t.partners.x)
+  for (const auto& [l, r] : t.partners.axis[0])
     if (std::abs(t.vertices[r].x - t.vertices[l].x - W) > tol || std::abs(t.vertices[r].y - t.vertices[l].y) > tol)
       throw GeometryError("tessellation: x partners do not match");
-  for (const auto& [b, u] : t.partners.y)
+  for (const auto& [b, u] : t.partners.axis[1])
     if (std::abs(t.vertices[u].y - t.vertices[b].y - H) > tol || std::abs(t.vertices[u].x - t.vertices[b].x) > tol)
       throw GeometryError("tessellation: y partners do not match");
 }
-
 
 }  // namespace
 

@@ -1,11 +1,13 @@
 // Where the cell's sides go on the torus, and what is done where they cross boundaries
 // too shallowly.
+#include "tessellate/window.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <tuple>
 
-#include "tessellate/steps.hpp"
+#include "tessellate/regularise.hpp"
 
 namespace grainmesh {
 
@@ -307,6 +309,27 @@ int square_shallow_crossings(std::vector<Vec2>& poly, double width, double heigh
     }
   }
   return made;
+}
+
+// The best `count` cell origins on the torus: x first, then y for each x, keeping clear
+// of where the x side crosses boundaries and of the x side itself.
+std::vector<Vec2> window_candidates(const std::vector<Segment>& segs, const std::vector<Vec2>& points, double W,
+                                    double H, double scale, int count) {
+  std::vector<Vec2> out;
+  for (double ox : best_line_offsets(segs, points, 0, W, H, true, scale, {}, count)) {
+    std::vector<Vec2> pts = points;
+    for (const Vec2& p : line_crossings(segs, 0, ox, W, H)) pts.push_back(p);
+    for (double oy : best_line_offsets(segs, pts, 1, H, W, true, scale, {ox}, count)) out.push_back({ox, oy});
+  }
+  return out;
+}
+
+// The part of a polygon inside [0, W] x [0, H] (Sutherland-Hodgman), for areas only.
+std::vector<Vec2> clip_to_cell(std::vector<Vec2> poly, double W, double H) {
+  poly = clip_half_plane(poly, {1.0, 0.0}, 0.0);
+  poly = clip_half_plane(poly, {-1.0, 0.0}, -W);
+  poly = clip_half_plane(poly, {0.0, 1.0}, 0.0);
+  return clip_half_plane(poly, {0.0, -1.0}, -H);
 }
 
 }  // namespace grainmesh

@@ -1,8 +1,6 @@
 // What checkMesh's log says, for the tests that run it on our cases.
 #pragma once
 
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -11,7 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "export/foam.hpp"
+#include <catch2/catch.hpp>
+
+#include "export/foam_material.hpp"
 #include "helpers.hpp"
 
 namespace grainmesh::test {

@@ -1,14 +1,15 @@
 // The 3D periodic homogenisation against exact answers: one material gives its own
 // isotropic tensor, and laminates (grains from seeds in a row: slabs normal to x) the
 // exact layered tensor.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <filesystem>
 
-#include "analysis/bounds_3d.hpp"
+#include <catch2/catch.hpp>
+
+#include "analysis/bounds.hpp"
 #include "analysis/homogenise_3d.hpp"
 #include "analysis/traction.hpp"
+#include "export/foam_case_3d.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "helpers.hpp"
 #include "pipelines/laminate.hpp"
@@ -31,7 +32,7 @@ PeriodicHomogenised3 solve_six(const ExportMesh3& e, const FoamOptions& o, const
 }
 
 // The largest difference of two tensors over the largest entry of the second.
-double relative_difference(const Stiffness6& c, const Stiffness6& exact) {
+double relative_difference(const Stiffness<6>& c, const Stiffness<6>& exact) {
   double worst = 0.0, scale = 0.0;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j) {
@@ -41,7 +42,7 @@ double relative_difference(const Stiffness6& c, const Stiffness6& exact) {
   return worst / scale;
 }
 
-std::string show(const Stiffness6& c) {
+std::string show(const Stiffness<6>& c) {
   std::string s;
   for (const auto& row : c) {
     for (double x : row) s += std::to_string(x / 1e9) + " ";
@@ -62,7 +63,7 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   Rng rng(5);
   const Tessellation3 t = tessellate_3d(to, rng);
   const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)}));
-  const Stiffness6 exact = isotropic_stiffness_3d(carbide);
+  const Stiffness<6> exact = isotropic_stiffness<6>(carbide);
   for (const auto cells : {FoamOptions::Cells::triangles, FoamOptions::Cells::polygons}) {
     const bool dual = cells == FoamOptions::Cells::polygons;
     CAPTURE(dual);
@@ -105,7 +106,7 @@ namespace {
 // tetrahedra or on their dual.
 struct Laminate3 {
   PeriodicHomogenised3 h;
-  Stiffness6 exact;
+  Stiffness<6> exact;
 };
 Laminate3 laminate_cell(double ratio, FoamOptions::Cells cells = FoamOptions::Cells::triangles) {
   Tessellation3Options to;
@@ -142,7 +143,7 @@ struct LaminateErrors {
   std::array<double, 9> component;  // C11 C22 C33 C12 C13 C23 C44 C55 C66
   double others;
 };
-LaminateErrors laminate_errors(const Stiffness6& c, const Stiffness6& exact) {
+LaminateErrors laminate_errors(const Stiffness<6>& c, const Stiffness<6>& exact) {
   constexpr int kAt[9][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}, {3, 3}, {4, 4}, {5, 5}};
   LaminateErrors out{};
   for (int k = 0; k < 9; ++k) {
@@ -236,10 +237,10 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
     volume += fm.volume[c];
   }
   for (double& f : fraction) f /= volume;
-  const TensorBounds3 b = tensor_bounds_3d(e.phases, fraction);
-  const Stiffness6 C = symmetric_part(h.stiffness);
-  INFO(show(h.stiffness) << "Co " << fraction[1] << ", K " << bulk_modulus_3d(C) << " in [" << *b.bulk_lower << ", "
-                         << *b.bulk_upper << "], G " << shear_modulus_3d(C) << " in [" << *b.shear_lower << ", "
+  const TensorBounds<6> b = tensor_bounds<6>(e.phases, fraction);
+  const Stiffness<6> C = symmetric_part(h.stiffness);
+  INFO(show(h.stiffness) << "Co " << fraction[1] << ", K " << bulk_modulus(C) << " in [" << *b.bulk_lower << ", "
+                         << *b.bulk_upper << "], G " << shear_modulus(C) << " in [" << *b.shear_lower << ", "
                          << *b.shear_upper << "]");
   // Measured: symmetric to 7.5e-5; K 375.6 GPa in [363.8, 377.9]; G 225.75 GPa, inside
   // the upper bound 226.16 by 0.18 %. G converges from above (the shears' error at the
@@ -248,16 +249,16 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
   CHECK(symmetry_error(h.stiffness) < 1e-3);
   CHECK(semidefinite_order(C, b.voigt));
   CHECK(semidefinite_order(b.reuss, C));
-  CHECK(bulk_modulus_3d(C) > *b.bulk_lower);
-  CHECK(bulk_modulus_3d(C) < *b.bulk_upper);
-  CHECK(shear_modulus_3d(C) > *b.shear_lower);
-  CHECK(shear_modulus_3d(C) < (kTetsPerGrain >= 3200 ? 1.0 : 1.015) * *b.shear_upper);
+  CHECK(bulk_modulus(C) > *b.bulk_lower);
+  CHECK(bulk_modulus(C) < *b.bulk_upper);
+  CHECK(shear_modulus(C) > *b.shear_lower);
+  CHECK(shear_modulus(C) < (kTetsPerGrain >= 3200 ? 1.0 : 1.015) * *b.shear_upper);
 }
 
 TEST_CASE("3D engineering constants: the isotropic tensor's own, and the universal anisotropy index of a cubic one",
           "[homogenise]") {
   const FoamPhase carbide{"WC", 700e9, 0.24};
-  const EngineeringConstants3 iso = engineering_constants_3d(isotropic_stiffness_3d(carbide));
+  const EngineeringConstants3 iso = engineering_constants_3d(isotropic_stiffness<6>(carbide));
   const double mu = carbide.youngs_modulus / (2 * (1 + carbide.poisson_ratio));
   for (double E : {iso.E_x, iso.E_y, iso.E_z}) CHECK(E == Approx(carbide.youngs_modulus).epsilon(1e-12));
   for (double G : {iso.G_yz, iso.G_xz, iso.G_xy}) CHECK(G == Approx(mu).epsilon(1e-12));
@@ -265,7 +266,7 @@ TEST_CASE("3D engineering constants: the isotropic tensor's own, and the univers
   CHECK(std::abs(iso.universal_anisotropy) < 1e-12);
   // Cubic, C11 = 250, C12 = 100, C44 = 100 GPa: Zener's A = 2 C44 / (C11 - C12) = 4/3,
   // and A^U = 6/5 (sqrt(A) - 1/sqrt(A))^2 = 6/5 (A + 1/A - 2) = 0.1 exactly.
-  Stiffness6 cubic{};
+  Stiffness<6> cubic{};
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) cubic[i][j] = i == j ? 250e9 : 100e9;
     cubic[3 + i][3 + i] = 100e9;
@@ -276,11 +277,4 @@ TEST_CASE("3D engineering constants: the isotropic tensor's own, and the univers
   CHECK(c.E_x == Approx(150e9 * 450e9 / 350e9).epsilon(1e-12));
   CHECK(c.nu_xy == Approx(100.0 / 350.0).epsilon(1e-12));
   CHECK(c.G_xy == Approx(100e9).epsilon(1e-12));
-  // Symmetry: one pair off by 1 % of the largest entry, and its symmetric part between.
-  Stiffness6 skew = cubic;
-  skew[0][1] += 2.5e9;
-  CHECK(symmetry_error(skew) == Approx(0.01).epsilon(1e-12));
-  CHECK(symmetric_part(skew)[0][1] == Approx(101.25e9).epsilon(1e-12));
-  CHECK(symmetric_part(skew)[1][0] == symmetric_part(skew)[0][1]);
-  CHECK(symmetry_error(symmetric_part(skew)) == 0.0);
 }

@@ -2,18 +2,19 @@
 // convergence every cell's faces carry forces that add up to zero, also across cyclic
 // faces with a jump, and under a temperature change - the test that the flux is the
 // solver's own, not an estimate.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <cmath>
+
+#include <catch2/catch.hpp>
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
 #include "analysis/solve.hpp"
 #include "analysis/traction.hpp"
 #include "common/random.hpp"
-#include "helpers.hpp"
+#include "export/foam_case.hpp"
 #include "grains/grain_mesh.hpp"
+#include "helpers.hpp"
 #include "tessellate/tessellation.hpp"
 
 using namespace grainmesh;

@@ -1,16 +1,16 @@
 // Child processes: the environment they are given, their exit codes, and the watcher
 // that ends them.
-#include <catch2/catch.hpp>
-
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
 
+#include <catch2/catch.hpp>
+
 #include "common/allocator.hpp"
 #include "common/process.hpp"
 #include "common/text_file.hpp"
-#include "export/foam.hpp"
+#include "export/foam_solver.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;

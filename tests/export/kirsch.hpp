@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "export/foam.hpp"
+#include "export/export_mesh.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/domain_command.hpp"
 

@@ -1,7 +1,5 @@
 // The OpenFOAM export, judged by OpenFOAM's own programs: checkMesh on our cases, and
 // solidDisplacementFoam against analytical answers.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -9,16 +7,24 @@
 #include <sstream>
 #include <string>
 
+#include <catch2/catch.hpp>
+
 #include "analysis/foam_fields.hpp"
 #include "analysis/homogenise.hpp"
 #include "analysis/traction.hpp"
+#include "checkmesh.hpp"
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
-#include "export/foam.hpp"
-#include "checkmesh.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/foam_load.hpp"
+#include "export/foam_material.hpp"
+#include "export/foam_options.hpp"
+#include "export/foam_solver.hpp"
+#include "export/polymesh.hpp"
+#include "grains/grain_mesh.hpp"
 #include "helpers.hpp"
 #include "kirsch.hpp"
-#include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
 
@@ -319,7 +325,7 @@ TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[ex
   CHECK(pin.type == "patch");
 
   // Without its pair, a node's faces have no partner: refused, naming the sides.
-  e.pairs.x.pop_back();
+  e.pairs.axis[0].pop_back();
   CHECK_THROWS_WITH(build_polymesh(e, {.cyclic = true}), Catch::Contains("the faces of left and right do not pair"));
 }
 

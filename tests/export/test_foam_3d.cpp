@@ -1,18 +1,22 @@
 // The 3D OpenFOAM export's polyMesh, judged by checkMesh: periodic two-phase cells of
 // tetrahedra with the box's six sides as patches and as three cyclic pairs.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <filesystem>
 
+#include <catch2/catch.hpp>
+
 #include "checkmesh.hpp"
 #include "common/text_file.hpp"
-#include "export/foam_3d.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case_3d.hpp"
 #include "export/foam_file.hpp"
+#include "export/foam_options.hpp"
 #include "export/pin_translation.hpp"
-#include "export/vtu.hpp"
+#include "export/polymesh.hpp"
+#include "export/polymesh_3d.hpp"
 #include "helpers.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

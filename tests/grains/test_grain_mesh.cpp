@@ -66,7 +66,7 @@ void check_mesh(const Tessellation& t, double per_grain) {
   CHECK(c.max_area_error <= 1e-9);
   CHECK(c.max_pair_mismatch <= 1e-12 * std::max(t.width, t.height));
   CHECK(m.phase.size() == m.mesh.triangles.size());
-  CHECK(m.pairs.x.empty() != t.periodic);
+  CHECK(m.pairs.axis[0].empty() != t.periodic);
   o.threads = 2;
   const GrainMesh m2 = mesh_tessellation(t, o);
   CHECK(m2.mesh.points == m.mesh.points);
@@ -297,10 +297,10 @@ TEST_CASE("the mesh's periodic pairs are the cut's partners carried to the copie
     // Made from the construction (vertex partners, seeds copied across), they are exactly
     // the pairs the nodes' coordinates give; the cut's own pairs are among them.
     PeriodicPairs sorted = pair_periodic_nodes(t, m.mesh.points);
-    for (auto* side : {&sorted.x, &sorted.y}) std::sort(side->begin(), side->end());
+    for (auto* side : {&sorted.axis[0], &sorted.axis[1]}) std::sort(side->begin(), side->end());
     CHECK(m.pairs == sorted);
-    CHECK(m.pairs.x.size() > t.partners.x.size());
-    for (const auto& pair : t.partners.x) CHECK(std::count(m.pairs.x.begin(), m.pairs.x.end(), pair) == 1);
-    for (const auto& pair : t.partners.y) CHECK(std::count(m.pairs.y.begin(), m.pairs.y.end(), pair) == 1);
+    CHECK(m.pairs.axis[0].size() > t.partners.axis[0].size());
+    for (const auto& pair : t.partners.axis[0]) CHECK(std::count(m.pairs.axis[0].begin(), m.pairs.axis[0].end(), pair) == 1);
+    for (const auto& pair : t.partners.axis[1]) CHECK(std::count(m.pairs.axis[1].begin(), m.pairs.axis[1].end(), pair) == 1);
   }
 }

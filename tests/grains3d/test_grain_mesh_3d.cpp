@@ -1,10 +1,11 @@
 // The 3D mesh stage: conforming tetrahedra grain by grain on hand-made and drawn cells,
 // periodic and bounded: the conformity checker, exact grain volumes, paired surface
 // points, the quality reached, and the same mesh whatever the thread count.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 
+#include <catch2/catch.hpp>
+
+#include "grains3d/conformity_3d.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "mesh/tetmesh.hpp"
 #include "tessellate/tessellation_3d.hpp"

@@ -1,11 +1,12 @@
 // Tetrahedral mesh improvement (flips, point insertion, smoothing) inside a region whose
 // surface stays: on a cube cut into tetrahedra with a badly placed inner point, and on
 // the grain meshes of a drawn cell against the same meshes unimproved.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <map>
 
+#include <catch2/catch.hpp>
+
+#include "grains3d/conformity_3d.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "grains3d/improve_tets.hpp"
 #include "mesh/tetmesh.hpp"

@@ -1,15 +1,14 @@
 // `grainmesh export`, driven as a user would: a case from a grain mesh and from a domain
 // mesh, replacing an earlier export, and bad input.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <fstream>
 
-#include "export/foam.hpp"
-#include "helpers.hpp"
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
 #include "analysis/foam_fields.hpp"
+#include "export/foam_solver.hpp"
+#include "helpers.hpp"
 
 using namespace grainmesh;
 using test::run_grainmesh;

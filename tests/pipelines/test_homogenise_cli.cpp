@@ -1,18 +1,17 @@
 // Homogenisation through `grainmesh run --solve`, against exact answers: laminates built
 // from grains (seeds in a row give strips), one material, and the symmetry of the tensor.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <string>
 
-#include "export/foam.hpp"
-#include "export/vtu.hpp"
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "export/foam_solver.hpp"
 #include "helpers.hpp"
 #include "pipelines/laminate.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -220,7 +219,7 @@ TEST_CASE("homogenisation refuses what it cannot do in one line, leaving nothing
 
 TEST_CASE("a periodic load case that diverges is named, and no number is reported", "[homogenise][cli]") {
   test::ScratchDir dir("homogenise-diverges");
-  // Harmonic interpolation at a stiffness contrast of 27 diverges (export/foam.hpp).
+  // Harmonic interpolation at a stiffness contrast of 27 diverges (export/foam_solver.hpp).
   const auto r = test::run_grainmesh({"run", "-o", (dir / "out").string(), "--solve", "--set",
                                       "homogenise.boundary=periodic", "--set", "phase.matrix.E=30e9", "--set",
                                       "export.stiffness_interpolation=harmonic"});

@@ -2,14 +2,9 @@
 // that cannot converge, and `run` and `sweep` killed by SIGKILL at random moments leave
 // no output that looks complete, while a resumed sweep finishes with the same results as
 // one never interrupted.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -17,6 +12,10 @@
 #include <map>
 #include <random>
 #include <thread>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include "helpers.hpp"
 
@@ -90,6 +89,30 @@ int processes_in(const fs::path& dir) {
     if (cmdline.find(dir.string()) != std::string::npos || (!ec && cwd.rfind(dir.string(), 0) == 0)) ++n;
   }
   return n;
+}
+
+// The solvers (solidDisplacementFoam: /proc's comm holds its first 15 characters) running
+// in `dir` or below.
+std::vector<pid_t> solvers_in(const fs::path& dir) {
+  std::vector<pid_t> pids;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::error_code ec;
+    const std::string cwd = fs::read_symlink(entry.path() / "cwd", ec).string();
+    if (ec || cwd.rfind(dir.string(), 0) != 0) continue;
+    if (test::read_file(entry.path() / "comm").rfind("solidDisplaceme", 0) == 0) pids.push_back(std::stoi(name));
+  }
+  return pids;
+}
+
+// Whether `pid` runs (a zombie left for a parent that does not reap it does not).
+bool running(pid_t pid) {
+  const fs::path stat = "/proc/" + std::to_string(pid) + "/stat";
+  if (!fs::exists(stat)) return false;
+  const std::string text = test::read_file(stat);
+  const auto paren = text.rfind(')');
+  return paren != std::string::npos && paren + 2 < text.size() && text[paren + 2] != 'Z';
 }
 
 // A report without the figures that differ between identical runs (timings, memory).
@@ -181,6 +204,18 @@ TEST_CASE("grainmesh run killed at random moments never leaves an output that lo
     fs::remove_all(dir / "out");
   }
   CHECK(interrupted >= 4);
+
+  // Killed while its solver runs (seen running first, so this part cannot pass unseen):
+  // the solver goes with it.
+  const pid_t pid = spawn_grainmesh(args);
+  std::vector<pid_t> solvers;
+  for (const auto t1 = Clock::now(); solvers.empty() && seconds_since(t1) < 4 * full;)
+    if (solvers = solvers_in(dir.path()); solvers.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  REQUIRE_FALSE(solvers.empty());
+  kill_after(pid, 0.0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  for (const pid_t solver : solvers) CHECK_FALSE(running(solver));
+  CHECK(processes_in(dir.path()) == 0);
 }
 
 TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an uninterrupted sweep",

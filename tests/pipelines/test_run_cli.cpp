@@ -1,13 +1,12 @@
 // `grainmesh run`: the one-shot pipeline, its OUT layout, its reproducibility from
 // config.ini, and bad input.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <fstream>
 
-#include "export/foam.hpp"
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "export/foam_solver.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;

@@ -9,7 +9,7 @@
 #include <regex>
 #include <sstream>
 
-#include "export/foam.hpp"
+#include "export/foam_solver.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;

@@ -1,9 +1,5 @@
 // `grainmesh sweep`: an end-to-end sweep with solving, resuming, shards, collecting, and
 // bad input.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -11,9 +7,12 @@
 #include <regex>
 #include <sstream>
 
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
-#include "export/foam.hpp"
+#include "export/foam_options.hpp"
+#include "export/foam_solver.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;
@@ -68,7 +67,7 @@ TEST_CASE("a sweep solves every point, between the bounds, and resumes where it 
   // Killed part-way: a run lost, another half-written (a staging directory, no report).
   const fs::path lost = test::sweep_run(dir / "out", 1, 0), half = test::sweep_run(dir / "out", 2, 1);
   fs::remove_all(lost);
-  const fs::path staging = dir / "out" / ("." + lost.filename().string() + ".partial-99999");
+  const fs::path staging = dir / "out" / std::string(".").append(lost.filename().string()).append(".partial-99999");
   fs::create_directories(staging / "case");  // its staging, left by the kill
   fs::remove(half / "report.json");
   const auto again = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--solve"});

@@ -1,15 +1,14 @@
 // `grainmesh tessellate`, driven as a user would: outputs, reports, bad input.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <fstream>
 
-#include "export/vtu.hpp"
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
 #include "helpers.hpp"
 #include "tessellate/descriptors.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 using test::entries;

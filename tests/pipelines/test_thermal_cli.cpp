@@ -2,19 +2,18 @@
 // answers: one material (no residual stress, the free expansion), a laminate (the exact
 // layer stresses), and Levin's relation between the effective expansion and the effective
 // stiffness, which holds for any two-phase microstructure.
-#include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <string>
 
-#include "export/vtu.hpp"
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
 #include "helpers.hpp"
 #include "pipelines/laminate.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

@@ -2,7 +2,7 @@
 # ctest: a sweep as a SLURM job array on a one-node cluster started here from Debian's
 # slurm-wlm (scripts/slurm-cluster.sh), with grainmesh installed as `make install` does
 # (cmake --install of the build into a DESTDIR, its bin/ on PATH):
-#   1. README's recipe, run as written, gives the same runs, byte for byte, and the same
+#   1. docs/sweep.md's recipe, run as written, gives the same runs, byte for byte, and the same
 #      summary.csv as the sweep run locally;
 #   2. a task cancelled half way (scancel) and the array submitted again complete the
 #      sweep, and no run finished before the cancel is run again;
@@ -63,19 +63,19 @@ cd "$work"
 { cat "$source_dir/data/default.ini"
   printf '\n[output]\npictures = none\n[sweep]\ntessellation.grains = 30\nphase.matrix.fraction = 0.1, 0.2\nrealisations = 2\n'
 } > sweep.ini
-# README's recipe, its lines between the markers, run as they are written.
-recipe=$(sed -n '/^# the recipe: submit$/,/^# the recipe: end$/p' "$source_dir/README.md" | grep -v '^#')
-[[ -n "$recipe" ]] || fail "README.md has no recipe between '# the recipe: submit' and '# the recipe: end'"
-submitted=$(bash -c "$recipe") || fail "README's recipe failed: $recipe"
+# docs/sweep.md's recipe, its lines between the markers, run as they are written.
+recipe=$(sed -n '/^# the recipe: submit$/,/^# the recipe: end$/p' "$source_dir/docs/sweep.md" | grep -v '^#')
+[[ -n "$recipe" ]] || fail "docs/sweep.md has no recipe between '# the recipe: submit' and '# the recipe: end'"
+submitted=$(bash -c "$recipe") || fail "docs/sweep.md's recipe failed: $recipe"
 job=$(grep -o '[0-9][0-9]*' <<< "$submitted" | tail -1)
-[[ -n "$job" ]] || fail "README's recipe submitted no job: $submitted"
+[[ -n "$job" ]] || fail "docs/sweep.md's recipe submitted no job: $submitted"
 for _ in $(seq 1200); do
   [[ -z "$(squeue -h -j "$job" 2>/dev/null)" ]] && break
   sleep 0.1
 done
-[[ -z "$(squeue -h -j "$job" 2>/dev/null)" ]] || fail "README's array job did not finish in 120 s"
+[[ -z "$(squeue -h -j "$job" 2>/dev/null)" ]] || fail "the recipe's array job did not finish in 120 s"
 out=$(awk '{for (i = 1; i < NF; ++i) if ($i == "sweep.ini") print $(i + 1)}' <<< "$recipe" | head -1)
-[[ -f "$out/summary.csv" ]] || { cat slurm-*.out >&2 2>/dev/null; fail "README's array job wrote no $out/summary.csv"; }
+[[ -f "$out/summary.csv" ]] || { cat slurm-*.out >&2 2>/dev/null; fail "the recipe's array job wrote no $out/summary.csv"; }
 "$GRAINMESH" sweep --collect "$out" > /dev/null
 "$GRAINMESH" sweep sweep.ini -o local --jobs 2 --solve > /dev/null 2>&1
 "$GRAINMESH" sweep --collect local > /dev/null
@@ -92,7 +92,7 @@ for run in local/*-r[0-9][0-9]; do
   runs=$((runs + 1))
 done
 [[ $runs -eq 4 ]] || fail "expected 4 runs, found $runs"
-echo "README's recipe: 4 runs, identical to the local sweep"
+echo "docs/sweep.md's recipe: 4 runs, identical to the local sweep"
 
 # A task cancelled half way: 6 runs in two shards of one core each; shard 2 is cancelled
 # once a run of the sweep is complete, then the array is submitted again.

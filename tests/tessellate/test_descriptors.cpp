@@ -50,8 +50,8 @@ Tessellation grid(int n, int m, double a, double b, Of of) {
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j < m; ++j)
       t.edges.push_back({v(i, j), v(i, j + 1), i > 0 ? region(i - 1, j) : -1, i < n ? region(i, j) : -1});
-  for (int j = 0; j <= m; ++j) t.partners.x.push_back({v(0, j), v(n, j)});
-  for (int i = 0; i <= n; ++i) t.partners.y.push_back({v(i, 0), v(i, m)});
+  for (int j = 0; j <= m; ++j) t.partners.axis[0].push_back({v(0, j), v(n, j)});
+  for (int i = 0; i <= n; ++i) t.partners.axis[1].push_back({v(i, 0), v(i, m)});
   validate(t);
   return t;
 }

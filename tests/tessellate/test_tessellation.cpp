@@ -1,16 +1,16 @@
 // The tessellation stage: the power diagram against brute force, topology on the torus,
 // the cut cell's invariants, regularisation, sharp corners, phases and reproducibility.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <map>
 #include <numbers>
 #include <set>
 
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
-#include "tessellate/steps.hpp"
+#include "tessellate/phases.hpp"
+#include "tessellate/regularise.hpp"
 #include "tessellate/tessellation.hpp"
 #include "tessellate/tessellation_json.hpp"
 
@@ -96,21 +96,21 @@ void check_invariants(const Tessellation& t) {
     bottom += v.y == 0.0 ? 1 : 0;
   }
   if (t.periodic) {
-    CHECK(t.partners.x.size() == left);
-    CHECK(t.partners.y.size() == bottom);
-    for (const auto& [a, b] : t.partners.x) {
+    CHECK(t.partners.axis[0].size() == left);
+    CHECK(t.partners.axis[1].size() == bottom);
+    for (const auto& [a, b] : t.partners.axis[0]) {
       CHECK(t.vertices[a].x == 0.0);
       CHECK(std::abs(t.vertices[b].x - t.vertices[a].x - W) <= tol);
       CHECK(std::abs(t.vertices[b].y - t.vertices[a].y) <= tol);
     }
-    for (const auto& [a, b] : t.partners.y) {
+    for (const auto& [a, b] : t.partners.axis[1]) {
       CHECK(t.vertices[a].y == 0.0);
       CHECK(std::abs(t.vertices[b].y - t.vertices[a].y - H) <= tol);
       CHECK(std::abs(t.vertices[b].x - t.vertices[a].x) <= tol);
     }
   } else {
-    CHECK(t.partners.x.empty());
-    CHECK(t.partners.y.empty());
+    CHECK(t.partners.axis[0].empty());
+    CHECK(t.partners.axis[1].empty());
   }
   // Each grain's area is the sum of its pieces.
   std::vector<double> area(t.grains.size(), 0.0);
@@ -197,7 +197,7 @@ TEST_CASE("cut cells keep every invariant in each mode", "[tessellate]") {
               holes += t.regions[r].rings.size() - 1;
               for (int v : t.regions[r].rings[0]) matrix_of_vertex[v] = static_cast<int>(r);
             }
-            for (const auto* pairs : {&t.partners.x, &t.partners.y})
+            for (const auto* pairs : {&t.partners.axis[0], &t.partners.axis[1]})
               for (const auto& [a, b] : *pairs)
                 if (matrix_of_vertex.count(a) && matrix_of_vertex.count(b))
                   parent[root(matrix_of_vertex[a])] = root(matrix_of_vertex[b]);
@@ -343,7 +343,7 @@ TEST_CASE("tessellation.json reads back bit for bit", "[tessellate]") {
   REQUIRE(back.vertices.size() == t.vertices.size());
   for (std::size_t v = 0; v < t.vertices.size(); ++v) CHECK(back.vertices[v] == t.vertices[v]);
   CHECK(back.regions.size() == t.regions.size());
-  CHECK(back.partners.x == t.partners.x);
+  CHECK(back.partners.axis[0] == t.partners.axis[0]);
   CHECK(tessellation_to_json(back).find("\"regions\"") != std::string::npos);
   CHECK_THROWS_WITH(tessellation_from_json("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
 }
@@ -397,7 +397,7 @@ TEST_CASE("validate refuses grains out of order, regions of another phase and st
   below_outside.edges[0].right = -5;
   CHECK_THROWS_WITH(validate(below_outside), Catch::Contains("edge 0 names a vertex or region that does not exist"));
   Tessellation far_partner = t;
-  far_partner.partners.x.push_back({0, -1});
+  far_partner.partners.axis[0].push_back({0, -1});
   CHECK_THROWS_WITH(validate(far_partner), Catch::Contains("periodic partner names a vertex"));
 }
 

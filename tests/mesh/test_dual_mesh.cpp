@@ -1,8 +1,8 @@
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <set>
+
+#include <catch2/catch.hpp>
 
 #include "common/errors.hpp"
 #include "common/random.hpp"
@@ -66,14 +66,14 @@ void check_dual(const Tessellation& t, const GrainMesh& m, double max_ratio) {
   if (t.periodic) {
     // The carried pairs are exactly the pairs by position of the dual's side points.
     const PeriodicPairs by_position = pair_by_position(d.mesh.points, Box{{0.0, 0.0}, {t.width, t.height}});
-    for (const auto* side : {&d.pairs.x, &d.pairs.y}) {
-      const auto& want = side == &d.pairs.x ? by_position.x : by_position.y;
+    for (const auto* side : {&d.pairs.axis[0], &d.pairs.axis[1]}) {
+      const auto& want = side == &d.pairs.axis[0] ? by_position.axis[0] : by_position.axis[1];
       CHECK(std::set<std::pair<int, int>>(side->begin(), side->end()) ==
             std::set<std::pair<int, int>>(want.begin(), want.end()));
     }
   } else {
-    CHECK(d.pairs.x.empty());
-    CHECK(d.pairs.y.empty());
+    CHECK(d.pairs.axis[0].empty());
+    CHECK(d.pairs.axis[1].empty());
   }
 }
 

@@ -1,4 +1,4 @@
-#include "export/picture.hpp"
+#include "view/picture.hpp"
 
 #include <cairo.h>
 

@@ -1,5 +1,3 @@
-#include "export/picture.hpp"
-
 #include <cairo.h>
 
 #include <array>
@@ -8,6 +6,7 @@
 #include <memory>
 
 #include "common/errors.hpp"
+#include "view/picture.hpp"
 
 namespace grainmesh {
 namespace {

@@ -1,4 +1,4 @@
-#include "export/vtu.hpp"
+#include "view/vtu.hpp"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>

@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include "common/errors.hpp"
-#include "export/picture.hpp"
-#include "export/vtu.hpp"
 #include "helpers.hpp"
+#include "view/picture.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 

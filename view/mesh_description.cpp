@@ -1,4 +1,4 @@
-#include "export/mesh_description.hpp"
+#include "view/mesh_description.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include "common/errors.hpp"
-#include "export/picture.hpp"
 #include "helpers.hpp"
+#include "view/picture.hpp"
 
 using namespace grainmesh;
 

@@ -1,4 +1,4 @@
-#include "export/section.hpp"
+#include "view/section.hpp"
 
 #include <algorithm>
 #include <cmath>

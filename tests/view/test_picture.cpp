@@ -1,14 +1,14 @@
 // What pictures carry besides the mesh: round ticks on colour bars and axes, a scale bar
 // of a round length, the unit's name, and a row under the picture for the key.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <cstdint>
 #include <random>
 
-#include "export/picture.hpp"
+#include <catch2/catch.hpp>
+
 #include "helpers.hpp"
 #include "tessellate/tessellation.hpp"
+#include "view/picture.hpp"
 
 using namespace grainmesh;
 

@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include "export/foam.hpp"
+#include "export/polymesh.hpp"
 #include "mesh/cell_mesh.hpp"
 #include "mesh/tetmesh.hpp"
 #include "mesh/trimesh.hpp"

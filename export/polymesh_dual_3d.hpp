@@ -1,0 +1,29 @@
+// The polyMesh of a 3D mesh's median dual split at grain boundaries (export.cells =
+// polygons).
+#pragma once
+
+#include "export/export_mesh.hpp"
+#include "export/foam_options.hpp"
+#include "export/polymesh_3d.hpp"
+
+namespace grainmesh {
+
+// The median dual of the tetrahedra split at grain boundaries (export.cells = polygons):
+// one cell for each mesh point and grain around it (for each set of the point's
+// tetrahedra of one grain joined through faces), the union of its tetrahedra's corner
+// pieces (each tetrahedron cut through points on its edges, faces and inside: the means
+// of their corners, a point on a phase interface weighted so that its cells' centres on
+// the two sides lie at distances in the ratio sqrt(gamma_soft / gamma_hard), where the
+// compact form's face force across the interface is exact for a laminate; elsewhere the
+// midpoints and centroids). A face between the cells of an edge's two ends runs round the
+// edge; a face between two cells of one point lies in the grain boundary (a quarter of a
+// triangle, plane, so each grain keeps its volume exactly), as does a face on a side of
+// the box; each is one polygon (its ring of corners, and the point or edge point it fans
+// from when the ring is open). Internal faces in OpenFOAM's order, boundary faces patch
+// by patch as build_polymesh_3d (cyclic sides' faces the images of their partners'),
+// zones by add_zones; cells in the order of their points. Throws as build_polymesh_3d,
+// and GeometryError where the dual's faces would not be simple (a grain boundary not
+// manifold at a point).
+FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
+
+}  // namespace grainmesh

@@ -1,0 +1,16 @@
+// What makes a 3D grain mesh right, checked against its tessellation.
+#pragma once
+
+#include "grains3d/grain_mesh_3d.hpp"
+#include "tessellate/tessellation_3d.hpp"
+
+namespace grainmesh {
+
+// The 3D conformity checker: every tetrahedron positive; every triangle of the mesh
+// shared by two tetrahedra, or by one on the box; the tessellation's faces made of
+// triangles with a tetrahedron of each region on their sides; each grain's tetrahedra
+// summing to its volume (1e-9 relative); paired points images across the box (1e-12 of
+// it). Throws GeometryError naming the first violation.
+void check_conformity(const Tessellation3& t, const GrainMesh3& m);
+
+}  // namespace grainmesh
