@@ -29,6 +29,7 @@
 #include "export/kirsch.hpp"
 #include "export/polymesh.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/laminate.hpp"
 #include "pipelines/mesh_command.hpp"

@@ -25,6 +25,8 @@
 #include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/validate.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

@@ -23,6 +23,7 @@
 #include "grains3d/grain_mesh_3d.hpp"
 #include "grains3d/surface_mesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 using namespace grainmesh;
 

@@ -19,6 +19,7 @@
 #include "export/foam_options.hpp"
 #include "export/polymesh.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/run_command.hpp"

@@ -13,6 +13,7 @@
 
 #include "bench/child.hpp"
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellate.hpp"
 
 using namespace grainmesh;
 

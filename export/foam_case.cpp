@@ -10,6 +10,8 @@
 #include "export/foam_file.hpp"
 #include "export/foam_solver.hpp"
 #include "export/pin_translation.hpp"
+#include "export/polymesh_2d.hpp"
+#include "export/polymesh_files.hpp"
 
 namespace grainmesh {
 

@@ -1,4 +1,4 @@
-// OpenFOAM's geometry of a 3D polyMesh (primitiveMesh's face centres and areas, cell
+// OpenFOAM's geometry of a polyMesh (primitiveMesh's face centres and areas, cell
 // centres and volumes), so that what grainmesh computes from a case's fields uses the
 // centres and volumes the solver used.
 #include "export/foam_geometry.hpp"
@@ -6,7 +6,6 @@
 #include <algorithm>
 
 #include "export/polymesh.hpp"
-#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 
@@ -36,8 +35,7 @@ FoamFace foam_face(const PolyMesh& pm, int f) {
   return {S, sum_c / (3.0 * sum_a)};
 }
 
-void foam_cell_geometry(FoamMesh3& m) {
-  const PolyMesh& pm = m.mesh;
+void foam_cell_geometry(const PolyMesh& pm, std::vector<Vec3>& centre, std::vector<double>& volume) {
   const std::size_t cells = static_cast<std::size_t>(pm.cells);
   std::vector<FoamFace> face(static_cast<std::size_t>(pm.faces()));
   for (int f = 0; f < pm.faces(); ++f) face[f] = foam_face(pm, f);
@@ -56,16 +54,16 @@ void foam_cell_geometry(FoamMesh3& m) {
   });
   for (std::size_t c = 0; c < cells; ++c) estimate[c] = estimate[c] / std::max(faces_of[c], 1);
   // Each face's pyramid to the estimate: three times its volume, its centroid.
-  m.centre.assign(cells, Vec3{});
-  m.volume.assign(cells, 0.0);
+  centre.assign(cells, Vec3{});
+  volume.assign(cells, 0.0);
   each_side([&](int f, int c, bool neighbour) {
     const double v3 = dot(face[f].area, face[f].centre - estimate[c]) * (neighbour ? -1.0 : 1.0);
-    m.centre[c] += v3 * (0.75 * face[f].centre + 0.25 * estimate[c]);
-    m.volume[c] += v3;
+    centre[c] += v3 * (0.75 * face[f].centre + 0.25 * estimate[c]);
+    volume[c] += v3;
   });
   for (std::size_t c = 0; c < cells; ++c) {
-    m.centre[c] = m.centre[c] / m.volume[c];
-    m.volume[c] /= 3.0;
+    centre[c] = centre[c] / volume[c];
+    volume[c] /= 3.0;
   }
 }
 

@@ -2,9 +2,10 @@
 // centres, volumes), for 2D and 3D polyMeshes alike.
 #pragma once
 
+#include <vector>
+
 #include "common/vec3.hpp"
 #include "export/polymesh.hpp"
-#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 
@@ -15,8 +16,8 @@ struct FoamFace {
   Vec3 area, centre;
 };
 FoamFace foam_face(const PolyMesh& pm, int face);
-// Each cell's centre and volume as OpenFOAM computes them: pyramids from the mean of the
-// cell's face centres to its faces.
-void foam_cell_geometry(FoamMesh3& m);
+// Each cell's centre (mesh units) and volume (mesh units cubed) as OpenFOAM computes them:
+// pyramids from the mean of the cell's face centres to its faces.
+void foam_cell_geometry(const PolyMesh& pm, std::vector<Vec3>& centre, std::vector<double>& volume);
 
 }  // namespace grainmesh

@@ -1,18 +1,15 @@
-// The polyMesh OpenFOAM reads, built from a 2D mesh (its cells extruded one cell thick)
-// with its patches and zones, and written in ASCII or binary; the 3D builders fill the
-// same type (foam_3d.hpp).
+// The polyMesh OpenFOAM reads, 2D (extruded) and 3D alike: its points, faces, cells,
+// patches and zones. Built by polymesh_2d.hpp and polymesh_3d.hpp (and the dual's
+// polymesh_dual_3d.hpp), written by polymesh_files.hpp.
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/geometry.hpp"
 #include "common/vec3.hpp"
-#include "export/export_mesh.hpp"
 #include "export/foam_material.hpp"
-#include "export/foam_options.hpp"
 
 namespace grainmesh {
 
@@ -46,10 +43,6 @@ struct PolyMesh {
   int faces() const { return static_cast<int>(owner.size()); }
 };
 
-// Builds the polyMesh. Throws ConfigError naming a patch the load needs that has no face
-// (right, left, bottom, and top unless uniaxial), GeometryError when a cyclic side's faces
-// do not pair, or a boundary edge lies on no side while the mesh is to be cyclic.
-PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
 
 // The zones of a built polyMesh (cells in its order, internal faces counted): a cellZone
 // per phase (every cell in exactly one), one per grain when `grain_zones`; faceZones
@@ -58,8 +51,5 @@ PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
 void add_zones(const std::vector<int>& grain, const std::vector<int>& phase, const std::vector<FoamPhase>& phases,
                bool grain_zones, PolyMesh& pm);
 
-// Writes constant/polyMesh (points, faces, owner, neighbour, boundary, cellZones,
-// faceZones) of `pm` into `dir`, ASCII or binary as `options` says.
-void write_polymesh(const std::filesystem::path& dir, const PolyMesh& pm, const FoamOptions& options);
 
 }  // namespace grainmesh

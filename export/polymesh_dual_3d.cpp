@@ -438,7 +438,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
   if (o.cyclic) pin_translation(pm, out.phase, {});
   add_zones(out.grain, out.phase, m.phases, o.grain_zones, pm);
-  foam_cell_geometry(out);
+  foam_cell_geometry(out.mesh, out.centre, out.volume);
   return out;
 }
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "grains/grain_mesh.hpp"
+#include "grains/grain_mesh_options.hpp"
 #include "mesh/cell_mesh.hpp"
 
 namespace grainmesh {

@@ -8,7 +8,7 @@
 
 #include "grains/edge_index.hpp"
 #include "grains/feature_size.hpp"
-#include "grains/grain_mesh.hpp"
+#include "grains/grain_mesh_options.hpp"
 
 namespace grainmesh {
 

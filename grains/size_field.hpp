@@ -3,7 +3,7 @@
 #pragma once
 
 #include "grains/feature_size.hpp"
-#include "grains/grain_mesh.hpp"
+#include "grains/grain_mesh_options.hpp"
 
 namespace grainmesh {
 

@@ -14,7 +14,7 @@
 #include "common/spatial_grid.hpp"
 #include "domain/size_grading.hpp"
 #include "mesh/delaunay.hpp"
-#include "mesh/distmesh.hpp"
+#include "mesh/distmesh_options.hpp"
 #include "mesh/point_set.hpp"
 
 namespace grainmesh::distmesh_detail {

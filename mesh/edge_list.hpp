@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
-#include "mesh/trimesh.hpp"
+#include "mesh/mesh_edge.hpp"
 
 namespace grainmesh::mesh_detail {
 

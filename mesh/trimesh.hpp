@@ -5,20 +5,13 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "mesh/mesh_edge.hpp"
 
 namespace grainmesh {
 
 struct TriMesh {
   std::vector<Vec2> points;                   // #P positions
   std::vector<std::array<int, 3>> triangles;  // #T vertex ids into points, counter-clockwise
-};
-
-// One edge of a mesh. `left` is the triangle in which the edge runs a -> b
-// counter-clockwise; `right` is the triangle on the other side, or -1 on the boundary
-// (so the boundary's outward normal points to the right of a -> b).
-struct MeshEdge {
-  int a = -1, b = -1;
-  int left = -1, right = -1;
 };
 
 // Every edge once, sorted by (min(a,b), max(a,b)). Throws GeometryError when an edge has

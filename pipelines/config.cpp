@@ -1,8 +1,5 @@
 #include "pipelines/config.hpp"
 
-#include <boost/program_options/options_description.hpp>
-#include <boost/program_options/parsers.hpp>
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -11,6 +8,9 @@
 #include <limits>
 #include <set>
 #include <sstream>
+
+#include <boost/program_options/options_description.hpp>
+#include <boost/program_options/parsers.hpp>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -264,6 +264,24 @@ double read_time_limit(const Config& c) {
   if (!(seconds > 0.0) || !std::isfinite(seconds))
     c.fail(kTimeLimitKey, "must be a positive number of seconds or none, got " + c.text(kTimeLimitKey));
   return seconds;
+}
+
+double positive(const Config& c, const std::string& key) {
+  if (!c.has(key)) c.fail(key, "missing (required)");
+  const double v = c.number(key);
+  if (!(v > 0.0) || !std::isfinite(v)) c.fail(key, "must be positive, got " + c.text(key));
+  return v;
+}
+
+double positive(const Config& c, const std::string& key, double fallback) {
+  const double v = c.number(key, fallback);
+  if (!(v > 0.0)) c.fail(key, "must be positive, got " + c.text(key));
+  return v;
+}
+
+std::string one_of_keys(const Config& c, const std::string& a, const std::string& b) {
+  if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
+  return c.has(b) ? b : a;
 }
 
 }  // namespace grainmesh

@@ -68,6 +68,14 @@ inline constexpr double kDefaultTimeLimitSeconds = 6 * 3600.0;
 // Its value (infinity for "none"). Throws ConfigError naming the key.
 double read_time_limit(const Config& config);
 
+// A key's value that must be a positive number (ConfigError naming the key otherwise):
+// required, or `fallback` when the key is not given.
+double positive(const Config& c, const std::string& key);
+double positive(const Config& c, const std::string& key, double fallback);
+// Of two names for one key (`a`, and the run config's `b`: mesh.size and mesh.h), the one
+// the config gives (a when neither); both given fails naming b.
+std::string one_of_keys(const Config& config, const std::string& a, const std::string& b);
+
 // The dimension of the cell a config describes, decided here and nowhere else: 3 when it
 // sets domain.depth (a W x H x D box), 2 otherwise.
 inline int cell_dimensions(const Config& config) { return config.has("domain.depth") ? 3 : 2; }

@@ -151,6 +151,16 @@ std::vector<std::string> keys_of(unsigned commands) {
   return keys;
 }
 
+const std::vector<std::string>& tessellate_config_keys() {
+  static const std::vector<std::string> keys = keys_of(kTessellateKey);
+  return keys;
+}
+
+const std::vector<std::string>& mesh_config_keys() {
+  static const std::vector<std::string> keys = keys_of(kMeshKey);
+  return keys;
+}
+
 std::string key_reference(unsigned commands) {
   // Sections in the order they first appear, each with all its keys.
   std::vector<std::string> sections;

@@ -33,6 +33,10 @@ const std::vector<ConfigKey>& config_key_table();
 // The keys of the commands in `commands` (any of the bits), in the table's order.
 std::vector<std::string> keys_of(unsigned commands);
 
+// The keys of the tessellate and mesh stages (keys_of(kTessellateKey), of kMeshKey), kept.
+const std::vector<std::string>& tessellate_config_keys();
+const std::vector<std::string>& mesh_config_keys();
+
 // The reference as text: for the commands in `commands`, each key with its default and
 // meaning, a line each, grouped by section.
 std::string key_reference(unsigned commands);

@@ -63,11 +63,6 @@ int bounded_int(const Config& c, const std::string& key, int fallback, int lo, i
   return static_cast<int>(v);
 }
 
-double positive(const Config& c, const std::string& key, double fallback) {
-  const double v = c.number(key, fallback);
-  if (!(v > 0.0)) c.fail(key, "must be positive, got " + c.text(key));
-  return v;
-}
 
 }  // namespace
 

@@ -1,8 +1,6 @@
 // grainmesh: synthetic microstructures to solver-ready meshes.
 // main() is the only place that catches errors: it prints one line and maps the error
 // family to the exit code documented in docs/errors.md.
-#include <boost/program_options.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <boost/program_options.hpp>
+
 #include "common/allocator.hpp"
 #include "common/deadline.hpp"
 #include "common/errors.hpp"
@@ -18,10 +18,10 @@
 #include "pipelines/config.hpp"
 #include "pipelines/config_keys.hpp"
 #include "pipelines/converge_command.hpp"
-#include "pipelines/output_dir.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
+#include "pipelines/output_dir.hpp"
 #include "pipelines/run_command.hpp"
 #include "pipelines/sweep_command.hpp"
 #include "pipelines/tessellate_command.hpp"

@@ -5,7 +5,7 @@
 
 #include "common/format.hpp"
 #include "grains3d/conformity_3d.hpp"
-#include "pipelines/mesh_command.hpp"
+#include "pipelines/config.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "view/picture.hpp"

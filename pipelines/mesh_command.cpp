@@ -21,15 +21,7 @@
 
 namespace grainmesh {
 
-const std::vector<std::string>& mesh_config_keys() {
-  static const std::vector<std::string> keys = keys_of(kMeshKey);
-  return keys;
-}
 
-std::string one_of_keys(const Config& c, const std::string& a, const std::string& b) {
-  if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
-  return c.has(b) ? b : a;
-}
 
 Tessellation read_tessellation_file(const std::filesystem::path& file) {
   return tessellation_from_json(read_text_file(file, "tessellation file"), file.string());

@@ -18,12 +18,7 @@ struct MeshJob {
   int picture_width = 1200;  // pixels
 };
 
-// The keys a mesh config (or --set) may use ("*" is a phase name).
-const std::vector<std::string>& mesh_config_keys();
 
-// Of two names for one key (`a`, and the run config's `b`: mesh.size and mesh.h), the one
-// the config gives (a when neither); both given fails naming b.
-std::string one_of_keys(const Config& config, const std::string& a, const std::string& b);
 
 // Reads and checks the mesh keys against the tessellation they will mesh.
 MeshJob read_mesh_job(const Config& config, const Tessellation& t);

@@ -12,10 +12,6 @@
 
 namespace grainmesh {
 
-// Checks a 3D run config's keys (the 2D-only ones refused, each saying why) and the values
-// that can be checked before tessellating. Throws ConfigError naming the key.
-void check_run_3d_config(const Config& config);
-
 // The config's keys are known (check_keys against run_config_keys()) before this.
 void run_run_3d_command(const Config& config, const std::filesystem::path& out, bool solve, bool quiet, bool summary);
 

@@ -17,6 +17,7 @@
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/answer.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"

@@ -9,7 +9,7 @@
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
-#include "pipelines/run_3d_command.hpp"
+#include "pipelines/tessellate_3d_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 
 namespace grainmesh {
@@ -138,6 +138,59 @@ void check_run_config(const Config& c) {
   read_pictures(c);
   read_tessellate_job(c.subset(tessellate_config_keys()));
   read_run_foam_options(c);
+}
+
+namespace {
+
+// The export, load and solve keys a 3D run takes (beside the tessellation's and the mesh's).
+const std::vector<std::string>& case_keys_3d() {
+  static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
+                                             "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
+                                             "homogenise.boundary", "solve.processes", "output.pictures", "output.cases"};
+  return keys;
+}
+
+// Why a 2D key is refused on 3D cells.
+std::string refused_3d(const std::string& key) {
+  if (key == "export.thickness" || key == "load.plane_stress") return "a 3D cell has no plane to extrude or hold";
+  if (key == "export.cyclic") return "homogenise.boundary = periodic makes the cyclic pairs";
+  if (key == "export.stiffness_interpolation") return "3D cases interpolate the stiffness linearly (harmonic diverges)";
+  if (key == "load.traction") return "3D cases are loaded by load.displacement";
+  return "not available for 3D cells (domain.depth is set)";
+}
+
+}  // namespace
+
+FoamOptions read_foam_options_3d(const Config& c) {
+  std::vector<std::string> keys = export_config_keys();
+  std::erase(keys, std::string("export.cells"));
+  FoamOptions o = read_foam_options(c.subset(keys));
+  const std::string cells = c.has("export.cells") ? c.text("export.cells") : "polyhedra";
+  if (cells != "polyhedra" && cells != "tetrahedra")
+    c.fail("export.cells", "must be polyhedra or tetrahedra on 3D cells, got '" + cells + "'");
+  o.cells = cells == "polyhedra" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
+  o.processes = read_solve_processes(c);
+  o.delta_T = read_delta_T(c);
+  if (read_boundary(c) == Boundary::periodic) {
+    check_periodic_cell(c);
+    if (c.has("load.uniaxial"))
+      c.fail("load.uniaxial", "not with homogenise.boundary = periodic, whose load cases are macroscopic strains");
+    o.cyclic = true;
+  }
+  return o;
+}
+
+void check_run_3d_config(const Config& c) {
+  // A 3D run's keys: the tessellation's, the mesh's and the case's.
+  std::vector<std::string> keys = tessellate_config_keys();
+  keys.insert(keys.end(), mesh_config_keys().begin(), mesh_config_keys().end());
+  keys.insert(keys.end(), case_keys_3d().begin(), case_keys_3d().end());
+  const Config taken = c.subset(keys);
+  for (const auto& [key, value] : c.entries())
+    if (!taken.has(key)) c.fail(key, refused_3d(key));
+  read_foam_options_3d(c);
+  read_pictures(c);
+  read_tessellate_3d_job(c.subset(tessellate_config_keys()));
 }
 
 }  // namespace grainmesh

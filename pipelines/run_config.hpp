@@ -69,4 +69,12 @@ std::string config_fingerprint(const Config& config);
 // but the mesh keys that depend on the tessellation). Throws ConfigError naming the key.
 void check_run_config(const Config& config);
 
+// The case options of a 3D run: export.cells is polyhedra (the tetrahedra's dual, the
+// default: its solves converge) or tetrahedra; periodic homogenisation makes the case
+// cyclic. Throws ConfigError naming the key.
+FoamOptions read_foam_options_3d(const Config& config);
+// Checks a 3D run config's keys (the 2D-only ones refused, each saying why) and the values
+// that can be checked before tessellating. Throws ConfigError naming the key.
+void check_run_3d_config(const Config& config);
+
 }  // namespace grainmesh

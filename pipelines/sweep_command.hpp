@@ -13,14 +13,9 @@
 #include <vector>
 
 #include "pipelines/config.hpp"
+#include "pipelines/sweep_plan.hpp"
 
 namespace grainmesh {
-
-struct SweepOptions {
-  int jobs = 1;            // runs at a time
-  int shard = 1, shards = 1;  // run the runs whose index % shards == shard - 1
-  bool solve = false;
-};
 
 void run_sweep_command(const Config& config, const std::filesystem::path& dir, const SweepOptions& options);
 // Writes DIR/summary.csv and its plots from the runs there. `left_out_warnings`: the runs

@@ -14,9 +14,15 @@
 
 #include "pipelines/config.hpp"
 #include "pipelines/report.hpp"
-#include "pipelines/sweep_command.hpp"
 
 namespace grainmesh {
+
+// How a sweep runs: its runs at a time, its shard, whether it solves.
+struct SweepOptions {
+  int jobs = 1;            // runs at a time
+  int shard = 1, shards = 1;  // run the runs whose index % shards == shard - 1
+  bool solve = false;
+};
 
 // One run of the plan: its directory's name (run_name), its point (index into the plan's
 // points, in list order) and realisation, its seed, the overrides of the base config that

@@ -9,13 +9,15 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "domain/shape_parser.hpp"
+#include "pipelines/cell_config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
-#include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
 #include "view/picture.hpp"
 #include "view/section.hpp"
 #include "view/vtu.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 namespace grainmesh {
 

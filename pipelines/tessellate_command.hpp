@@ -20,22 +20,6 @@ struct TessellateJob {
   int picture_width = 1200;  // pixels
 };
 
-// The keys a tessellation config may use ("*" is a phase name).
-const std::vector<std::string>& tessellate_config_keys();
-
-// A key's value that must be a positive number (ConfigError naming the key otherwise).
-double positive(const Config& c, const std::string& key);
-// The diagram's keys shared by 2D and 3D: tessellation.lloyd_iterations, .size_cv,
-// .min_edge (default `min_edge`) and .arrangement.
-struct DiagramSettings {
-  int lloyd_iterations = 0;
-  double size_cv = 0.0;
-  double min_edge = 0.0;
-  Arrangement arrangement = Arrangement::random;
-};
-DiagramSettings read_diagram_settings(const Config& c, double min_edge);
-// The [phase.NAME] sections: fractions (one may be rest), E, nu, alpha.
-std::vector<Phase> read_phases(const Config& c);
 
 // Reads and checks a tessellation config. Throws ConfigError naming the key.
 TessellateJob read_tessellate_job(const Config& config);

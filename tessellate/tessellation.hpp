@@ -126,16 +126,6 @@ struct Tessellation {
   TessellationStats stats;
 };
 
-// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) power
-// diagram, relaxes, regularises, assigns phases, chooses the window and cuts it. Throws
-// ConfigError for options that cannot be met (fractions, unreachable matrix fraction),
-// TimeLimitError when the deadline passes, GeometryError otherwise.
-Tessellation tessellate(const TessellationOptions& options, Rng& rng);
-
-// Invariants a bug could break: areas, ring orientation and simplicity, edge sides,
-// partner positions. Throws GeometryError naming the first violation.
-void validate(const Tessellation& t);
-
 // The side of the cell [0, W] x [0, H] the segment ab runs along, else kNoSide. Exact:
 // points on a side carry its coordinate.
 CellSide cell_side(const Tessellation& t, Vec2 a, Vec2 b);

@@ -93,17 +93,6 @@ struct Tessellation3 {
   Vec3 size() const { return {width, height, depth}; }
 };
 
-// Draws N seeds from `rng` (or takes the given ones), builds the (periodic) Laguerre
-// diagram, relaxes it, places the box on the torus clear of the diagram's vertices, cuts
-// it exactly, collapses short edges (regularise_3d.hpp) and assigns phases by volume. Throws ConfigError for options that
-// cannot be met, TimeLimitError when the deadline passes, GeometryError otherwise.
-Tessellation3 tessellate_3d(const Tessellation3Options& options, Rng& rng);
-
-// Invariants a bug could break: region volumes sum to W H D, every face between two
-// regions or on the box, each region closed and outward oriented, partners exact.
-// Throws GeometryError naming the first violation.
-void validate(const Tessellation3& t);
-
 // The interior dihedral angle (radians, in (0, 2 pi)) of a solid at an edge through
 // `on_edge` between faces A and B with outward unit normals n_a and n_b, `off_b` a point of
 // B off the edge: pi minus the normals' angle where B bends in behind A's plane, pi plus
@@ -122,5 +111,8 @@ std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& rin
 // Volume of a region (its faces as stored) and area of a face.
 double region_volume(const Tessellation3& t, const Region3& r);
 double face_area(const Tessellation3& t, const Face3& f);
+
+// Newell's normal of a ring of vertex ids, of length twice its area.
+Vec3 ring_normal(const std::vector<Vec3>& p, const std::vector<int>& ring);
 
 }  // namespace grainmesh

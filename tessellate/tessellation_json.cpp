@@ -9,6 +9,8 @@
 #include "common/errors.hpp"
 #include "common/json_error.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/validate.hpp"
+#include "tessellate/validate_3d.hpp"
 
 namespace grainmesh {
 

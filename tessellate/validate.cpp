@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/ring.hpp"
-#include "tessellate/tessellation.hpp"
+#include "tessellate/validate.hpp"
 
 namespace grainmesh {
 

@@ -5,7 +5,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "tessellate/tessellation_3d.hpp"
+#include "tessellate/validate_3d.hpp"
 
 namespace grainmesh {
 
@@ -15,19 +15,6 @@ namespace {
 
 }  // namespace
 
-std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& ring) {
-  const Vec3 box = t.size();
-  for (int a = 0; a < 3; ++a) {
-    bool low = true, high = true;
-    for (int id : ring) {
-      low = low && t.vertices[id][a] == 0.0;
-      high = high && t.vertices[id][a] == box[a];
-    }
-    if (low) return {a, 0};
-    if (high) return {a, 1};
-  }
-  return {-1, 0};
-}
 
 void validate(const Tessellation3& t) {
   const int nr = static_cast<int>(t.regions.size());

@@ -14,6 +14,7 @@
 #include "helpers.hpp"
 #include "pipelines/laminate.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

@@ -16,6 +16,7 @@
 #include "grains/grain_mesh.hpp"
 #include "helpers.hpp"
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellate.hpp"
 
 using namespace grainmesh;
 

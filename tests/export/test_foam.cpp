@@ -27,6 +27,9 @@
 #include "kirsch.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/domain_command.hpp"
+#include "export/polymesh_2d.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/validate.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

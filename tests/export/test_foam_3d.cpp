@@ -17,6 +17,8 @@
 #include "helpers.hpp"
 #include "tessellate/tessellation_3d.hpp"
 #include "view/vtu.hpp"
+#include "export/polymesh_files.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;

@@ -1,5 +1,3 @@
-#include "fuzz/fuzz_targets.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,15 +7,19 @@
 
 #include "common/errors.hpp"
 #include "common/predicates.hpp"
+#include "domain/polygon.hpp"
+#include "fuzz/fuzz_targets.hpp"
 #include "grains/conformity.hpp"
 #include "grains/grain_mesh.hpp"
-#include "domain/polygon.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/validate.hpp"
 
 namespace grainmesh::fuzz {
 

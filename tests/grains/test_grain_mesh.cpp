@@ -15,6 +15,7 @@
 #include "grains/size_field.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/corner_bound.hpp"
+#include "tessellate/tessellate.hpp"
 
 using namespace grainmesh;
 

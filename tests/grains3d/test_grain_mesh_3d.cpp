@@ -9,6 +9,7 @@
 #include "grains3d/grain_mesh_3d.hpp"
 #include "mesh/tetmesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 using namespace grainmesh;
 

@@ -11,6 +11,7 @@
 #include "grains3d/improve_tets.hpp"
 #include "mesh/tetmesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
 
 using namespace grainmesh;
 

@@ -9,6 +9,7 @@
 #include "grains/grain_mesh.hpp"
 #include "mesh/dual_mesh.hpp"
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellate.hpp"
 
 using namespace grainmesh;
 

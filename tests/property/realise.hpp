@@ -9,8 +9,10 @@
 #include "grains/conformity.hpp"
 #include "grains/grain_mesh.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/config_keys.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/tessellate_command.hpp"
+#include "tessellate/validate.hpp"
 
 namespace grainmesh::test {
 

@@ -8,6 +8,8 @@
 
 #include "tessellate/bent_face.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
+#include "tessellate/validate_3d.hpp"
 
 using namespace grainmesh;
 

@@ -14,6 +14,8 @@
 #include "tessellate/descriptors.hpp"
 #include "tessellate/tessellation.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/validate.hpp"
 
 using namespace grainmesh;
 

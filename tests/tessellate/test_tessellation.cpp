@@ -13,6 +13,8 @@
 #include "tessellate/regularise.hpp"
 #include "tessellate/tessellation.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/validate.hpp"
 
 using namespace grainmesh;
 

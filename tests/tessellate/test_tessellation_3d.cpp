@@ -12,6 +12,8 @@
 
 #include "common/errors.hpp"
 #include "tessellate/tessellation_3d.hpp"
+#include "tessellate/tessellate_3d.hpp"
+#include "tessellate/validate_3d.hpp"
 
 using namespace grainmesh;
 

@@ -9,6 +9,7 @@
 #include "helpers.hpp"
 #include "tessellate/tessellation.hpp"
 #include "view/picture.hpp"
+#include "tessellate/tessellate.hpp"
 
 using namespace grainmesh;
 

@@ -1,0 +1,78 @@
+#include "pipelines/cell_config.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "common/format.hpp"
+#include "pipelines/material_units.hpp"
+
+namespace grainmesh {
+
+DiagramSettings read_diagram_settings(const Config& c, double min_edge) {
+  DiagramSettings d;
+  const long long lloyd = c.integer("tessellation.lloyd_iterations", 0);
+  if (lloyd < 0 || lloyd > 10000) c.fail("tessellation.lloyd_iterations", "must be between 0 and 10000");
+  d.lloyd_iterations = static_cast<int>(lloyd);
+  d.size_cv = c.number("tessellation.size_cv", 0.0);
+  if (!(d.size_cv >= 0.0 && d.size_cv <= 5.0)) c.fail("tessellation.size_cv", "must lie in [0, 5]");
+  d.min_edge = c.number("tessellation.min_edge", min_edge);
+  if (!(d.min_edge >= 0.0 && d.min_edge < 1.0)) c.fail("tessellation.min_edge", "must lie in [0, 1)");
+  const std::string arr = c.optional_text("tessellation.arrangement").value_or("random");
+  if (arr == "random") d.arrangement = Arrangement::random;
+  else if (arr == "dispersed") d.arrangement = Arrangement::dispersed;
+  else if (arr == "clustered") d.arrangement = Arrangement::clustered;
+  else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
+  return d;
+}
+
+std::vector<Phase> read_phases(const Config& c) {
+  const std::vector<std::string> names = c.names_in("phase");
+  if (names.empty()) c.fail("phase.*.fraction", "no phase given: add a section [phase.NAME] with fraction, E and nu");
+  // A section without a fraction is most often a misspelt phase ([phase.Matrix]).
+  std::string defined;
+  for (const auto& name : names)
+    if (c.has("phase." + name + ".fraction")) defined += (defined.empty() ? "" : ", ") + name;
+  std::vector<Phase> phases;
+  double sum = 0.0;
+  int rests = 0;
+  for (const auto& name : names) {
+    const std::string key = "phase." + name + ".";
+    Phase p;
+    p.name = name;
+    if (!c.has(key + "fraction")) {
+      std::string given;  // the key that brought the name in
+      for (const auto& [k, v] : c.entries())
+        if (given.empty() && k.rfind(key, 0) == 0) given = k;
+      c.fail(given, "unknown phase '" + name + "' (" + (defined.empty() ? "no phase has a fraction" : "phases: " + defined) +
+                        "); a new phase needs " + key + "fraction, " + key + "E and " + key + "nu");
+    }
+    if (c.text(key + "fraction") == "rest") {
+      p.rest = true;
+      ++rests;
+      if (rests > 1) c.fail(key + "fraction", "only one phase may take the rest");
+    } else {
+      p.fraction = c.number(key + "fraction");
+      if (!(p.fraction > 0.0 && p.fraction <= 1.0)) c.fail(key + "fraction", "must lie in (0, 1] or be rest, got " + c.text(key + "fraction"));
+      sum += p.fraction;
+    }
+    p.youngs_modulus = positive(c, key + "E");
+    check_modulus_unit(c, key + "E", p.youngs_modulus);
+    if (!c.has(key + "nu")) c.fail(key + "nu", "missing (required)");
+    p.poisson_ratio = c.number(key + "nu");
+    if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) c.fail(key + "nu", "must lie in (-1, 0.5), got " + c.text(key + "nu"));
+    if (c.has(key + "alpha")) {
+      p.alpha = c.number(key + "alpha");
+      if (!std::isfinite(*p.alpha)) c.fail(key + "alpha", "must be a finite number (1/K), got " + c.text(key + "alpha"));
+      check_expansion_unit(c, key + "alpha", *p.alpha);
+    }
+    phases.push_back(p);
+  }
+  const std::string last = "phase." + names.back() + ".fraction";
+  if (rests == 0 && std::abs(sum - 1.0) > 1e-9)
+    c.fail(last, "the phase fractions sum to " + to_text(sum) + ", not 1 (or let one phase take the rest)");
+  if (rests == 1 && sum >= 1.0 - 1e-12)
+    c.fail(last, "the phase fractions sum to " + to_text(sum) + ", leaving nothing for the rest phase");
+  return phases;
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,403 @@
+// tessellate_3d(): seeds -> Laguerre diagram -> Lloyd -> window -> exact cut -> phases,
+// the regions' shared faces and periodic partners, and the statistics of the result.
+#include "tessellate/tessellate_3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "tessellate/laguerre_3d.hpp"
+#include "tessellate/phases.hpp"
+#include "tessellate/radii.hpp"
+#include "tessellate/regularise.hpp"
+#include "tessellate/regularise_3d.hpp"
+#include "tessellate/validate_3d.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+void check_options(const Tessellation3Options& o) {
+  if (!(o.width > 0.0) || !(o.height > 0.0) || !(o.depth > 0.0))
+    throw ConfigError("box width, height and depth must be positive");
+  if (o.grains < 1) throw ConfigError("the number of grains must be at least 1");
+  if (!o.seeds.empty() && static_cast<int>(o.seeds.size()) != o.grains)
+    throw ConfigError("the number of grains must equal the number of given seeds");
+  const Vec3 box{o.width, o.height, o.depth};
+  for (const Vec3& s : o.seeds)
+    for (int a = 0; a < 3; ++a) {
+      // A bounded box's seed on a side would be its own mirror image.
+      const bool inside = o.periodic ? s[a] >= 0.0 && s[a] <= box[a] : s[a] > 0.0 && s[a] < box[a];
+      if (!inside) throw ConfigError("seed (" + to_text(s.x) + ", " + to_text(s.y) + ", " + to_text(s.z) + ") lies " +
+                                     (o.periodic ? "outside" : "outside or on a side of") + " the box");
+    }
+  if (o.phases.empty()) throw ConfigError("at least one phase is needed");
+}
+
+double reduce(double v, double period) {
+  const double r = v - std::floor(v / period) * period;
+  return r >= period ? 0.0 : r;  // v just below 0 rounds up to the period
+}
+
+// Seeds (drawn from `rng`, in (0, 1) of the box so none lies on a side, or the given
+// ones) and their Laguerre weights: radii scaled so their spheres would fill half the
+// box, squared; all 0 for a Voronoi diagram.
+void draw_seeds(const Tessellation3Options& o, Rng& rng, std::vector<Vec3>& seeds, std::vector<double>& weights) {
+  const Vec3 box{o.width, o.height, o.depth};
+  seeds = o.seeds;
+  if (seeds.empty()) {
+    seeds.resize(o.grains);
+    for (Vec3& s : seeds)
+      for (int a = 0; a < 3; ++a) s[a] = (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53 * box[a];
+  } else if (o.periodic) {
+    for (Vec3& s : seeds)
+      for (int a = 0; a < 3; ++a) s[a] = reduce(s[a], box[a]);
+  }
+  weights.assign(o.grains, 0.0);
+  if (o.size_cv > 0.0) {
+    const std::vector<double> radii = lognormal_radii(o.grains, o.size_cv, rng);
+    double spheres = 0.0;
+    for (double r : radii) spheres += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    const double scale = std::cbrt(0.5 * o.width * o.height * o.depth / spheres);
+    for (int i = 0; i < o.grains; ++i) weights[i] = radii[i] * scale * radii[i] * scale;
+  }
+}
+
+// The `count` widest gaps between the values `c` on a circle of length `period`: their
+// middles and half-widths, widest first.
+std::vector<std::pair<double, double>> widest_gaps(std::vector<double> c, double period, int count) {
+  std::vector<std::pair<double, double>> gaps;  // half-width, middle
+  if (c.empty()) return {{0.5 * period, 0.0}};
+  for (double& v : c) v = reduce(v, period);
+  std::sort(c.begin(), c.end());
+  gaps.emplace_back(0.5 * (c.front() + period - c.back()), reduce(c.back() + 0.5 * (c.front() + period - c.back()), period));
+  for (std::size_t k = 1; k < c.size(); ++k) gaps.emplace_back(0.5 * (c[k] - c[k - 1]), 0.5 * (c[k] + c[k - 1]));
+  std::sort(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  gaps.resize(std::min<std::size_t>(gaps.size(), count));
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [half, middle] : gaps) out.emplace_back(middle, half);
+  return out;
+}
+
+// How near the diagram's edges come to the box's edge lines (where two sides meet) with
+// the box at `origin`: the smallest distance from an edge to a line along axis c through
+// (origin[a], origin[b]) and its periodic images. An edge passing a line that closely is
+// cut by both sides into a piece about that short.
+double line_clearance(const std::vector<std::pair<Vec3, Vec3>>& edges, Vec3 origin, Vec3 box) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3; ++c) {
+    const int a = (c + 1) % 3, b = (c + 2) % 3;
+    for (const auto& [p, q] : edges) {
+      // The edge projected along c, shifted by whole periods so its start lies in
+      // [0, box[a]) x [0, box[b]) about the line through the origin.
+      const Vec2 u0{p[a] - origin[a], p[b] - origin[b]};
+      const Vec2 shift{-std::floor(u0.x / box[a]) * box[a], -std::floor(u0.y / box[b]) * box[b]};
+      const Vec2 u = u0 + shift, w = Vec2{q[a] - origin[a], q[b] - origin[b]} + shift;
+      for (int i = -1; i <= 2; ++i)
+        for (int j = -1; j <= 2; ++j)
+          best = std::min(best, std::sqrt(segment_distance2({i * box[a], j * box[b]}, u, w)));
+    }
+  }
+  return best;
+}
+
+// Where the box's sides go on the torus: of the widest gaps between the diagram's
+// vertices along each axis (so no side passes near a vertex), the combination whose edge
+// lines the diagram's edges pass furthest from.
+Vec3 window_origin(const CellMoments& m, Vec3 box) {
+  constexpr int kCandidates = 4;  // per axis
+  std::array<std::vector<std::pair<double, double>>, 3> gaps;
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double> c;
+    for (const Vec3& v : m.vertices) c.push_back(v[a]);
+    gaps[a] = widest_gaps(std::move(c), box[a], kCandidates);
+  }
+  Vec3 best{};
+  double best_score = -1.0;
+  for (const auto& [x, hx] : gaps[0])
+    for (const auto& [y, hy] : gaps[1])
+      for (const auto& [z, hz] : gaps[2]) {
+        const Vec3 origin{x, y, z};
+        const double score = std::min({hx, hy, hz, line_clearance(m.edges, origin, box)});
+        if (score > best_score) {
+          best_score = score;
+          best = origin;
+        }
+      }
+  return best;
+}
+
+void mean_std(const std::vector<double>& v, double* mean, double* sd) {
+  double s = 0.0, s2 = 0.0;
+  for (double x : v) s += x;
+  *mean = v.empty() ? 0.0 : s / static_cast<double>(v.size());
+  for (double x : v) s2 += (x - *mean) * (x - *mean);
+  *sd = v.size() > 1 ? std::sqrt(s2 / static_cast<double>(v.size() - 1)) : 0.0;
+}
+
+// The regions and their shared faces from the cut pieces: a face met twice (the second
+// time reversed) lies between two regions, a face met once on the box.
+void assemble(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tessellation3& t) {
+  t.vertices = cut.vertices;
+  std::map<std::vector<int>, int> by_key;
+  for (const BoxPiece& piece : cut.pieces) {
+    const int r = static_cast<int>(t.regions.size());
+    const int g = grain_of_seed[piece.seed];
+    Region3 region{.grain = g, .phase = t.grains[g].phase, .faces = {}, .volume = 0.0};
+    for (const auto& ring : piece.faces) {
+      std::vector<int> key = ring;
+      std::sort(key.begin(), key.end());
+      const auto [it, added] = by_key.emplace(std::move(key), static_cast<int>(t.faces.size()));
+      if (added) {
+        t.faces.push_back({.ring = ring, .back = r, .front = -1});
+      } else {
+        Face3& f = t.faces[it->second];
+        if (f.front >= 0) throw GeometryError("3D cut: a face is shared by three regions");
+        f.front = r;
+      }
+      region.faces.push_back(it->second);
+    }
+    t.regions.push_back(std::move(region));
+  }
+}
+
+// Each vertex on a low side of the box with the vertex at its position plus the box's
+// edge; GeometryError naming a side vertex without its image.
+PeriodicPairs box_partners(const Tessellation3& t) {
+  PeriodicPairs pairs;
+  const Vec3 box = t.size();
+  for (int a = 0; a < 3; ++a) {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    std::map<std::pair<double, double>, int> high;
+    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id)
+      if (t.vertices[id][a] == box[a]) high.emplace(std::pair{t.vertices[id][u], t.vertices[id][v]}, id);
+    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id) {
+      if (t.vertices[id][a] != 0.0) continue;
+      const auto it = high.find({t.vertices[id][u], t.vertices[id][v]});
+      if (it == high.end())
+        throw GeometryError("3D cut: vertex " + std::to_string(id) + " on a side of the box has no periodic image");
+      pairs.axis[a].emplace_back(id, it->second);
+    }
+    if (pairs.axis[a].size() != high.size())
+      throw GeometryError("3D cut: a vertex on a high side of the box has no periodic image");
+  }
+  return pairs;
+}
+
+// Areas shared between grains, per pair of phases: what contiguity is made of. Faces on
+// the box count once through their low-side copy, paired with the high-side face.
+std::vector<double> phase_boundary_areas(const Tessellation3& t) {
+  const int np = static_cast<int>(t.phases.size());
+  std::vector<double> area(static_cast<std::size_t>(np * np), 0.0);
+  auto add = [&](int ga, int gb, double a) {
+    if (ga == gb) return;  // a grain's boundary with its own periodic image is no boundary
+    area[t.grains[ga].phase * np + t.grains[gb].phase] += a;
+    area[t.grains[gb].phase * np + t.grains[ga].phase] += a;
+  };
+  std::map<std::vector<int>, int> high_faces;  // high-side box face by its sorted ring
+  for (int f = 0; f < static_cast<int>(t.faces.size()); ++f) {
+    const Face3& face = t.faces[f];
+    if (face.front >= 0) {
+      add(t.regions[face.back].grain, t.regions[face.front].grain, face_area(t, face));
+      continue;
+    }
+    std::vector<int> key = face.ring;
+    std::sort(key.begin(), key.end());
+    high_faces.emplace(std::move(key), f);
+  }
+  if (!t.periodic) return area;
+  for (int a = 0; a < 3; ++a) {
+    std::map<int, int> image(t.partners.axis[a].begin(), t.partners.axis[a].end());
+    for (const Face3& face : t.faces) {
+      if (face.front >= 0 || box_side(t, face.ring) != std::pair{a, 0}) continue;
+      std::vector<int> key;
+      for (int id : face.ring) key.push_back(image.at(id));
+      std::sort(key.begin(), key.end());
+      const auto it = high_faces.find(key);
+      if (it == high_faces.end()) throw GeometryError("3D cut: a face on a side of the box has no periodic image");
+      add(t.regions[face.back].grain, t.regions[t.faces[it->second].back].grain, face_area(t, face));
+    }
+  }
+  return area;
+}
+
+// The shortest edge, smallest face and sharpest interior dihedral angle (radians) of the
+// regions.
+struct Extremes {
+  double shortest_edge = std::numeric_limits<double>::infinity();
+  double smallest_face = std::numeric_limits<double>::infinity();
+  double sharpest_dihedral = std::numbers::pi;
+};
+Extremes extremes(const Tessellation3& t) {
+  Extremes x;
+  for (const Face3& f : t.faces) {
+    x.smallest_face = std::min(x.smallest_face, face_area(t, f));
+    for (std::size_t k = 0; k < f.ring.size(); ++k)
+      x.shortest_edge = std::min(x.shortest_edge, norm(t.vertices[f.ring[k]] - t.vertices[f.ring[(k + 1) % f.ring.size()]]));
+  }
+  // The interior dihedral angle of each region at each edge of its faces (a reflex one
+  // by how far it falls short of a full turn).
+  for (int r = 0; r < static_cast<int>(t.regions.size()); ++r) {
+    std::map<std::pair<int, int>, std::pair<Vec3, Vec3>> first;  // normal, a point off the edge
+    for (int f : t.regions[r].faces) {
+      const Face3& face = t.faces[f];
+      Vec3 n = ring_normal(t.vertices, face.ring), c{};
+      n = (face.back == r ? 1.0 : -1.0) * (n / norm(n));
+      for (int v : face.ring) c += t.vertices[v];
+      c = c / static_cast<double>(face.ring.size());
+      for (std::size_t k = 0; k < face.ring.size(); ++k) {
+        const int a = face.ring[k], b = face.ring[(k + 1) % face.ring.size()];
+        const auto [it, added] = first.emplace(std::minmax(a, b), std::pair{n, c});
+        if (added) continue;
+        const double angle = interior_dihedral(it->second.first, n, c, t.vertices[a]);
+        x.sharpest_dihedral = std::min({x.sharpest_dihedral, angle, 2.0 * std::numbers::pi - angle});
+      }
+    }
+  }
+  return x;
+}
+
+void measure(Tessellation3& t) {
+  Tessellation3Stats& st = t.stats;
+  st.grains = static_cast<int>(t.grains.size());
+  std::vector<double> volumes, diameters;
+  double faces = 0.0, neighbours = 0.0;
+  for (const Grain3& g : t.grains) {
+    volumes.push_back(g.volume);
+    diameters.push_back(std::cbrt(6.0 * g.volume / std::numbers::pi));
+    faces += g.faces;
+    neighbours += static_cast<double>(g.neighbours.size());
+  }
+  mean_std(volumes, &st.volume_mean, &st.volume_std);
+  mean_std(diameters, &st.diameter_mean, &st.diameter_std);
+  st.faces_per_grain_mean = faces / st.grains;
+  st.neighbours_mean = neighbours / st.grains;
+
+  const Extremes x = extremes(t);
+  st.shortest_edge = x.shortest_edge;
+  st.smallest_face = x.smallest_face;
+  st.sharpest_dihedral_deg = x.sharpest_dihedral * 180.0 / std::numbers::pi;
+
+  const int np = static_cast<int>(t.phases.size());
+  const double total = t.width * t.height * t.depth;
+  const std::vector<double> shared = phase_boundary_areas(t);
+  st.phases.assign(np, {});
+  for (int p = 0; p < np; ++p) st.phases[p].target_fraction = target_fraction(t.phases, p);
+  for (const Grain3& g : t.grains) {
+    st.phases[g.phase].achieved_fraction += g.volume / total;
+    ++st.phases[g.phase].grains;
+  }
+  for (int p = 0; p < np; ++p) {
+    double own = 0.0, other = 0.0;
+    for (int q = 0; q < np; ++q) (q == p ? own : other) += shared[p * np + q];
+    own *= 0.5;  // counted from both grains
+    PhaseStats& s = st.phases[p];
+    s.contiguity = own + other > 0.0 ? 2.0 * own / (2.0 * own + other) : std::nan("");
+    s.intercept_length = std::nan("");  // not measured in 3D
+    s.mean_free_path = std::nan("");
+  }
+}
+
+// Lloyd's relaxation of `seeds` (o.lloyd_iterations steps, each seed to its cell's
+// centroid); the moments of the diagram it leaves.
+CellMoments relax(const Tessellation3Options& o, const std::vector<double>& weights, std::vector<Vec3>& seeds) {
+  const Vec3 box{o.width, o.height, o.depth};
+  CellMoments m = laguerre_moments(seeds, weights, box, o.periodic);
+  for (int it = 0; it < o.lloyd_iterations; ++it) {
+    if (o.deadline.passed()) o.deadline.check("after " + std::to_string(it) + " Lloyd iterations");
+    for (int i = 0; i < o.grains; ++i) {
+      // A move below a trillionth of the box is rounding, not relaxation: a lattice of
+      // seeds (cells that meet eight at a vertex) stays exactly one, where rounding would
+      // leave vertices a rounding apart that no double can tell apart.
+      if (m.volume[i] <= 0.0 || norm(m.centroid[i] - seeds[i]) < 1e-12 * norm(box)) continue;
+      seeds[i] = m.centroid[i];
+      if (o.periodic)
+        for (int a = 0; a < 3; ++a) seeds[i][a] = reduce(seeds[i][a], box[a]);
+    }
+    m = laguerre_moments(seeds, weights, box, o.periodic);
+  }
+  return m;
+}
+
+}  // namespace
+
+
+
+Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
+  check_options(o);
+  const Vec3 box{o.width, o.height, o.depth};
+  std::vector<Vec3> seeds;
+  std::vector<double> weights;
+  draw_seeds(o, rng, seeds, weights);
+  const CellMoments m = relax(o, weights, seeds);
+
+  Tessellation3 t;
+  t.width = o.width;
+  t.height = o.height;
+  t.depth = o.depth;
+  t.periodic = o.periodic;
+  t.phases = o.phases;
+  if (o.periodic) {
+    const Vec3 origin = window_origin(m, box);
+    for (Vec3& s : seeds)
+      for (int a = 0; a < 3; ++a) s[a] = reduce(s[a] - origin[a], box[a]);
+    t.stats.window_origin = origin;
+  }
+  const LaguerreCut cut = laguerre_box_cut(seeds, weights, box, o.periodic);
+
+  // Grains: the seeds with a cell, numbered in seed order.
+  std::vector<int> grain_of_seed(o.grains, -1), seed_of_grain;
+  for (int i = 0; i < o.grains; ++i)
+    if (cut.cell_faces[i] > 0) {
+      grain_of_seed[i] = static_cast<int>(seed_of_grain.size());
+      seed_of_grain.push_back(i);
+    }
+  t.stats.removed_grains = o.grains - static_cast<int>(seed_of_grain.size());
+  for (int g = 0; g < static_cast<int>(seed_of_grain.size()); ++g) {
+    const int i = seed_of_grain[g];
+    Grain3 grain{.id = g, .phase = 0, .seed = seeds[i], .volume = 0.0, .faces = cut.cell_faces[i], .neighbours = {}};
+    for (int j : cut.neighbours[i]) grain.neighbours.push_back(grain_of_seed[j]);
+    t.grains.push_back(std::move(grain));
+  }
+  assemble(cut, grain_of_seed, t);
+  {
+    const Extremes before = extremes(t);
+    Tessellation3Stats& st = t.stats;
+    st.shortest_edge_before = before.shortest_edge;
+    st.sharpest_dihedral_before_deg = before.sharpest_dihedral * 180.0 / std::numbers::pi;
+    const double diameter = std::cbrt(6.0 * o.width * o.height * o.depth / (std::numbers::pi * static_cast<double>(t.grains.size())));
+    st.edge_threshold = o.min_edge * diameter;
+    const Regularisation done = collapse_short_edges(t, st.edge_threshold);
+    st.collapsed_edges = done.collapsed_edges;
+    st.removed_regions = done.removed_regions;
+  }
+  // Phases by volume, from the pieces' volumes (known before the labels are).
+  for (Region3& r : t.regions) {
+    r.volume = region_volume(t, r);
+    t.grains[r.grain].volume += r.volume;
+  }
+  std::vector<double> volumes;
+  std::vector<std::vector<int>> neighbours;
+  for (const Grain3& g : t.grains) {
+    volumes.push_back(g.volume);
+    neighbours.push_back(g.neighbours);
+  }
+  std::vector<int> all(o.phases.size());
+  for (int p = 0; p < static_cast<int>(all.size()); ++p) all[p] = p;
+  const std::vector<int> label = assign_phases(volumes, neighbours, o.phases, all, o.width * o.height * o.depth,
+                                               o.arrangement, rng);
+  for (Grain3& g : t.grains) g.phase = label[g.id];
+  for (Region3& r : t.regions) r.phase = t.grains[r.grain].phase;
+  if (o.periodic) t.partners = box_partners(t);
+  measure(t);
+  validate(t);
+  return t;
+}
+
+}  // namespace grainmesh
