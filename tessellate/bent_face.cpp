@@ -23,11 +23,6 @@ double smallest_angle(Vec3 a, Vec3 b, Vec3 c) {
   return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
 }
 
-// A centre fan's triangles lean at most this far from the face (cosine of 10 degrees):
-// a face bent a little gives a fan bent a little, and the region's dihedral angles at the
-// face's edges stay about what they were.
-constexpr double kFanCosine = 0.98480775301;
-
 // The ring's centroid and unit Newell normal; a zero normal for a degenerate ring.
 std::pair<Vec3, Vec3> centre_and_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
   const int n = static_cast<int>(ring.size());
