@@ -210,23 +210,33 @@ void write_case_files(const std::filesystem::path& dir, const FoamCell& cell, co
   write_text(dir / "case.foam", "");
 }
 
-PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
-  check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);
-  const PolyMesh pm = build_polymesh(m, o);
-  write_foam_case(dir, m, pm, o);
-  return pm;
-}
+namespace {
 
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
-                     const std::filesystem::path& polymesh_from) {
-  const FoamCell cell = foam_cell(m);
-  check_case(cell, m.grain, m.phase, m.mesh.cells(), o);
+// The case files of a checked 2D case around its built polyMesh: each cell's centroid from
+// the cell's low corner, the fields, properties and dictionaries.
+void write_checked_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
+                        const std::filesystem::path& polymesh_from) {
   std::vector<Vec3> centroid(m.mesh.cells());
   for (std::size_t t = 0; t < centroid.size(); ++t) {
     const Vec2 c = cell_centroid(m.mesh, t) - m.cell.lo;
     centroid[t] = {c.x, c.y, 0.0};
   }
-  write_case_files(dir, cell, m.phase, centroid, pm, o, polymesh_from);
+  write_case_files(dir, foam_cell(m), m.phase, centroid, pm, o, polymesh_from);
+}
+
+}  // namespace
+
+PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+  check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);
+  const PolyMesh pm = build_polymesh(m, o);
+  write_checked_case(dir, m, pm, o, {});
+  return pm;
+}
+
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
+                     const std::filesystem::path& polymesh_from) {
+  check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);  // each load case's own load
+  write_checked_case(dir, m, pm, o, polymesh_from);
 }
 
 }  // namespace grainmesh
