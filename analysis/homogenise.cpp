@@ -140,15 +140,4 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
   return h;
 }
 
-EngineeringConstants engineering_constants(const Stiffness<3>& c) {
-  const Stiffness<3> s = inverse(c);
-  return {.E_x = 1 / s[0][0],
-          .E_y = 1 / s[1][1],
-          .nu_xy = -s[1][0] / s[0][0],
-          .nu_yx = -s[0][1] / s[1][1],
-          .G_xy = 1 / s[2][2],
-          .anisotropy_normal = std::abs(c[0][0] - c[1][1]) / (c[0][0] + c[1][1]),
-          .anisotropy_shear = 2 * c[2][2] / (c[0][0] - c[0][1])};
-}
-
 }  // namespace grainmesh

@@ -94,14 +94,5 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline = {},
                                    const std::vector<std::filesystem::path>& cases_shown_as = {});
 
-// Engineering constants of an in-plane stiffness (from its compliance S = C^-1): E_x =
-// 1 / S11, E_y = 1 / S22, nu_xy = -S21 / S11, nu_yx = -S12 / S22, G_xy = 1 / S66; and
-// the anisotropy measures normal = |C11 - C22| / (C11 + C22), shear = 2 C66 / (C11 - C12)
-// (1 when isotropic).
-struct EngineeringConstants {
-  double E_x, E_y, nu_xy, nu_yx, G_xy;
-  double anisotropy_normal, anisotropy_shear;
-};
-EngineeringConstants engineering_constants(const Stiffness<3>& c);
 
 }  // namespace grainmesh

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/phase_statistics_3d.hpp"
+#include "analysis/phase_statistics.hpp"
 #include "analysis/traction.hpp"
 #include "common/errors.hpp"
 #include "common/side_by_side.hpp"
@@ -145,24 +145,6 @@ Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& 
   r.strain_xx = load_strain(foam_cell(m), o);
   r.modulus = r.sigma_xx / r.strain_xx;
   return r;
-}
-
-EngineeringConstants3 engineering_constants_3d(const Stiffness<6>& c) {
-  const Stiffness<6> s = inverse(c);
-  // The tensor's own Reuss averages, from its compliance.
-  const double K_R = 1.0 / (s[0][0] + s[1][1] + s[2][2] + 2 * (s[0][1] + s[0][2] + s[1][2]));
-  const double G_R =
-      15.0 / (4 * (s[0][0] + s[1][1] + s[2][2]) - 4 * (s[0][1] + s[0][2] + s[1][2]) + 3 * (s[3][3] + s[4][4] + s[5][5]));
-  return {.E_x = 1 / s[0][0],
-          .E_y = 1 / s[1][1],
-          .E_z = 1 / s[2][2],
-          .G_yz = 1 / s[3][3],
-          .G_xz = 1 / s[4][4],
-          .G_xy = 1 / s[5][5],
-          .nu_xy = -s[1][0] / s[0][0],
-          .nu_xz = -s[2][0] / s[0][0],
-          .nu_yz = -s[2][1] / s[1][1],
-          .universal_anisotropy = 5 * shear_modulus(c) / G_R + bulk_modulus(c) / K_R - 6};
 }
 
 }  // namespace grainmesh

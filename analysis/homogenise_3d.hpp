@@ -76,14 +76,5 @@ Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& 
                       const FoamOptions& o, const Deadline& deadline = {},
                       const std::filesystem::path& case_shown_as = {});
 
-// Engineering constants of a 3D stiffness from its compliance S = C^-1: E_i = 1 / S_ii,
-// G_yz = 1 / S44, G_xz = 1 / S55, G_xy = 1 / S66, nu_ij = -S_ji / S_ii; and the universal
-// anisotropy index A^U = 5 G_V / G_R + K_V / K_R - 6 of the tensor's own Voigt (C) and
-// Reuss (S) averages, 0 exactly when isotropic (Ranganathan and Ostoja-Starzewski, 2008).
-struct EngineeringConstants3 {
-  double E_x, E_y, E_z, G_yz, G_xz, G_xy, nu_xy, nu_xz, nu_yz;
-  double universal_anisotropy;
-};
-EngineeringConstants3 engineering_constants_3d(const Stiffness<6>& c);
 
 }  // namespace grainmesh

@@ -34,43 +34,48 @@ Distribution distribution(const std::vector<double>& values, const std::vector<d
   return d;
 }
 
-std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& states, const CellMesh& mesh,
-                                          const std::vector<int>& phase, int phases, int loaded_component,
-                                          const std::vector<StressState>* balanced) {
-  auto loaded = [&](const StressState& s) {
-    return loaded_component == 0 ? s.xx : loaded_component == 1 ? s.yy : loaded_component == 2 ? s.xy : 0.0;
-  };
+std::vector<double> phase_volume_fractions(const std::vector<double>& weight, const std::vector<int>& phase, int phases) {
+  std::vector<double> f(static_cast<std::size_t>(phases), 0.0);
+  double total = 0.0;
+  for (std::size_t c = 0; c < weight.size(); ++c) {
+    f[static_cast<std::size_t>(phase[c])] += weight[c];
+    total += weight[c];
+  }
+  for (double& x : f) x /= total;
+  return f;
+}
+
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressTensor>& stress, const std::vector<double>& weight,
+                                          const std::vector<int>& phase, int phases, int loaded,
+                                          const std::vector<StressTensor>* balanced) {
   std::vector<PhaseStresses> out(static_cast<std::size_t>(phases));
   std::vector<std::vector<double>> weights(out.size()), mises(out.size()), principal(out.size()), pressure(out.size());
-  double total_area = 0.0, cell_loaded = 0.0;
-  for (std::size_t k = 0; k < states.size(); ++k) {
-    const double a = cell_area(mesh, k);
-    const StressState& s = states[k];
-    const std::size_t p = static_cast<std::size_t>(phase[k]);
-    PhaseStresses& ps = out[p];
-    ps.area_fraction += a;
-    // The in-plane mean from the balanced stresses where given; zz is the cells' own.
-    const StressState& b = balanced ? (*balanced)[k] : s;
-    ps.mean.xx += a * b.xx, ps.mean.yy += a * b.yy, ps.mean.zz += a * s.zz, ps.mean.xy += a * b.xy;
-    weights[p].push_back(a);
+  std::vector<double> phase_weight(out.size(), 0.0);
+  double total = 0.0, cell_loaded = 0.0;
+  for (std::size_t c = 0; c < stress.size(); ++c) {
+    const double w = weight[c];
+    const StressTensor& s = stress[c];
+    const StressTensor& b = balanced ? (*balanced)[c] : s;
+    const std::size_t p = static_cast<std::size_t>(phase[c]);
+    phase_weight[p] += w;
+    for (std::size_t i = 0; i < 6; ++i) out[p].mean[i] += w * b[i];
+    weights[p].push_back(w);
     mises[p].push_back(von_mises(s));
     principal[p].push_back(largest_principal(s));
     pressure[p].push_back(hydrostatic(s));
-    total_area += a;
-    cell_loaded += a * loaded(b);
+    total += w;
+    if (loaded >= 0) cell_loaded += w * b[static_cast<std::size_t>(loaded)];
   }
-  const double cell_mean = cell_loaded / total_area;
+  const double cell_mean = cell_loaded / total;
   for (std::size_t p = 0; p < out.size(); ++p) {
     PhaseStresses& ps = out[p];
-    if (ps.area_fraction > 0.0) {
-      ps.mean.xx /= ps.area_fraction, ps.mean.yy /= ps.area_fraction, ps.mean.zz /= ps.area_fraction;
-      ps.mean.xy /= ps.area_fraction;
-    }
-    ps.area_fraction /= total_area;
+    if (phase_weight[p] > 0.0)
+      for (double& m : ps.mean) m /= phase_weight[p];
+    ps.volume_fraction = phase_weight[p] / total;
     ps.von_mises = distribution(mises[p], weights[p]);
     ps.max_principal = distribution(principal[p], weights[p]);
     ps.hydrostatic = distribution(pressure[p], weights[p]);
-    ps.partition = cell_mean != 0.0 ? loaded(ps.mean) / cell_mean : 0.0;
+    if (loaded >= 0) ps.partition = cell_mean != 0.0 ? ps.mean[static_cast<std::size_t>(loaded)] / cell_mean : 0.0;
   }
   return out;
 }

@@ -1,9 +1,11 @@
-// Where the stress is: per phase, the area-weighted mean stress tensor and the
-// distributions of the von Mises, largest principal and hydrostatic stresses over the
-// phase's cells (area-weighted: a cell counts by its share of the phase's area), and the
-// stress partition, the phase's mean of the loaded component over the cell's.
+// Where the stress is, in 2D and 3D alike: per phase, its share of the cell, the
+// weighted mean stress tensor and the distributions of the von Mises, largest principal
+// and hydrostatic stresses over the phase's cells (each cell weighted by its area in 2D,
+// its volume in 3D: by its share of the phase), and the stress partition, the phase's mean
+// of the loaded component over the cell's.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,20 +22,23 @@ struct Distribution {
 Distribution distribution(const std::vector<double>& values, const std::vector<double>& weights);
 
 struct PhaseStresses {
-  double area_fraction = 0.0;
-  StressState mean;  // area-weighted mean tensor
+  double volume_fraction = 0.0;  // the phase's share of the weights (the area in 2D)
+  StressTensor mean{};           // weighted mean tensor, Pa
   Distribution von_mises, max_principal, hydrostatic;
-  double partition = 0.0;  // the phase's mean of the loaded component over the cell's mean
+  std::optional<double> partition;  // the phase's mean of the loaded component over the cell's
 };
 
-// Per phase (phase[t] of triangle t, `phases` of them), from the cells' stresses; the
-// loaded component of the load case: 0 xx, 1 yy, 2 xy, -1 none (the partition then 0).
-// With `balanced` stresses (the face forces' virial, DiscreteTraction::virial_stress), the
-// in-plane mean tensor and the partition are theirs: the phases' means then add up,
-// area-weighted, to the cell's mean stress exactly.
-std::vector<PhaseStresses> phase_stresses(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
-                                          const std::vector<int>& phase, int phases, int loaded_component,
-                                          const std::vector<StressState>* balanced = nullptr);
+// Each phase's share of the cells' weights (areas or volumes; `phases` of them).
+std::vector<double> phase_volume_fractions(const std::vector<double>& weight, const std::vector<int>& phase, int phases);
+
+// Per phase (phase[c] of cell c, `phases` of them), from the cells' stresses and weights;
+// `loaded` the Voigt index of the load case's loaded component (0 xx ... 5 xy), or -1 for
+// none (no partition then). With `balanced` stresses (the face forces' virial,
+// DiscreteTraction) the mean tensors and the partition are theirs: the phases' means then
+// add up, weighted, to the cell's mean stress exactly; the distributions stay the cells'.
+std::vector<PhaseStresses> phase_stresses(const std::vector<StressTensor>& stress, const std::vector<double>& weight,
+                                          const std::vector<int>& phase, int phases, int loaded = -1,
+                                          const std::vector<StressTensor>* balanced = nullptr);
 
 // Each phase's weighted histogram of one value per cell (`weights` their areas or
 // volumes): `bins` equal bins over the range of all cells, each point (the bin's centre,

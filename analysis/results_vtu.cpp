@@ -1,6 +1,5 @@
 #include "analysis/results_vtu.hpp"
 
-#include "analysis/phase_statistics_3d.hpp"
 #include "analysis/stress_measures.hpp"
 #include "view/picture.hpp"
 #include "view/vtu.hpp"
@@ -46,7 +45,7 @@ void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
     for (std::size_t c = 0; c < f->stress.size(); ++c) {
       const double* s = f->stress[c];  // OpenFOAM's xx xy xz yy yz zz into VTK's xx yy zz xy yz xz
       for (const int k : {0, 3, 5, 1, 4, 2}) stress.push_back(s[k]);
-      mises.push_back(von_mises_3d(s));
+      mises.push_back(von_mises(openfoam_stress(s)));
     }
     fields.push_back({"displacement" + suffix, in_mesh_units(f->displacement, metres_per_unit), 3});
     fields.push_back({"stress" + suffix, std::move(stress), 6});

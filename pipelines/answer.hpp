@@ -31,35 +31,6 @@ struct Answer {
 // The case directory of a periodic load case: case_xx, case_yy, case_xy.
 std::string periodic_case_dir(const LoadCase& c);
 
-// A solve in report.json: corrections, residuals, the result's time directory (relative
-// to `dir`), OpenFOAM's steps' seconds.
-Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
-// What a bound is judged to: relative rounding (1e-6), or the answer's own measured error
-// when larger (a periodic tensor's symmetry error: a cell of two phases a hundredth apart
-// lies between bounds closer together than its discretisation error).
-double bounds_tolerance(double measured_error = 0.0);
-// A bound broken by `value` (above it when `above`) by more than `tolerance` (relative), as
-// a warning; nothing when it holds.
-std::optional<std::string> outside(const std::string& what, double value, double bound, const std::string& name,
-                                   bool above, double tolerance = bounds_tolerance());
-// Whether the stiffness lies between the Reuss and Voigt tensors, in `effective`
-// (inside_bounds.voigt_reuss); outside, a warning pointing to `see`.
-void note_voigt_reuss(bool inside, Json& effective, std::vector<std::string>& warnings, const std::string& see);
-// Hashin-Shtrikman's bounds on the bulk and shear moduli K and G beside them in
-// `effective` (hashin_shtrikman, inside_bounds.hashin_shtrikman); a broken one a warning
-// ending in (`why`).
-struct ModuliBounds {
-  double bulk_lower, bulk_upper, shear_lower, shear_upper;
-};
-void check_hashin_shtrikman(double K, double G, const ModuliBounds& bounds, Json& effective,
-                            std::vector<std::string>& warnings, const std::string& why, double tolerance);
-// How far an effective expansion lies from Levin's exact relation: the largest difference
-// of a component over Levin's largest; over 1 % a warning ending in (`advice`).
-double levin_difference(const std::vector<double>& expansion, const std::vector<double>& levin,
-                        std::vector<std::string>& warnings, const std::string& advice);
-// A distribution in report.json: mean, std, p50, p90, p99, max.
-Json distribution_json(const Distribution& d);
-
 // OpenFOAM's checkMesh on the run's first case in `dir` (report["case"] names the cases,
 // which share one mesh) before it is solved: report.json's mesh_check {case,
 // failed_checks, failures}, and a failed check a warning (check_mesh.hpp).

@@ -13,6 +13,7 @@
 #include "common/format.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/report_read.hpp"
 #include "pipelines/run_command.hpp"
 #include "view/picture.hpp"
 
@@ -34,7 +35,7 @@ std::vector<std::pair<std::string, double>> quantities(const Json& effective, in
             {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};
   std::vector<std::pair<std::string, double>> q;
   for (const char* c : dimensions == 3 ? std::vector<const char*>{"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}
-                             : std::vector<const char*>{"C11", "C22", "C12", "C21", "C66"})
+                             : std::vector<const char*>{"C11", "C22", "C12", "C66"})
     q.emplace_back(c, effective.at("stiffness").at(c).get<double>());
   return q;
 }
@@ -98,7 +99,7 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       staged.keep_as_failed();
       throw SolveError(what);
     }
-    const Json report = Json::parse(read_text_file(dir / name / "report.json"));
+    const Json report = read_report(dir / name / "report.json");
     const auto q = quantities(report.at("effective"), l.dimensions);
     if (names.empty()) {
       for (const auto& [qn, v] : q) names.push_back(qn);

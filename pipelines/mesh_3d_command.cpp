@@ -133,7 +133,7 @@ void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& te
   const GrainMesh3 m = run_mesh_3d_job(t, job);
   Warnings warnings;
   StagedOutput staged(out, "mesh");
-  Json report{{"tessellation", tessellation.string()}};
+  Json report{{"dimensions", 3}, {"tessellation", tessellation.string()}};
   report.update(write_mesh_3d_files(staged.dir(), t, m, job, warnings, true, {}));
   report["seconds"] = m.seconds;
   add_time_limit(report, job.options.deadline);

@@ -156,6 +156,7 @@ void run_mesh_command(const std::filesystem::path& tessellation, const Config& c
   StagedOutput staged(out, "mesh");
   write_mesh_files(staged.dir(), t, m, job.picture_width);
   Json report;
+  report["dimensions"] = 2;
   report["tessellation"] = tessellation.string();
   report["points"] = m.mesh.points.size();
   report["triangles"] = m.mesh.triangles.size();

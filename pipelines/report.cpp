@@ -35,9 +35,9 @@ void Warnings::add(const std::string& warning) {
 }
 
 void write_report(const StagedOutput& out, Json report, const Warnings& warnings) {
-  Json ordered{{kReportCommand, out.kind()}};
+  Json ordered{{kReportCommand, out.kind()}, {"schema", kReportSchema}};
   for (auto& [key, value] : report.items())
-    if (key != kReportCommand) ordered[key] = std::move(value);
+    if (key != kReportCommand && key != "schema") ordered[key] = std::move(value);
   ordered["warnings"] = warnings.all();
   std::vector<std::string> files = entry_names(out.dir());
   files.push_back("report.json");

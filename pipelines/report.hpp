@@ -16,6 +16,10 @@ namespace grainmesh {
 // JSON objects keep their keys in insertion order, so reports read top-down.
 using Json = nlohmann::ordered_json;
 
+// The version of report.json's layout this grainmesh writes ("schema", second), described
+// by docs/report.schema.json. Reports without one were written before it (schema 1).
+inline constexpr int kReportSchema = 2;
+
 // Peak resident memory of this process so far, in MiB.
 double peak_memory_mib();
 
@@ -41,7 +45,7 @@ class Warnings {
 };
 
 // Writes `report` as the staged output's report.json, last: with "command" (the output's
-// kind) first, then "warnings" and "files" (every entry of the directory) at the end.
+// kind) and "schema" first, then "warnings" and "files" (every entry of the directory) at the end.
 void write_report(const StagedOutput& out, Json report, const Warnings& warnings = {});
 
 }  // namespace grainmesh

@@ -134,7 +134,11 @@ Json run_report(const Config& c, const RunPlan& plan, const Tessellation& t, con
                 bool solve) {
   Json report{{"config", c.source()},
               {"config_fingerprint", config_fingerprint(c)},
+              {"dimensions", 2},
               {"seed", plan.tess_job.seed},
+              {"width", t.width},
+              {"height", t.height},
+              {"periodic", t.periodic},
               {"grains", t.stats.grains},
               {"phases", phases_json(t)},
               {"statistics", descriptors_json(t)},
@@ -222,9 +226,9 @@ void print_summary(const std::filesystem::path& out, const Tessellation& t, cons
                 report["effective"]["load_cases"].size(), report["effective"]["corrections"].get<int>());
     if (plan.foam.delta_T != 0.0) {
       const Json& a = report["effective"]["thermal_expansion"];
-      std::printf("  thermal (%s): free in-plane expansion a11 %.4g, a22 %.4g 1/K%s; residual stresses in report.json "
+      std::printf("  thermal (%s): free in-plane expansion %.4g, %.4g 1/K (xx, yy)%s; residual stresses in report.json "
                   "(stresses.thermal)\n",
-                  plan.foam.plane_stress ? "plane stress" : "plane strain", a["a11"].get<double>(), a["a22"].get<double>(),
+                  plan.foam.plane_stress ? "plane stress" : "plane strain", a["xx"].get<double>(), a["yy"].get<double>(),
                   plan.foam.plane_stress ? "" : " (held out of plane: not a 3D expansion, see docs/run.md)");
     }
   }

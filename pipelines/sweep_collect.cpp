@@ -10,6 +10,7 @@
 #include "export/foam_options.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/report_read.hpp"
 #include "pipelines/sweep_command.hpp"
 #include "pipelines/sweep_plan.hpp"
 #include "view/picture.hpp"
@@ -37,14 +38,15 @@ constexpr double kT975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.
 using TensorQuantities = std::vector<std::pair<std::string, std::string>>;
 const TensorQuantities& tensor_quantities(int dimensions) {
   static const TensorQuantities two{
-      {"stiffness", "C11"},  {"stiffness", "C22"},  {"stiffness", "C12"},    {"stiffness", "C21"},
-      {"stiffness", "C66"},  {"stiffness", "C16"},  {"stiffness", "C26"},    {"engineering", "E_x"},
-      {"engineering", "E_y"}, {"engineering", "nu_xy"}, {"engineering", "nu_yx"}, {"engineering", "G_xy"}};
+      {"stiffness", "C11"},  {"stiffness", "C22"},  {"stiffness", "C12"},    {"stiffness", "C66"},
+      {"stiffness", "C16"},  {"stiffness", "C26"},  {"engineering", "E_x"},
+      {"engineering", "E_y"}, {"engineering", "nu_xy"}, {"engineering", "nu_yx"}, {"engineering", "G_xy"},
+      {"anisotropy", "universal"}};
   static const TensorQuantities three{
       {"stiffness", "C11"},   {"stiffness", "C22"},   {"stiffness", "C33"},   {"stiffness", "C12"},
       {"stiffness", "C13"},   {"stiffness", "C23"},   {"stiffness", "C44"},   {"stiffness", "C55"},
       {"stiffness", "C66"},   {"engineering", "E_x"}, {"engineering", "E_y"}, {"engineering", "E_z"},
-      {"engineering", "G_xy"}, {"engineering", "nu_xy"}, {"engineering", "universal_anisotropy"}};
+      {"engineering", "G_xy"}, {"engineering", "nu_xy"}, {"anisotropy", "universal"}};
   return dimensions == 3 ? three : two;
 }
 
@@ -117,7 +119,7 @@ struct PointRuns {
   std::vector<std::vector<double>> tensor;  // per tensor_quantities
   // Per-run numbers summarised per point, by column name: the WC-Co descriptors (e.g.
   // contiguity_WC), the phase stresses (e.g. mixed_WC_mean_xx, mixed_WC_von_mises_p99,
-  // thermal_Co_mean_yy) and the thermal expansion (thermal_expansion_a11; in 3D _xx ...).
+  // thermal_Co_mean_yy) and the thermal expansion (thermal_expansion_xx, ...).
   std::map<std::string, std::vector<double>> extras;
   double voigt = NAN, reuss = NAN, hs_lo = NAN, hs_hi = NAN, cells = 0.0, q_min = 1.0;
   std::vector<double> achieved;  // the swept phase's achieved fraction, per run
@@ -140,8 +142,7 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
       if (std::find(pr.warnings.begin(), pr.warnings.end(), w.get<std::string>()) == pr.warnings.end())
         pr.warnings.push_back(w.get<std::string>());
   }
-  // A 2D run's phases in its report's top level, a 3D run's in its statistics.
-  for (const Json& phase : j.contains("phases") ? j["phases"] : j["statistics"]["phases"]) {
+  for (const Json& phase : j["phases"]) {
     if (!x_phase.empty() && phase["name"] == x_phase) pr.achieved.push_back(phase["achieved_fraction"].get<double>());
     add("achieved_fraction_" + phase["name"].get<std::string>(), phase["achieved_fraction"]);
   }
@@ -165,11 +166,7 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
   const Json& e = j["effective"];
   if (e.contains("thermal_expansion")) {
     // A 2D run's in-plane components, a 3D run's six.
-    const Json& a = e["thermal_expansion"];
-    const std::vector<std::string> components =
-        a.contains("a11") ? std::vector<std::string>{"a11", "a22", "a12"}
-                          : std::vector<std::string>{"xx", "yy", "zz", "yz", "xz", "xy"};
-    for (const std::string& c : components) add("thermal_expansion_" + c, a[c]);
+    for (const auto& [c, value] : e["thermal_expansion"].items()) add("thermal_expansion_" + c, value);
   }
   if (e.contains("stiffness")) {
     for (std::size_t q = 0; q < tensor.size(); ++q) pr.tensor[q].push_back(e[tensor[q].first][tensor[q].second].get<double>());
@@ -209,7 +206,7 @@ PointRuns read_point_runs(const std::filesystem::path& dir, const CollectedPlan&
           .push_back(name);
       continue;
     }
-    add_run(read_json(dir / name / "report.json"), x_phase, tensor, pr, names);
+    add_run(read_report(dir / name / "report.json"), x_phase, tensor, pr, names);
   }
   return pr;
 }
@@ -319,7 +316,10 @@ std::string summary_csv(const std::vector<CsvRow>& rows, const std::vector<std::
   csv += "runs,modulus_mean,modulus_std,modulus_ci95,voigt,reuss,hs_lower,hs_upper,cells_mean,q_min";
   // Without periodic runs the tensor's columns are left out.
   if (tensor)
-    for (const auto& [group, q] : *tensor) csv.append(",").append(q).append("_mean,").append(q).append("_std,").append(q).append("_ci95");
+    for (const auto& [group, q] : *tensor) {
+      const std::string c = group == "anisotropy" ? q + "_anisotropy" : q;  // universal_anisotropy
+      csv.append(",").append(c).append("_mean,").append(c).append("_std,").append(c).append("_ci95");
+    }
   for (const std::string& name : extra_names) csv += "," + name + "_mean," + name + "_std," + name + "_ci95";
   csv += ",plane_state,runs_with_warnings,warnings\n";
   for (const CsvRow& row : rows) {
@@ -378,7 +378,7 @@ void collect_sweep(const std::filesystem::path& dir, bool left_out_warnings) {
   auto answer_plot = [&](const std::string& name) -> std::pair<std::string, double> {
     if (name == "bulk_modulus") return {"effective bulk modulus K (GPa)", 1e9};
     if (name == "shear_modulus") return {"effective shear modulus G (GPa)", 1e9};
-    if (name == "thermal_expansion_a11" || name == "thermal_expansion_xx") return {"free thermal expansion, xx (1e-6 / K)", 1e-6};
+    if (name == "thermal_expansion_xx") return {"free thermal expansion, xx (1e-6 / K)", 1e-6};
     if (name.rfind("thermal_", 0) == 0 && name.size() > 8 && name.compare(name.size() - 8, 8, "_mean_xx") == 0)
       return {"residual stress, " + name.substr(8, name.size() - 16) + " mean xx (MPa)", 1e6};
     return {};

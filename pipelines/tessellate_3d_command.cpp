@@ -152,13 +152,19 @@ Json write_tessellation_3d_files(const std::filesystem::path& dir, const Tessell
                    "); another output.section may be");
     }
   }
-  return {{"seed", job.seed},
+  // The phases at the top, as in 2D; the rest of tessellation.json's statistics beside them.
+  Json statistics = statistics_json(t.stats, t.phases);
+  Json phases = std::move(statistics["phases"]);
+  statistics.erase("phases");
+  return {{"dimensions", 3},
+          {"seed", job.seed},
           {"width", t.width},
           {"height", t.height},
           {"depth", t.depth},
           {"periodic", t.periodic},
           {"grains", t.stats.grains},
-          {"statistics", statistics_json(t.stats, t.phases)},
+          {"phases", phases},
+          {"statistics", statistics},
           {"section_z", z},
           {"vertices", t.vertices.size()},
           {"faces", t.faces.size()},

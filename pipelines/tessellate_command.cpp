@@ -221,6 +221,7 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   const TessellationStats& s = t.stats;
   Json report;
   report["config"] = c.source();
+  report["dimensions"] = 2;
   report["seed"] = job.seed;
   report["width"] = t.width;
   report["height"] = t.height;

@@ -14,6 +14,7 @@ packages=(
   libtbb-dev                            # parallel loops
   libcairo2-dev                         # pictures
   nlohmann-json3-dev                    # reports
+  python3-jsonschema                    # the tests check every report against docs/report.schema.json
   openfoam                              # checkMesh and solidDisplacementFoam in the tests (Open MPI with it)
   tetgen                                # fills 3D grains with tetrahedra (a program: Debian has no library)
   slurm-wlm                             # a one-node SLURM cluster for the sweep's job-array test

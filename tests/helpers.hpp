@@ -24,6 +24,30 @@ namespace grainmesh::test {
 std::filesystem::path source_dir();
 const char* grainmesh_binary();
 
+// Where the tests' reports are collected for the schema check that runs after them all
+// (ctest's reports_match_schema): test-reports/ beside the grainmesh under test.
+inline std::filesystem::path collected_reports_dir() {
+  return std::filesystem::path(grainmesh_binary()).parent_path() / "test-reports";
+}
+
+// Copies every report.json under `dir` into collected_reports_dir(), each under a name of
+// its own (`tag`, the process, a count, its path under `dir`).
+inline void collect_reports(const std::filesystem::path& dir, const std::string& tag) {
+  static int copied = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->path().filename() != "report.json" || !it->is_regular_file(ec)) continue;
+    std::string name = std::filesystem::relative(it->path().parent_path(), dir, ec).string();
+    std::replace(name.begin(), name.end(), '/', '_');
+    std::filesystem::create_directories(collected_reports_dir(), ec);
+    std::filesystem::copy_file(it->path(),
+                               collected_reports_dir() / (tag + "-" + std::to_string(::getpid()) + "-" +
+                                                          std::to_string(copied++) + "-" + name + ".json"),
+                               std::filesystem::copy_options::overwrite_existing, ec);
+  }
+}
+
 // The directory of a sweep's run of point `point` (its index in plan.json's points, in the
 // lists' order) and realisation `realisation`, as the sweep's plan.json names it.
 inline std::filesystem::path sweep_run(const std::filesystem::path& sweep, std::size_t point, int realisation) {
@@ -49,19 +73,23 @@ inline std::filesystem::path example(const std::string& name) {
   return source_dir() / "data" / "examples" / (name + ".ini");
 }
 
-// A fresh empty directory, removed when the test ends.
+// A fresh empty directory, removed when the test ends (its reports collected first).
 class ScratchDir {
  public:
-  explicit ScratchDir(const std::string& tag) {
+  explicit ScratchDir(const std::string& tag) : tag_(tag) {
     path_ = std::filesystem::temp_directory_path() /
             ("grainmesh-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
+  // Its reports collected for the schema check first.
   ~ScratchDir() {
+    collect_reports(path_, tag_);
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
   }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
@@ -70,6 +98,7 @@ class ScratchDir {
     static int c = 0;
     return c;
   }
+  std::string tag_;
   std::filesystem::path path_;
 };
 

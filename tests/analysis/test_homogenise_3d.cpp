@@ -255,27 +255,3 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
   CHECK(shear_modulus(C) > *b.shear_lower);
   CHECK(shear_modulus(C) < (kTetsPerGrain >= 3200 ? 1.0 : 1.015) * *b.shear_upper);
 }
-
-TEST_CASE("3D engineering constants: the isotropic tensor's own, and the universal anisotropy index of a cubic one",
-          "[homogenise]") {
-  const FoamPhase carbide{"WC", 700e9, 0.24};
-  const EngineeringConstants3 iso = engineering_constants_3d(isotropic_stiffness<6>(carbide));
-  const double mu = carbide.youngs_modulus / (2 * (1 + carbide.poisson_ratio));
-  for (double E : {iso.E_x, iso.E_y, iso.E_z}) CHECK(E == Approx(carbide.youngs_modulus).epsilon(1e-12));
-  for (double G : {iso.G_yz, iso.G_xz, iso.G_xy}) CHECK(G == Approx(mu).epsilon(1e-12));
-  for (double nu : {iso.nu_xy, iso.nu_xz, iso.nu_yz}) CHECK(nu == Approx(carbide.poisson_ratio).epsilon(1e-12));
-  CHECK(std::abs(iso.universal_anisotropy) < 1e-12);
-  // Cubic, C11 = 250, C12 = 100, C44 = 100 GPa: Zener's A = 2 C44 / (C11 - C12) = 4/3,
-  // and A^U = 6/5 (sqrt(A) - 1/sqrt(A))^2 = 6/5 (A + 1/A - 2) = 0.1 exactly.
-  Stiffness<6> cubic{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) cubic[i][j] = i == j ? 250e9 : 100e9;
-    cubic[3 + i][3 + i] = 100e9;
-  }
-  const EngineeringConstants3 c = engineering_constants_3d(cubic);
-  CHECK(c.universal_anisotropy == Approx(0.1).epsilon(1e-12));
-  // E = (C11 - C12)(C11 + 2 C12) / (C11 + C12), nu = C12 / (C11 + C12), G = C44.
-  CHECK(c.E_x == Approx(150e9 * 450e9 / 350e9).epsilon(1e-12));
-  CHECK(c.nu_xy == Approx(100.0 / 350.0).epsilon(1e-12));
-  CHECK(c.G_xy == Approx(100e9).epsilon(1e-12));
-}

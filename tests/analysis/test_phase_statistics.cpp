@@ -59,26 +59,61 @@ TEST_CASE("von Mises histograms give each phase's share of its area per bin", "[
   CHECK(sum == Approx(1.0));
 }
 
-TEST_CASE("balanced stresses give the in-plane phase means and the partition, zz and the distributions stay the "
-          "cells' own",
+TEST_CASE("a general 3D state's largest principal stress and von Mises stress against its known eigenvalues",
           "[analysis][statistics]") {
-  // The two squares again: phase 0 on the left, phase 1 on the right, each half the area.
+  // R diag(5, 2, -1) R^T with R a rotation by 30 degrees about z, then by 45 about x: the
+  // eigenvalues 5, 2, -1 in any axes; von Mises sqrt(((5 - 2)^2 + (2 + 1)^2 + (-1 - 5)^2) / 2).
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6), q = std::sqrt(0.5);
+  const double R[3][3] = {{c, -s, 0}, {q * s, q * c, -q}, {q * s, q * c, q}};
+  const double d[3] = {5, 2, -1};
+  double A[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) A[i][j] += R[i][k] * d[k] * R[j][k];
+  const StressTensor t{A[0][0], A[1][1], A[2][2], A[1][2], A[0][2], A[0][1]};
+  REQUIRE(std::abs(t[3]) > 0.1);
+  CHECK(largest_principal(t) == Approx(5).epsilon(1e-12));
+  CHECK(von_mises(t) == Approx(std::sqrt((9.0 + 9.0 + 36.0) / 2)).epsilon(1e-12));
+  CHECK(hydrostatic(t) == Approx(2).epsilon(1e-12));
+  // Hydrostatic: every direction principal.
+  CHECK(largest_principal(StressTensor{-3, -3, -3, 0, 0, 0}) == -3);
+  // A 2D state as a tensor: the same measures.
+  const StressState plane{.xx = 4, .yy = -2, .zz = 1, .xy = 4};
+  CHECK(largest_principal(stress_tensor(plane)) == largest_principal(plane));
+  CHECK(von_mises(stress_tensor(plane)) == Approx(von_mises(plane)).epsilon(1e-15));
+}
+
+TEST_CASE("phase means and partition from balanced stresses, with zz, the weights and the distributions the cells' own",
+          "[analysis][statistics]") {
+  // Two unit squares of two triangles: phase 0 on the left, phase 1 on the right, each
+  // half the area.
   const CellMesh mesh = cell_mesh(TriMesh{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}});
+  std::vector<double> area;
+  for (std::size_t k = 0; k < 4; ++k) area.push_back(cell_area(mesh, k));
   const std::vector<StressState> cells{{.xx = 1, .yy = 0, .zz = 5, .xy = 0}, {.xx = 3, .yy = 0, .zz = 7, .xy = 0},
                                        {.xx = 4, .yy = 1, .zz = 2, .xy = 0}, {.xx = 4, .yy = 1, .zz = 2, .xy = 0}};
-  const std::vector<StressState> balanced{{.xx = 2, .yy = -1, .zz = 0, .xy = 1}, {.xx = 4, .yy = -3, .zz = 0, .xy = 1},
-                                          {.xx = 6, .yy = 2, .zz = 0, .xy = 0}, {.xx = 6, .yy = 2, .zz = 0, .xy = 0}};
-  const auto own = phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, 0);
-  const auto with = phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, 0, &balanced);
-  CHECK(own[0].mean.xx == Approx(2.0));
-  CHECK(with[0].mean.xx == Approx(3.0));
-  CHECK(with[0].mean.yy == Approx(-2.0));
-  CHECK(with[0].mean.xy == Approx(1.0));
-  CHECK(with[0].mean.zz == Approx(6.0));  // the cells' own
+  const std::vector<StressState> virial{{.xx = 2, .yy = -1, .zz = 0, .xy = 1}, {.xx = 4, .yy = -3, .zz = 0, .xy = 1},
+                                        {.xx = 6, .yy = 2, .zz = 0, .xy = 0}, {.xx = 6, .yy = 2, .zz = 0, .xy = 0}};
+  const std::vector<StressTensor> own = stress_tensors(cells), balanced = stress_tensors(cells, &virial);
+  const std::vector<int> phase{0, 0, 1, 1};
+  const auto plain = phase_stresses(own, area, phase, 2, 0);
+  const auto with = phase_stresses(own, area, phase, 2, 0, &balanced);
+  CHECK(plain[0].mean[0] == Approx(2.0));
+  CHECK(plain[0].volume_fraction == Approx(0.5));
+  CHECK(with[0].mean[0] == Approx(3.0));
+  CHECK(with[0].mean[1] == Approx(-2.0));
+  CHECK(with[0].mean[5] == Approx(1.0));
+  CHECK(with[0].mean[2] == Approx(6.0));  // zz: the cells' own (the 2D virial has none)
   // The partition: the phase's balanced mean xx over the cell's, (3 + 6) / 2.
-  CHECK(with[0].partition == Approx(3.0 / 4.5));
-  CHECK(with[1].partition == Approx(6.0 / 4.5));
-  CHECK(with[0].von_mises.mean == Approx(own[0].von_mises.mean));
+  CHECK(*with[0].partition == Approx(3.0 / 4.5));
+  CHECK(*with[1].partition == Approx(6.0 / 4.5));
+  CHECK(with[0].von_mises.mean == Approx(plain[0].von_mises.mean));
+  // Loaded in xy (Voigt index 5): the balanced xy means, 1 and 0, over the cell's 0.5.
+  CHECK(*phase_stresses(own, area, phase, 2, 5, &balanced)[0].partition == Approx(2.0));
   // No loaded component: no partition.
-  CHECK(phase_stresses(cells, mesh, {0, 0, 1, 1}, 2, -1, &balanced)[0].partition == 0.0);
+  CHECK_FALSE(phase_stresses(own, area, phase, 2, -1, &balanced)[0].partition);
+  // Weights of a 3D cell: volumes, phase 1 three times phase 0's.
+  const auto weighted = phase_stresses(own, {1, 1, 3, 3}, phase, 2, 0);
+  CHECK(weighted[1].volume_fraction == Approx(0.75));
+  CHECK(weighted[0].hydrostatic.mean == Approx((2.0 + 10.0 / 3) / 2).epsilon(1e-12));
 }

@@ -55,10 +55,9 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
       CHECK(C(e, "C11") == Approx(C11).epsilon(0.01));
       CHECK(C(e, "C22") == Approx(C22).epsilon(0.01));
       CHECK(C(e, "C12") == Approx(exact[2]).epsilon(0.01));
-      CHECK(C(e, "C21") == Approx(exact[2]).epsilon(0.01));
       CHECK(C(e, "C66") == Approx(exact[3]).epsilon(0.01));
-      for (const char* zero : {"C16", "C26", "C61", "C62"}) CHECK(std::abs(C(e, zero)) < 0.01 * C11);
-      CHECK(std::abs(C(e, "C12") - C(e, "C21")) <= 1e-3 * C(e, "C11"));
+      for (const char* zero : {"C16", "C26"}) CHECK(std::abs(C(e, zero)) < 0.01 * C11);
+      CHECK(e["symmetry_error"].get<double>() <= 1e-3);
       CHECK(e["inside_bounds"]["voigt_reuss"].get<bool>());
       if (normal_to_x && ratio == 3.0) {
         // Under the strain e in x each layer's stress is uniform: sigma_xx = C11 e in both,
@@ -102,9 +101,8 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
   CHECK(C(e, "C11") == Approx(m.M()).epsilon(1e-3));
   CHECK(C(e, "C22") == Approx(m.M()).epsilon(1e-3));
   CHECK(C(e, "C12") == Approx(m.lambda()).epsilon(1e-3));
-  CHECK(C(e, "C21") == Approx(m.lambda()).epsilon(1e-3));
   CHECK(C(e, "C66") == Approx(m.mu()).epsilon(1e-3));
-  for (const char* zero : {"C16", "C26", "C61", "C62"}) CHECK(std::abs(C(e, zero)) < 1e-3 * m.M());
+  for (const char* zero : {"C16", "C26"}) CHECK(std::abs(C(e, zero)) < 1e-3 * m.M());
   CHECK(e["engineering"]["E_x"].get<double>() == Approx(m.E / (1 - m.nu * m.nu)).epsilon(1e-3));  // plane strain
   CHECK(e["engineering"]["nu_xy"].get<double>() == Approx(m.nu / (1 - m.nu)).epsilon(1e-3));
   CHECK(e["anisotropy"]["shear"].get<double>() == Approx(1.0).epsilon(1e-3));
@@ -171,7 +169,7 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
     CHECK(s["hydrostatic"]["p50"].get<double>() == Approx((m.M() + 2 * m.lambda()) * strain / 3).epsilon(1e-4));
     CHECK(s["partition"].get<double>() == Approx(1.0).epsilon(1e-4));
   }
-  CHECK(stresses["matrix"]["area_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
+  CHECK(stresses["matrix"]["volume_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
   CHECK(fs::exists(dir / "mixed/stress_histogram.png"));
   // Periodic: every load case, its loaded component's partition near 1 on one material.
   for (const char* load : {"xx", "yy", "xy"})
@@ -192,7 +190,6 @@ TEST_CASE("periodic homogenisation: one material gives the isotropic tensor, two
     INFO(two.err);
     REQUIRE(two.exit_code == 0);
     const Json t = report_of(out)["effective"];
-    CHECK(std::abs(C(t, "C12") - C(t, "C21")) <= 1e-3 * C(t, "C11"));
     CHECK(t["symmetry_error"].get<double>() <= 1e-3);
     CHECK(t["inside_bounds"]["voigt_reuss"].get<bool>());
     // Hashin-Shtrikman holds for isotropic microstructures: the default cell is near enough

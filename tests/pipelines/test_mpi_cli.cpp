@@ -54,7 +54,7 @@ TEST_CASE("on two MPI processes the default cell's mixed modulus and periodic te
       CHECK(effective[1]["modulus"].get<double>() == Approx(effective[0]["modulus"].get<double>()).epsilon(1e-6));
     } else {
       const double scale = effective[0]["stiffness"]["C11"].get<double>();
-      for (const char* c : {"C11", "C22", "C12", "C21", "C66", "C16", "C26"})
+      for (const char* c : {"C11", "C22", "C12", "C66", "C16", "C26"})
         CHECK(std::abs(effective[1]["stiffness"][c].get<double>() - effective[0]["stiffness"][c].get<double>()) <=
               1e-6 * scale);
     }

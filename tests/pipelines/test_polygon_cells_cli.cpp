@@ -134,7 +134,7 @@ TEST_CASE("polygonal cells on one material: the exact modulus and uniform phase 
   for (const char* phase : {"particulate", "matrix"}) {
     INFO(phase);
     const Json& s = stresses[phase];
-    fractions += s["area_fraction"].get<double>();
+    fractions += s["volume_fraction"].get<double>();
     CHECK(s["mean"]["xx"].get<double>() == Approx(m.M() * strain).epsilon(1e-4));
     CHECK(s["mean"]["zz"].get<double>() == Approx(m.lambda() * strain).epsilon(1e-4));
     CHECK(s["von_mises"]["mean"].get<double>() == Approx(2 * m.mu() * strain).epsilon(1e-4));
@@ -142,5 +142,5 @@ TEST_CASE("polygonal cells on one material: the exact modulus and uniform phase 
     CHECK(s["partition"].get<double>() == Approx(1.0).epsilon(1e-4));
   }
   CHECK(fractions == Approx(1.0).epsilon(1e-12));
-  CHECK(stresses["matrix"]["area_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
+  CHECK(stresses["matrix"]["volume_fraction"].get<double>() == Approx(0.2).epsilon(0.02));
 }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -43,9 +44,12 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   for (const char* f : {"stress_xx.png", "von_mises.png"}) CHECK(fs::file_size(dir / "p" / f) > 10000);
   const auto& eff = report["effective"];
   CHECK(eff["boundary"] == "periodic");
-  for (const char* c : {"xx", "yy", "zz", "yz", "xz", "xy"}) {
+  REQUIRE(eff["load_cases"].size() == 6);
+  for (std::size_t k = 0; k < 6; ++k) {
+    const char* c = std::array{"xx", "yy", "zz", "yz", "xz", "xy"}[k];
     CHECK(fs::exists(dir / "p" / ("case_" + std::string(c)) / "system" / "controlDict"));
-    CHECK(eff["load_cases"][c]["corrections"].get<int>() > 0);
+    CHECK(eff["load_cases"][k]["name"] == c);
+    CHECK(eff["load_cases"][k]["corrections"].get<int>() > 0);
     for (const char* phase : {"WC", "Co"}) CHECK(report["stresses"][c][phase]["von_mises"]["max"].get<double>() > 0.0);
   }
   // Twenty-one components, the tensor symmetric and between the Reuss and Voigt tensors.
@@ -66,17 +70,17 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   CHECK(eff["engineering"]["E_x"].get<double>() > 211e9);
   CHECK(eff["engineering"]["E_x"].get<double>() < 700e9);
   CHECK(std::abs(eff["engineering"]["nu_xy"].get<double>() - 0.25) < 0.03);
-  CHECK(eff["engineering"]["universal_anisotropy"].get<double>() < 0.05);
+  CHECK(eff["anisotropy"]["universal"].get<double>() < 0.05);
   // The phases' volumes: the cells', exactly the tessellation's.
   CHECK(eff["volume_fractions"][1].get<double>() ==
-        Approx(report["statistics"]["phases"][1]["achieved_fraction"].get<double>()).epsilon(1e-6));
+        Approx(report["phases"][1]["achieved_fraction"].get<double>()).epsilon(1e-6));
   // The mean stress of the xx case: the phases' volume-weighted means of the cell
   // stresses add up to it within 1 % (measured 0.5 %: the cells' gradients, unlike the
   // face forces, do not average to the imposed strain exactly).
   const auto& s = report["stresses"]["xx"];
   const double mean_xx = s["WC"]["volume_fraction"].get<double>() * s["WC"]["mean"]["xx"].get<double>() +
                          s["Co"]["volume_fraction"].get<double>() * s["Co"]["mean"]["xx"].get<double>();
-  CHECK(mean_xx == Approx(eff["stiffness"]["C11"].get<double>() * eff["strain"].get<double>()).epsilon(1e-2));
+  CHECK(mean_xx == Approx(eff["stiffness"]["C11"].get<double>() * eff["load_cases"][0]["strain"]["xx"].get<double>()).epsilon(1e-2));
 }
 
 TEST_CASE("grainmesh run --solve on a 3D cell under the mixed load, serial and on two MPI processes",

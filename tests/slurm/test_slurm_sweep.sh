@@ -33,6 +33,12 @@ export PATH="$installed:$PATH"
 GRAINMESH=grainmesh
 cleanup() {
   "$source_dir/scripts/slurm-cluster.sh" stop "$work/cluster" || true
+  # The reports, for the schema check after every test (tests/pipelines/validate_reports.py).
+  mkdir -p "$build_dir/test-reports"
+  find "$work" -name report.json -not -path "$work/root/*" 2>/dev/null | while read -r r; do
+    rel=${r#"$work"/}
+    cp "$r" "$build_dir/test-reports/slurm-$$-${rel//\//_}.json"
+  done
   rm -rf "$work"
 }
 trap cleanup EXIT
