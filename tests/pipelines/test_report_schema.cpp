@@ -79,7 +79,7 @@ TEST_CASE("the schema check passes a report as written and fails one that breaks
 
 TEST_CASE("schema-1 reports are read as schema 2: the same numbers under its names, and they validate", "[report]") {
   const fs::path data = source_dir() / "tests/pipelines/data";
-  const nlohmann::json old2 = nlohmann::json::parse(read_file(data / "report-schema1-2d-periodic.json"));
+  const Json old2 = Json::parse(read_file(data / "report-schema1-2d-periodic.json"));
   const Json two = read_report(data / "report-schema1-2d-periodic.json");
   CHECK(two["schema"] == 2);
   CHECK(two["dimensions"] == 2);
@@ -97,10 +97,10 @@ TEST_CASE("schema-1 reports are read as schema 2: the same numbers under its nam
   CHECK(two["stresses"]["xx"]["matrix"]["mean"]["zz"] == old2["stresses"]["xx"]["matrix"]["mean"]["zz"]);
   CHECK(two["stresses"]["xx"]["matrix"]["mean"]["yz"] == 0.0);
 
-  const nlohmann::json old3 = nlohmann::json::parse(read_file(data / "report-schema1-3d-periodic.json"));
+  const Json old3 = Json::parse(read_file(data / "report-schema1-3d-periodic.json"));
   const Json three = read_report(data / "report-schema1-3d-periodic.json");
   CHECK(three["dimensions"] == 3);
-  CHECK(nlohmann::json::parse(three["phases"].dump()) == old3["statistics"]["phases"]);
+  CHECK(three["phases"] == old3["statistics"]["phases"]);
   CHECK_FALSE(three["statistics"].contains("phases"));
   REQUIRE(three["effective"]["load_cases"].is_array());
   CHECK(three["effective"]["load_cases"][0]["name"] == "xx");
