@@ -26,10 +26,10 @@ MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
   return {s.xx / area, s.yy / area, s.xy / area};
 }
 
-std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
+std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
   const double strain = load_strain(foam_cell(m), o);
-  std::vector<LoadCase> cases{LoadCase{"xx", {strain, 0.0, 0.0}}, LoadCase{"yy", {0.0, strain, 0.0}},
-                              LoadCase{"xy", {0.0, 0.0, 0.5 * strain}}};
+  std::vector<LoadCase<3>> cases{LoadCase<3>{"xx", {strain, 0.0, 0.0}}, LoadCase<3>{"yy", {0.0, strain, 0.0}},
+                                 LoadCase<3>{"xy", {0.0, 0.0, 0.5 * strain}}};
   if (o.delta_T == 0.0) return cases;
   double area = 0.0, free = 0.0;
   for (std::size_t t = 0; t < m.phase.size(); ++t) {
@@ -38,16 +38,8 @@ std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions
     free += a * free_expansion(m.phases[m.phase[t]], o.plane_stress);
   }
   const double e = free / area * o.delta_T;
-  cases.push_back(LoadCase{"thermal", {e, e, 0.0}, o.delta_T});
+  cases.push_back(LoadCase<3>{"thermal", {e, e, 0.0}, o.delta_T});
   return cases;
-}
-
-FoamOptions load_case_options(const FoamOptions& o, const LoadCase& c) {
-  FoamOptions out = o;
-  out.cyclic = true;
-  out.strain = {c.strain[0], c.strain[1], 0.0, 0.0, 0.0, c.strain[2]};
-  out.delta_T = c.delta_T;
-  return out;
 }
 
 namespace {
@@ -103,7 +95,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
 PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
                                    const std::vector<std::filesystem::path>& cases_shown_as) {
-  const std::vector<LoadCase> loads = periodic_load_cases(m, o);
+  const std::vector<LoadCase<3>> loads = periodic_load_cases(m, o);
   const int n = static_cast<int>(loads.size());
   if (case_dirs.size() != loads.size()) throw GeometryError("solve_periodic: a case directory per load case is needed");
   PeriodicHomogenised h;

@@ -12,6 +12,7 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
+#include "analysis/load_case.hpp"
 #include "analysis/solve.hpp"
 #include "analysis/stress_measures.hpp"
 #include "common/deadline.hpp"
@@ -59,18 +60,10 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
 // is the answer for one material (no stress); and the solve needs a strain: a cell held
 // at zero mean strain under a uniform thermal stress has a source of rounding noise
 // alone, which its singular periodic system (a translation is free) turns into drift.
-struct LoadCase {
-  std::string name;               // xx, yy, xy, thermal: also the case directory's suffix
-  std::array<double, 3> strain;   // xx, yy, xy (tensor components)
-  double delta_T = 0.0;           // K
-};
-std::vector<LoadCase> periodic_load_cases(const ExportMesh& m, const FoamOptions& o);
-// The options a load case's case is written and solved with: `o`'s, cyclic, with the
-// case's strain and temperature change.
-FoamOptions load_case_options(const FoamOptions& o, const LoadCase& c);
+std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o);
 
 struct LoadCaseResult {
-  LoadCase load;
+  LoadCase<3> load;
   MeanStress stress;           // the forces through right and top over their areas
   MeanStress volume_average;
   SolveRun run;

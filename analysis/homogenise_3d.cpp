@@ -60,12 +60,12 @@ Voigt6 volume_average(const CaseFields& fields, const FoamMesh3& fm) {
 
 }  // namespace
 
-std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOptions& o) {
+std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o) {
   const double e = load_strain(foam_cell(m), o);
-  std::vector<LoadCase3> cases;
+  std::vector<LoadCase<6>> cases;
   const char* names[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
   for (int k = 0; k < 6; ++k) {
-    LoadCase3 c{names[k], {}};
+    LoadCase<6> c{names[k], {}};
     c.strain[static_cast<std::size_t>(k)] = k < 3 ? e : 0.5 * e;
     cases.push_back(c);
   }
@@ -79,23 +79,15 @@ std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOp
   double free = 0.0;
   for (std::size_t p = 0; p < fraction.size(); ++p) free += fraction[p] * m.phases[p].alpha;
   const double strain = free * o.delta_T;
-  cases.push_back(LoadCase3{"thermal", {strain, strain, strain, 0.0, 0.0, 0.0}, o.delta_T});
+  cases.push_back(LoadCase<6>{"thermal", {strain, strain, strain, 0.0, 0.0, 0.0}, o.delta_T});
   return cases;
-}
-
-FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c) {
-  FoamOptions out = o;
-  out.cyclic = true;
-  out.strain = c.strain;
-  out.delta_T = c.delta_T;
-  return out;
 }
 
 PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
                                        const FoamMesh3& fm, const FoamOptions& o, int parallel,
                                        const Deadline& deadline,
                                        const std::vector<std::filesystem::path>& cases_shown_as) {
-  const std::vector<LoadCase3> loads = periodic_load_cases_3d(m, o);
+  const std::vector<LoadCase<6>> loads = periodic_load_cases(m, o);
   if (case_dirs.size() != loads.size())
     throw GeometryError("solve_periodic_3d: a case directory per load case is needed");
   PeriodicHomogenised3 h;
@@ -106,7 +98,7 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
   side_by_side(order, parallel, [&](int k) {
     LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
     r.load = loads[static_cast<std::size_t>(k)];
-    const FoamOptions ok = load_case_options_3d(o, r.load);
+    const FoamOptions ok = load_case_options(o, r.load);
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
     r.run = run_solver(case_dirs[k], foam_cell(m), ok, deadline, shown, r.load.name);
     r.fields = read_case_fields(r.run.result_dir, m.phases, fm.phase, ok);

@@ -12,6 +12,7 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/foam_fields.hpp"
+#include "analysis/load_case.hpp"
 #include "analysis/solve.hpp"
 #include "common/deadline.hpp"
 #include "export/export_mesh.hpp"
@@ -28,18 +29,10 @@ using Voigt6 = std::array<double, 6>;
 // temperature change (o.delta_T) a seventh, `thermal`: the change at the mean strain the
 // phases would take free, each on its own (the volume mean of alpha delta_T, in xx, yy
 // and zz), which leaves only the phases' mismatch to carry (analysis/thermal_3d.hpp).
-struct LoadCase3 {
-  std::string name;  // xx, yy, zz, yz, xz, xy, thermal: also the case directory's suffix
-  Voigt6 strain{};
-  double delta_T = 0.0;  // K
-};
-std::vector<LoadCase3> periodic_load_cases_3d(const ExportMesh3& m, const FoamOptions& o);
-// The options a load case's case is written and solved with: `o`'s, cyclic, its strain and
-// temperature change (none in the six mechanical cases).
-FoamOptions load_case_options_3d(const FoamOptions& o, const LoadCase3& c);
+std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o);
 
 struct LoadCaseResult3 {
-  LoadCase3 load;
+  LoadCase<6> load;
   Voigt6 stress{};          // from the forces through right, top and front over their areas (Pa)
   Voigt6 volume_average{};  // the volume average of the cell stresses
   SolveRun run;
@@ -48,13 +41,13 @@ struct LoadCaseResult3 {
 };
 
 struct PeriodicHomogenised3 {
-  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases_3d (the thermal case last)
+  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases (the thermal case last)
   Stiffness<6> stiffness{};              // column j from load case j (per engineering strain), as solved
   Stiffness<6> volume_average_stiffness{};
 };
 
 // Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
-// periodic_load_cases_3d(m, o), each with load_case_options_3d; `fm` the mesh it wrote,
+// periodic_load_cases(m, o), each with load_case_options; `fm` the mesh it wrote,
 // the same for all), up to `parallel` at a time, and assembles the stiffness. A failing
 // case throws SolveError naming it (the first in order when several fail).
 PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,

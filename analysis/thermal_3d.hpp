@@ -27,7 +27,7 @@ struct ThermalResidual3 {
   FieldValues loaded_virial_stress;
 };
 
-// From solved periodic cases with a thermal case (periodic_load_cases_3d with delta_T), and
+// From solved periodic cases with a thermal case (periodic_load_cases with delta_T), and
 // the stiffness to free it with (their symmetric part). Throws GeometryError when there
 // is no thermal case.
 ThermalResidual3 thermal_residual_3d(const PeriodicHomogenised3& h, const Stiffness<6>& stiffness);

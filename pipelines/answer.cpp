@@ -17,7 +17,6 @@
 
 namespace grainmesh {
 
-std::string periodic_case_dir(const LoadCase& c) { return "case_" + c.name; }
 
 void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline, Json& report, Warnings& warnings) {
   const Json& cases = report["case"];
@@ -128,9 +127,9 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   std::vector<std::filesystem::path> dirs, shown;
-  for (const LoadCase& lc : periodic_load_cases(e, foam)) {
-    dirs.push_back(dir / periodic_case_dir(lc));
-    shown.push_back(staged.failed_dir() / periodic_case_dir(lc));
+  for (const LoadCase<3>& lc : periodic_load_cases(e, foam)) {
+    dirs.push_back(dir / load_case_dir(lc));
+    shown.push_back(staged.failed_dir() / load_case_dir(lc));
   }
   // As many solves side by side as there are cores for their processes.
   const int parallel = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / foam.processes);

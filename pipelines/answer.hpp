@@ -28,8 +28,6 @@ struct Answer {
   Json stresses;
 };
 
-// The case directory of a periodic load case: case_xx, case_yy, case_xy.
-std::string periodic_case_dir(const LoadCase& c);
 
 // OpenFOAM's checkMesh on the run's first case in `dir` (report["case"] names the cases,
 // which share one mesh) before it is solved: report.json's mesh_check {case,

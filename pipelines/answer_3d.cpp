@@ -116,7 +116,6 @@ void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised
 
 }  // namespace
 
-std::string periodic_case_dir_3d(const LoadCase3& c) { return "case_" + c.name; }
 
 Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
   const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
@@ -143,9 +142,9 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
 
 Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
   std::vector<std::filesystem::path> dirs, shown;
-  for (const LoadCase3& c : periodic_load_cases_3d(in.e, in.foam)) {
-    dirs.push_back(in.dir / periodic_case_dir_3d(c));
-    shown.push_back(in.staged.failed_dir() / periodic_case_dir_3d(c));
+  for (const LoadCase<6>& c : periodic_load_cases(in.e, in.foam)) {
+    dirs.push_back(in.dir / load_case_dir(c));
+    shown.push_back(in.staged.failed_dir() / load_case_dir(c));
   }
   // The load cases side by side, as many as the cores take with each case's processes.
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

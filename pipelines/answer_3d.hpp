@@ -29,8 +29,6 @@ struct SolveInput3 {
   std::string unit{};      // their scale bar's length unit
 };
 
-// The case directories of the periodic load cases: case_xx ... case_xy, case_thermal.
-std::string periodic_case_dir_3d(const LoadCase3& c);
 
 // The mixed load's answer (case/): effective.modulus (under uniaxial strain), with the
 // Voigt and Reuss tensors' C11 around it and the phases' stresses; pictures of the

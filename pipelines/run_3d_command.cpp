@@ -36,11 +36,11 @@ std::vector<std::string> write_cases_3d(const std::filesystem::path& dir, const 
   }
   // One mesh for the load cases (their options differ in the strain and temperature
   // alone), its files written once and copied.
-  for (const LoadCase3& lc : periodic_load_cases_3d(e, o)) {
+  for (const LoadCase<6>& lc : periodic_load_cases(e, o)) {
     const bool first = names.empty();
-    names.push_back(periodic_case_dir_3d(lc));
+    names.push_back(load_case_dir(lc));
     std::filesystem::create_directories(dir / names.back());
-    const FoamOptions case_options = load_case_options_3d(o, lc);
+    const FoamOptions case_options = load_case_options(o, lc);
     if (first) fm = foam_mesh_3d(e, case_options);
     write_foam_case_3d(dir / names.back(), e, fm, case_options,
                        first ? std::filesystem::path() : dir / names.front() / "constant" / "polyMesh");

@@ -93,9 +93,9 @@ std::vector<std::string> write_cases(const std::filesystem::path& dir, const Exp
   }
   // One mesh for the load cases (their options differ in the strain and temperature
   // alone), its files written once and copied.
-  for (const LoadCase& lc : periodic_load_cases(e, foam)) {
+  for (const LoadCase<3>& lc : periodic_load_cases(e, foam)) {
     const bool first = case_dirs.empty();
-    case_dirs.push_back(periodic_case_dir(lc));
+    case_dirs.push_back(load_case_dir(lc));
     std::filesystem::create_directories(dir / case_dirs.back());
     if (first) {
       pm = write_foam_case(dir / case_dirs.back(), e, load_case_options(foam, lc));

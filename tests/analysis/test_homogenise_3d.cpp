@@ -24,10 +24,10 @@ namespace {
 // Writes the six load cases of `e` under `o` into `dir` and solves them, two at a time.
 PeriodicHomogenised3 solve_six(const ExportMesh3& e, const FoamOptions& o, const fs::path& dir, FoamMesh3& fm) {
   std::vector<fs::path> dirs;
-  for (const LoadCase3& c : periodic_load_cases_3d(e, o)) {
+  for (const LoadCase<6>& c : periodic_load_cases(e, o)) {
     dirs.push_back(dir / ("case_" + c.name));
     fs::create_directories(dirs.back());
-    fm = write_foam_case_3d(dirs.back(), e, load_case_options_3d(o, c));
+    fm = write_foam_case_3d(dirs.back(), e, load_case_options(o, c));
   }
   return solve_periodic_3d(dirs, e, fm, o, 2);
 }
@@ -91,7 +91,7 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
     const FieldValues grad = dual ? read_cell_field(shear.run.result_dir / kGradientField, "tensor",
                                                     static_cast<std::size_t>(pm.cells))
                                   : FieldValues{};
-    const DiscreteTraction traction(fm, foam_cell(e), load_case_options_3d(o, shear.load), shear.fields.displacement,
+    const DiscreteTraction traction(fm, foam_cell(e), load_case_options(o, shear.load), shear.fields.displacement,
                                     grad, shear.fields.stress);
     double largest = 0.0, worst = 0.0;
     for (int f = 0; f < pm.internal_faces(); ++f) largest = std::max(largest, norm(traction.face_force(f)));

@@ -36,9 +36,9 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
   const ExportMesh e = grain_export_mesh(t, m);
   // A mean strain of 1e-3 and, in the fourth case, cooling by 500 K.
   const FoamOptions periodic{.cyclic = true, .displacement = 1e-3 * to.width, .delta_T = -500.0};
-  const std::vector<LoadCase> loads = periodic_load_cases(e, periodic);
+  const std::vector<LoadCase<3>> loads = periodic_load_cases(e, periodic);
   REQUIRE(loads.size() == 4);
-  for (const LoadCase& load : loads) {
+  for (const LoadCase<3>& load : loads) {
     INFO("load case " << load.name);
     test::ScratchDir dir("traction");
     const FoamOptions o = load_case_options(periodic, load);
