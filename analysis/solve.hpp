@@ -35,6 +35,10 @@ struct SolveRun {
 // missing, SolveError (one line naming the field and `load_case` when given, what
 // happened and what to do, and the log as found under `case_shown_as`, when given) when
 // it fails, and TimeLimitError when `deadline` passes.
+// How many cases to solve side by side when each runs on `processes` MPI processes: as
+// many as the machine's cores take, at least one.
+int solves_side_by_side(int processes);
+
 SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell, const FoamOptions& o,
                     const Deadline& deadline = {}, const std::filesystem::path& case_shown_as = {},
                     const std::string& load_case = {});

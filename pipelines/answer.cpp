@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <thread>
 
 #include "analysis/bounds.hpp"
 #include "analysis/check_mesh.hpp"
@@ -16,7 +15,6 @@
 #include "pipelines/result_pictures.hpp"
 
 namespace grainmesh {
-
 
 void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline, Json& report, Warnings& warnings) {
   const Json& cases = report["case"];
@@ -43,8 +41,6 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
   return fractions;
 }
 
-
-
 // `stresses` {CASE: {PHASE: ...}} (report_json.hpp's phase_stresses_json), Pa, from the
 // recovered cell stresses, each weighted by its area.
 Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellation& t, const ExportMesh& e) {
@@ -54,7 +50,8 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
   const std::vector<std::string> names = phase_names(t);
   for (const StressedCase& c : cases) {
     const std::vector<StressTensor> own = stress_tensors(*c.cell_stress);
-    const std::vector<StressTensor> balanced = c.balanced ? stress_tensors(*c.cell_stress, c.balanced) : own;
+    const std::vector<StressTensor> balanced =
+        c.balanced ? stress_tensors(*c.cell_stress, c.balanced) : std::vector<StressTensor>{};
     out[c.name] = phase_stresses_json(
         phase_stresses(own, area, e.phase, static_cast<int>(names.size()), c.loaded, c.balanced ? &balanced : nullptr),
         names);
@@ -63,8 +60,8 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
 }
 
 
-// What a thermal load adds to the answer: effective.thermal_expansion {a11, a22, a12}
-// (1/K), effective.thermal {delta_T, levin, levin_difference}, and
+// What a thermal load adds to the answer: effective.thermal_expansion {xx, yy, xy}
+// (1/K), effective.thermal {delta_T, plane_state, levin, levin_difference}, and
 // stresses.thermal (the residual stress, free expansion) and stresses.thermal_xx (cooled,
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
 // relation by more than 1 % is a warning.
@@ -85,7 +82,6 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
       t, e);
   for (const auto& [name, value] : stresses.items()) answer.stresses[name] = value;
 }
-
 
 }  // namespace
 
@@ -116,8 +112,6 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
   if (b.hs_lower) effective["hashin_shtrikman"] = {{"lower", *b.hs_lower}, {"upper", *b.hs_upper}};
   // Voigt and Reuss hold for every microstructure; Hashin-Shtrikman for isotropic ones
   // (a finite cell is not quite).
-  // Voigt and Reuss hold for every microstructure; Hashin-Shtrikman for isotropic ones
-  // (a finite cell is not quite).
   add_modulus_verdict(judge_modulus(h.modulus, b.voigt, b.reuss, b.hs_lower, b.hs_upper), effective, warnings,
                       "a finite cell is not isotropic; see docs/run.md, Homogenisation");
   return answer;
@@ -131,9 +125,7 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
     dirs.push_back(dir / load_case_dir(lc));
     shown.push_back(staged.failed_dir() / load_case_dir(lc));
   }
-  // As many solves side by side as there are cores for their processes.
-  const int parallel = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / foam.processes);
-  const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, parallel, deadline, shown);
+  const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, solves_side_by_side(foam.processes), deadline, shown);
   const Stiffness<3>& C = h.stiffness;
   std::vector<StressedCase> stressed;
   for (int k = 0; k < 3; ++k)

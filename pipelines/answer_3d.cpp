@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <thread>
 #include <tuple>
 
 #include "analysis/bounds.hpp"
@@ -116,7 +115,6 @@ void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised
 
 }  // namespace
 
-
 Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
   const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
   Answer answer;
@@ -146,10 +144,8 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
     dirs.push_back(in.dir / load_case_dir(c));
     shown.push_back(in.staged.failed_dir() / load_case_dir(c));
   }
-  // The load cases side by side, as many as the cores take with each case's processes.
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int parallel = std::max(1, cores / std::max(1, in.foam.processes));
-  const PeriodicHomogenised3 h = solve_periodic_3d(dirs, in.e, in.fm, in.foam, parallel, in.deadline, shown);
+  const PeriodicHomogenised3 h =
+      solve_periodic_3d(dirs, in.e, in.fm, in.foam, solves_side_by_side(in.foam.processes), in.deadline, shown);
   const std::vector<double> fractions =
       phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
   const TensorBounds<6> bounds = tensor_bounds<6>(in.e.phases, fractions);

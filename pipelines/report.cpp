@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/errors.hpp"
+#include "common/text_file.hpp"
 #include "pipelines/output_dir.hpp"
 
 namespace grainmesh {
@@ -28,6 +30,15 @@ void add_quality(Json& report, const MeshQuality& q) {
 }
 
 void write_json(const std::filesystem::path& file, const Json& json) { write_text_file(file, json.dump(2) + "\n"); }
+
+Json read_json(const std::filesystem::path& file) {
+  const std::string text = read_text_file(file);
+  try {
+    return Json::parse(text);
+  } catch (const Json::exception& e) {
+    throw IoError(file.string() + ": not valid JSON: " + e.what());
+  }
+}
 
 void Warnings::add(const std::string& warning) {
   std::fprintf(stderr, "grainmesh: warning: %s\n", warning.c_str());

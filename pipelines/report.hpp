@@ -31,6 +31,8 @@ void add_time_limit(Json& report, const Deadline& deadline);
 
 // Pretty-printed JSON, written through a temporary file. Throws IoError.
 void write_json(const std::filesystem::path& file, const Json& json);
+// A JSON file read; IoError naming it when it cannot be read or parsed.
+Json read_json(const std::filesystem::path& file);
 
 // What a command found doubtful but not wrong (a poor mesh, a missed target, a bound
 // crossed): each printed to stderr at once, one line "grainmesh: warning: ...", and kept

@@ -5,7 +5,6 @@
 
 #include "analysis/engineering.hpp"
 #include "common/errors.hpp"
-#include "common/text_file.hpp"
 
 namespace grainmesh {
 
@@ -100,13 +99,7 @@ Json upgrade_report(Json r) {
 }
 
 Json read_report(const std::filesystem::path& file) {
-  const std::string text = read_text_file(file);
-  Json r;
-  try {
-    r = Json::parse(text);
-  } catch (const Json::exception& e) {
-    throw IoError(file.string() + ": not valid JSON: " + e.what());
-  }
+  Json r = read_json(file);
   if (!r.is_object()) throw IoError(file.string() + ": not a grainmesh report (no JSON object)");
   if (!r.contains("schema")) return upgrade_report(std::move(r));
   if (r["schema"] != kReportSchema)

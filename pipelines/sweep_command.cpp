@@ -17,6 +17,7 @@
 #include "common/process.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/report_read.hpp"
 #include "pipelines/run_command.hpp"
 #include "pipelines/sweep_plan.hpp"
 
@@ -178,7 +179,7 @@ void warn_run_warnings(const std::vector<const SweepRun*>& runs, const std::file
   for (const SweepRun* r : runs) {
     std::vector<std::string> warnings;
     try {
-      const Json report = read_json(dir / r->name / "report.json");
+      const Json report = read_report(dir / r->name / "report.json");
       if (report.contains("warnings")) warnings = report["warnings"].get<std::vector<std::string>>();
     } catch (const std::exception&) {
       continue;  // a failed run: said below

@@ -166,15 +166,6 @@ Json plan_json(const SweepPlan& plan, bool solve) {
               {"realisations", plan.realisations}, {"solve", solve}, {"dimensions", plan.dimensions}, {"runs", runs}};
 }
 
-Json read_json(const std::filesystem::path& file) {
-  const std::string text = read_text_file(file);
-  try {
-    return Json::parse(text);
-  } catch (const Json::exception& e) {
-    throw IoError(file.string() + ": not valid JSON: " + e.what());
-  }
-}
-
 // Where a run of the plan stands: its report (written last) is missing or unreadable, was
 // made from another config than the plan now asks for (its fingerprint), lacks the
 // solution a --solve sweep needs, or is done.

@@ -86,7 +86,5 @@ std::set<std::string> planned_runs(const std::filesystem::path& dir);
 // Throws IoError naming why.
 void check_sweep_dir(const std::filesystem::path& dir, const SweepPlan& plan);
 
-// A JSON file read; IoError naming it when it cannot be read or parsed.
-Json read_json(const std::filesystem::path& file);
 
 }  // namespace grainmesh
