@@ -12,18 +12,18 @@
 
 namespace grainmesh {
 
-MeanStress volume_average(const CaseFields& fields, const ExportMesh& m) {
+std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh& m) {
   const std::vector<StressState> sigma = stress_states(fields, /*plane_stress=*/false);  // in-plane parts only
-  MeanStress s;
+  std::array<double, 3> s{};
   double area = 0.0;
   for (std::size_t k = 0; k < sigma.size(); ++k) {  // cell k is triangle k
     const double a = cell_area(m.mesh, k);
-    s.xx += a * sigma[k].xx;
-    s.yy += a * sigma[k].yy;
-    s.xy += a * sigma[k].xy;
+    s[0] += a * sigma[k].xx;
+    s[1] += a * sigma[k].yy;
+    s[2] += a * sigma[k].xy;
     area += a;
   }
-  return {s.xx / area, s.yy / area, s.xy / area};
+  return {s[0] / area, s[1] / area, s[2] / area};
 }
 
 std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
@@ -47,7 +47,7 @@ namespace {
 // The mean stress of a solved periodic case from the forces through right and top, and
 // each cell's virial stress from the same forces.
 struct Balanced {
-  MeanStress mean;
+  std::array<double, 3> mean{};  // xx, yy, xy
   std::vector<StressState> virial;
 };
 Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh& m,
@@ -74,7 +74,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   // The force through `right`: the load the cell carries. From sigma's face values there,
   // or on a cyclic case, which writes none, from the cell fields.
   if (o.cyclic) {
-    h.sigma_xx = periodic_stress(h.run.result_dir, h.fields, m, pm, o).mean.xx;
+    h.sigma_xx = periodic_stress(h.run.result_dir, h.fields, m, pm, o).mean[0];
   } else {
     const int right = patch_index(pm, "right");
     const PolyMesh::Patch& patch = pm.patches[right];
@@ -88,20 +88,20 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   h.strain_xx = o.cyclic ? cyclic_strain(foam_cell(m), o)[0] : o.displacement / m.cell.width();
   h.modulus = h.sigma_xx / h.strain_xx;
   h.volume_average = volume_average(h.fields, m);
-  h.volume_average_modulus = h.volume_average.xx / h.strain_xx;
+  h.volume_average_modulus = h.volume_average[0] / h.strain_xx;
   return h;
 }
 
-PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
-                                   const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
-                                   const std::vector<std::filesystem::path>& cases_shown_as) {
+PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
+                                      const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
+                                      const std::vector<std::filesystem::path>& cases_shown_as) {
   const std::vector<LoadCase<3>> loads = periodic_load_cases(m, o);
   const int n = static_cast<int>(loads.size());
   if (case_dirs.size() != loads.size()) throw GeometryError("solve_periodic: a case directory per load case is needed");
-  PeriodicHomogenised h;
+  PeriodicHomogenised<3> h;
   h.cases.resize(loads.size());
   auto solve = [&](int k) {
-    LoadCaseResult& r = h.cases[k];
+    LoadCaseResult<3>& r = h.cases[k];
     r.load = loads[k];
     const FoamOptions ok = load_case_options(o, r.load);
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
@@ -118,17 +118,7 @@ PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& cas
   std::vector<int> order{2, 0, 1};
   if (n == 4) order.insert(order.begin() + 1, 3);
   side_by_side(order, parallel, solve);
-  for (int k = 0; k < 3; ++k) {
-    const LoadCaseResult& r = h.cases[k];
-    // Per engineering strain: the shear case's tensor component is half its gamma.
-    const double e = k < 2 ? r.load.strain[k] : 2.0 * r.load.strain[2];
-    h.stiffness[0][k] = r.stress.xx / e;
-    h.stiffness[1][k] = r.stress.yy / e;
-    h.stiffness[2][k] = r.stress.xy / e;
-    h.volume_average_stiffness[0][k] = r.volume_average.xx / e;
-    h.volume_average_stiffness[1][k] = r.volume_average.yy / e;
-    h.volume_average_stiffness[2][k] = r.volume_average.xy / e;
-  }
+  assemble_stiffness(h);
   return h;
 }
 

@@ -14,6 +14,7 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/load_case.hpp"
 #include "analysis/solve.hpp"
+#include "analysis/solved_state.hpp"
 #include "analysis/stress_measures.hpp"
 #include "common/deadline.hpp"
 #include "export/export_mesh.hpp"
@@ -28,18 +29,14 @@ enum class Boundary {
   periodic,  // cyclic pairs, a macroscopic strain per load case; the stiffness tensor
 };
 
-struct MeanStress {
-  double xx = 0.0, yy = 0.0, xy = 0.0;  // Pa
-};
-
-// The area average of the cell stresses of a solved case.
-MeanStress volume_average(const CaseFields& fields, const ExportMesh& m);
+// The area average of the cell stresses of a solved case: xx, yy, xy (Pa).
+std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh& m);
 
 struct Homogenised {
   double sigma_xx = 0.0;       // the force through `right` over its area
   double strain_xx = 0.0;      // the imposed mean strain: displacement / width
   double modulus = 0.0;        // sigma_xx / strain_xx
-  MeanStress volume_average;   // the area average of the cell stresses
+  std::array<double, 3> volume_average{};  // the area average of the cell stresses: xx, yy, xy
   double volume_average_modulus = 0.0;
   SolveRun run;
   CaseFields fields;           // the solution's cell fields
@@ -62,28 +59,12 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
 // alone, which its singular periodic system (a translation is free) turns into drift.
 std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o);
 
-struct LoadCaseResult {
-  LoadCase<3> load;
-  MeanStress stress;           // the forces through right and top over their areas
-  MeanStress volume_average;
-  SolveRun run;
-  CaseFields fields;           // the solution's cell fields
-  std::vector<StressState> cell_stress;  // recovered phase by phase (stress_recovery.hpp)
-  std::vector<StressState> virial_stress;  // from the face forces (DiscreteTraction::virial_stress)
-};
-
-struct PeriodicHomogenised {
-  std::vector<LoadCaseResult> cases;     // as periodic_load_cases: xx, yy, xy (, thermal)
-  Stiffness<3> stiffness{};                 // column j from load case j (the shear per engineering strain)
-  Stiffness<3> volume_average_stiffness{};  // the same from the area averages
-};
-
 // Solves the periodic load cases written by write_foam_case into `case_dirs` (in the
 // order of periodic_load_cases(m, o), each with load_case_options; `pm`
 // the mesh, the same for all), up to `parallel` at a time, and assembles the stiffness.
 // A failing case throws SolveError naming it (the first in order when several fail).
 // `cases_shown_as`: where the cases are to be found if they fail (or empty).
-PeriodicHomogenised solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
+PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
                                    const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline = {},
                                    const std::vector<std::filesystem::path>& cases_shown_as = {});
 

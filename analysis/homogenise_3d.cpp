@@ -83,20 +83,20 @@ std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOpt
   return cases;
 }
 
-PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
-                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
-                                       const Deadline& deadline,
-                                       const std::vector<std::filesystem::path>& cases_shown_as) {
+PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+                                      const FoamMesh3& fm, const FoamOptions& o, int parallel,
+                                      const Deadline& deadline,
+                                      const std::vector<std::filesystem::path>& cases_shown_as) {
   const std::vector<LoadCase<6>> loads = periodic_load_cases(m, o);
   if (case_dirs.size() != loads.size())
-    throw GeometryError("solve_periodic_3d: a case directory per load case is needed");
-  PeriodicHomogenised3 h;
+    throw GeometryError("solve_periodic: a case directory per load case is needed");
+  PeriodicHomogenised<6> h;
   h.cases.resize(loads.size());
   // The shear cases first: they take longest.
   std::vector<int> order{3, 4, 5, 0, 1, 2};
   if (loads.size() > 6) order.push_back(6);
   side_by_side(order, parallel, [&](int k) {
-    LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
+    LoadCaseResult<6>& r = h.cases[static_cast<std::size_t>(k)];
     r.load = loads[static_cast<std::size_t>(k)];
     const FoamOptions ok = load_case_options(o, r.load);
     const std::filesystem::path shown = cases_shown_as.empty() ? std::filesystem::path() : cases_shown_as[k];
@@ -107,14 +107,7 @@ PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>&
     r.virial_stress = std::move(balanced.virial);
     r.volume_average = volume_average(r.fields, fm);
   });
-  for (int k = 0; k < 6; ++k) {
-    const LoadCaseResult3& r = h.cases[static_cast<std::size_t>(k)];
-    const double e = k < 3 ? r.load.strain[k] : 2.0 * r.load.strain[k];  // engineering
-    for (int i = 0; i < 6; ++i) {
-      h.stiffness[i][k] = r.stress[i] / e;
-      h.volume_average_stiffness[i][k] = r.volume_average[i] / e;
-    }
-  }
+  assemble_stiffness(h);
   return h;
 }
 

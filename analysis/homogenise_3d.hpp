@@ -14,6 +14,7 @@
 #include "analysis/foam_fields.hpp"
 #include "analysis/load_case.hpp"
 #include "analysis/solve.hpp"
+#include "analysis/solved_state.hpp"
 #include "common/deadline.hpp"
 #include "export/export_mesh.hpp"
 #include "export/foam_options.hpp"
@@ -28,32 +29,17 @@ using Voigt6 = std::array<double, 6>;
 // in xx, yy, zz, and engineering shears e in yz, xz, xy (tensor components e / 2); with a
 // temperature change (o.delta_T) a seventh, `thermal`: the change at the mean strain the
 // phases would take free, each on its own (the volume mean of alpha delta_T, in xx, yy
-// and zz), which leaves only the phases' mismatch to carry (analysis/thermal_3d.hpp).
+// and zz), which leaves only the phases' mismatch to carry (analysis/thermal.hpp).
 std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o);
-
-struct LoadCaseResult3 {
-  LoadCase<6> load;
-  Voigt6 stress{};          // from the forces through right, top and front over their areas (Pa)
-  Voigt6 volume_average{};  // the volume average of the cell stresses
-  SolveRun run;
-  CaseFields fields;
-  FieldValues virial_stress;  // each cell's from its face forces (DiscreteTraction::virial_stress_tensor)
-};
-
-struct PeriodicHomogenised3 {
-  std::vector<LoadCaseResult3> cases;  // as periodic_load_cases (the thermal case last)
-  Stiffness<6> stiffness{};              // column j from load case j (per engineering strain), as solved
-  Stiffness<6> volume_average_stiffness{};
-};
 
 // Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
 // periodic_load_cases(m, o), each with load_case_options; `fm` the mesh it wrote,
 // the same for all), up to `parallel` at a time, and assembles the stiffness. A failing
 // case throws SolveError naming it (the first in order when several fail).
-PeriodicHomogenised3 solve_periodic_3d(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
-                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
-                                       const Deadline& deadline = {},
-                                       const std::vector<std::filesystem::path>& cases_shown_as = {});
+PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+                                      const FoamMesh3& fm, const FoamOptions& o, int parallel,
+                                      const Deadline& deadline = {},
+                                      const std::vector<std::filesystem::path>& cases_shown_as = {});
 
 // The thesis' mixed load in 3D (write_foam_case_3d without cyclic: right pulled by
 // load.displacement, symmetry planes on the other sides, so the cell is held from

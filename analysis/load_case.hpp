@@ -7,7 +7,9 @@
 
 #include <array>
 #include <cstddef>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "export/foam_options.hpp"
 
@@ -24,6 +26,15 @@ struct LoadCase {
 template <std::size_t N>
 std::string load_case_dir(const LoadCase<N>& c) {
   return "case_" + c.name;
+}
+
+// The case directories of `cases` under `dir`, in their order.
+template <std::size_t N>
+std::vector<std::filesystem::path> load_case_dirs(const std::vector<LoadCase<N>>& cases,
+                                                  const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> out;
+  for (const LoadCase<N>& c : cases) out.push_back(dir / load_case_dir(c));
+  return out;
 }
 
 // The options a load case's case is written and solved with: `o`'s, cyclic, the case's

@@ -6,76 +6,60 @@
 
 namespace grainmesh {
 
-namespace {
-
-std::vector<StressState> superposed(const std::vector<std::pair<double, const std::vector<StressState>*>>& terms) {
-  std::vector<StressState> out(terms.front().second->size());
-  for (const auto& [weight, states] : terms)
-    for (std::size_t t = 0; t < out.size(); ++t) {
-      const StressState& s = (*states)[t];
-      out[t].xx += weight * s.xx, out[t].yy += weight * s.yy, out[t].zz += weight * s.zz, out[t].xy += weight * s.xy;
-    }
-  return out;
-}
-
-}  // namespace
-
-ThermalResidual thermal_residual(const PeriodicHomogenised& h) {
-  if (h.cases.size() != 4 || h.cases[3].load.delta_T == 0.0)
+template <std::size_t N>
+ThermalResidual<N> thermal_residual(const PeriodicHomogenised<N>& h, const Stiffness<N>& stiffness) {
+  if (h.cases.size() != N + 1 || h.cases[N].load.delta_T == 0.0)
     throw GeometryError("thermal_residual: the load cases hold no thermal case");
-  const LoadCaseResult& thermal = h.cases[3];
-  ThermalResidual r;
+  constexpr std::size_t normals = N == 3 ? 2 : 3;
+  const LoadCaseResult<N>& thermal = h.cases[N];
+  ThermalResidual<N> r;
   r.delta_T = thermal.load.delta_T;
-  // The strain that takes the thermal case's mean stress off: C e = -sigma_T, e in Voigt
-  // (engineering shear).
-  const Stiffness<3> S = inverse(h.stiffness);
-  const std::array<double, 3> sigma{thermal.stress.xx, thermal.stress.yy, thermal.stress.xy};
-  std::array<double, 3> e{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) e[i] -= S[i][j] * sigma[j];
-  const std::array<double, 3> mean_strain{e[0], e[1], 0.5 * e[2]};  // tensor components
-  for (int k = 0; k < 3; ++k) r.expansion[k] = (thermal.load.strain[k] + mean_strain[k]) / r.delta_T;
-  // Each mechanical case's weight: that strain over the case's own.
-  std::vector<std::pair<double, const CaseFields*>> fields{{1.0, &thermal.fields}};
-  std::vector<std::pair<double, const std::vector<StressState>*>> stress{{1.0, &thermal.cell_stress}},
-      virial{{1.0, &thermal.virial_stress}};
-  for (int k = 0; k < 3; ++k) {
-    const LoadCaseResult& c = h.cases[k];
-    const double weight = mean_strain[k] / c.load.strain[k];
-    fields.push_back({weight, &c.fields});
-    stress.push_back({weight, &c.cell_stress});
-    virial.push_back({weight, &c.virial_stress});
+  // The (engineering) strain that takes the thermal case's mean stress off: C e = -sigma_T.
+  const Stiffness<N> S = inverse(stiffness);
+  std::array<double, N> e{};
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) e[i] -= S[i][j] * thermal.stress[j];
+  std::vector<std::pair<double, const SolvedState<N>*>> terms{{1.0, &thermal}};
+  for (std::size_t k = 0; k < N; ++k) {
+    const double tensor = k < normals ? e[k] : 0.5 * e[k];
+    r.expansion[k] = (thermal.load.strain[k] + tensor) / r.delta_T;
+    // Each mechanical case's weight: that strain over the case's own (both tensor components).
+    terms.push_back({tensor / h.cases[k].load.strain[k], &h.cases[k]});
   }
-  r.fields = superposed(fields);
-  r.cell_stress = superposed(stress);
-  r.virial_stress = superposed(virial);
-  fields[1].first += 1.0;
-  stress[1].first += 1.0;
-  virial[1].first += 1.0;
-  r.loaded_fields = superposed(fields);
-  r.loaded_stress = superposed(stress);
-  r.loaded_virial_stress = superposed(virial);
+  r.free = superposed(terms);
+  terms[1].first += 1.0;
+  r.loaded = superposed(terms);
   return r;
 }
 
-std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness<3>& c,
+template <std::size_t N>
+std::optional<std::array<double, N>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness<N>& c,
                                                      bool plane_stress) {
   if (phases.size() != 2) return std::nullopt;
-  std::array<double, 2> k{}, b{};
+  constexpr std::size_t normals = N == 3 ? 2 : 3;
+  std::array<double, 2> compliance{}, b{};  // 1 / (d K), the free expansion
   for (int i = 0; i < 2; ++i) {
     const Lame l = lame(phases[i], plane_stress);
-    k[i] = l.lambda + l.mu;
-    b[i] = free_expansion(phases[i], plane_stress);
+    compliance[i] = N == 3 ? 1 / (2 * (l.lambda + l.mu)) : 1.0 / (3.0 * l.lambda + 2.0 * l.mu);
+    b[i] = N == 3 ? free_expansion(phases[i], plane_stress) : phases[i].alpha;
   }
-  const double dk = 1 / (2 * k[0]) - 1 / (2 * k[1]);
-  if (std::abs(dk) <= 1e-12 * (1 / (2 * k[0]) + 1 / (2 * k[1]))) return std::nullopt;
-  const double P = -(b[0] - b[1]) / dk;
-  const double uniform = b[0] + P / (2 * k[0]);
-  const Stiffness<3> S = inverse(c);
-  std::array<double, 3> a{};
-  for (int i = 0; i < 3; ++i) a[i] = (i < 2 ? uniform : 0.0) - P * (S[i][0] + S[i][1]);
-  a[2] *= 0.5;  // engineering to tensor shear
+  const double dk = compliance[0] - compliance[1];
+  if (std::abs(dk) <= 1e-12 * (compliance[0] + compliance[1])) return std::nullopt;
+  const double P = (b[1] - b[0]) / dk;
+  const double uniform = b[0] + P * compliance[0];
+  const Stiffness<N> S = inverse(c);
+  std::array<double, N> a{};
+  for (std::size_t i = 0; i < N; ++i) {
+    double row = 0.0;
+    for (std::size_t j = 0; j < normals; ++j) row += S[i][j];
+    a[i] = (i < normals ? uniform : 0.0) - P * row * (i < normals ? 1.0 : 0.5);
+  }
   return a;
 }
+
+template ThermalResidual<3> thermal_residual(const PeriodicHomogenised<3>&, const Stiffness<3>&);
+template ThermalResidual<6> thermal_residual(const PeriodicHomogenised<6>&, const Stiffness<6>&);
+template std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>&, const Stiffness<3>&, bool);
+template std::optional<std::array<double, 6>> levin_expansion(const std::vector<FoamPhase>&, const Stiffness<6>&, bool);
 
 }  // namespace grainmesh

@@ -65,7 +65,7 @@ Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellat
 // stresses.thermal (the residual stress, free expansion) and stresses.thermal_xx (cooled,
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
 // relation by more than 1 % is a warning.
-void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffness<3>& C, const Tessellation& t,
+void add_thermal_answer(Answer& answer, const ThermalResidual<3>& r, const Stiffness<3>& C, const Tessellation& t,
                         const ExportMesh& e, const FoamOptions& foam,
                         std::vector<std::string>& warnings) {
   Json& effective = answer.effective;
@@ -78,7 +78,8 @@ void add_thermal_answer(Answer& answer, const ThermalResidual& r, const Stiffnes
                  "refine the mesh at the interfaces (mesh.boundary_size; see docs/run.md, Thermal residual stress)");
   effective["thermal"] = thermal;
   const Json stresses = phase_stresses_json(
-      {{"thermal", &r.cell_stress, -1, &r.virial_stress}, {"thermal_xx", &r.loaded_stress, 0, &r.loaded_virial_stress}},
+      {{"thermal", &r.free.cell_stress, -1, &r.free.virial_stress},
+       {"thermal_xx", &r.loaded.cell_stress, 0, &r.loaded.virial_stress}},
       t, e);
   for (const auto& [name, value] : stresses.items()) answer.stresses[name] = value;
 }
@@ -100,9 +101,9 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
   effective["strain_xx"] = h.strain_xx;
   effective.update(solve_json(h.run, dir));
   effective["volume_average"] = {{"modulus", h.volume_average_modulus},
-                                 {"sigma_xx", h.volume_average.xx},
-                                 {"sigma_yy", h.volume_average.yy},
-                                 {"sigma_xy", h.volume_average.xy}};
+                                 {"sigma_xx", h.volume_average[0]},
+                                 {"sigma_yy", h.volume_average[1]},
+                                 {"sigma_xy", h.volume_average[2]}};
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}}, foam.convert_to_meters);
   write_field_pictures(dir, h.fields, h.cell_stress, e, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
@@ -120,12 +121,9 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
 Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings) {
   const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
-  std::vector<std::filesystem::path> dirs, shown;
-  for (const LoadCase<3>& lc : periodic_load_cases(e, foam)) {
-    dirs.push_back(dir / load_case_dir(lc));
-    shown.push_back(staged.failed_dir() / load_case_dir(lc));
-  }
-  const PeriodicHomogenised h = solve_periodic(dirs, e, pm, foam, solves_side_by_side(foam.processes), deadline, shown);
+  const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
+  const PeriodicHomogenised<3> h = solve_periodic(load_case_dirs(loads, dir), e, pm, foam, solves_side_by_side(foam.processes),
+                                                  deadline, load_case_dirs(loads, staged.failed_dir()));
   const Stiffness<3>& C = h.stiffness;
   std::vector<StressedCase> stressed;
   for (int k = 0; k < 3; ++k)
@@ -144,24 +142,16 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   effective["volume_average"] = {{"stiffness", stiffness_json<3>(symmetric_part(h.volume_average_stiffness))}};
   std::vector<SolvedFields> solved;
   for (int k = 0; k < 3; ++k) solved.push_back({"_" + h.cases[k].load.name, &h.cases[k].fields, &h.cases[k].cell_stress});
-  std::optional<ThermalResidual> thermal;
+  std::optional<ThermalResidual<3>> thermal;
   if (foam.delta_T != 0.0) {
-    thermal = thermal_residual(h);
+    thermal = thermal_residual(h, h.stiffness);
     add_thermal_answer(answer, *thermal, C, t, e, foam, warnings);
-    solved.push_back({"_thermal", &thermal->fields, &thermal->cell_stress});
-    solved.push_back({"_thermal_xx", &thermal->loaded_fields, &thermal->loaded_stress});
+    solved.push_back({"_thermal", &thermal->free.fields, &thermal->free.cell_stress});
+    solved.push_back({"_thermal_xx", &thermal->loaded.fields, &thermal->loaded.cell_stress});
     if (picture_width > 0)
-      write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->cell_stress, t, e);
+      write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->free.cell_stress, t, e);
   }
-  Json cases = Json::array();
-  int corrections = 0;
-  for (const LoadCaseResult& r : h.cases) {
-    cases.push_back(load_case_json<3>(r.load.name, r.load.strain, {r.stress.xx, r.stress.yy, r.stress.xy},
-                                      r.load.delta_T, r.run, dir));
-    corrections = std::max(corrections, r.run.corrections);
-  }
-  effective["load_cases"] = cases;
-  effective["corrections"] = corrections;
+  add_load_cases(h, dir, effective);
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
   return answer;

@@ -8,7 +8,7 @@
 #include "analysis/bounds.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
-#include "analysis/thermal_3d.hpp"
+#include "analysis/thermal.hpp"
 #include "common/format.hpp"
 #include "pipelines/report_json.hpp"
 #include "pipelines/result_pictures.hpp"
@@ -84,31 +84,32 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
 // tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
-ThermalResidual3 add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised3& h, const Stiffness<6>& C,
-                                       const SolveInput3& in, std::vector<std::string>& warnings) {
-  const ThermalResidual3 r = thermal_residual_3d(h, C);
+ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const Stiffness<6>& C,
+                                         const SolveInput3& in, std::vector<std::string>& warnings) {
+  const ThermalResidual<6> r = thermal_residual(h, C);
   answer.effective["thermal_expansion"] = voigt_json<6>(r.expansion);
   Json thermal{{"delta_T", r.delta_T}};
-  if (const auto levin = levin_expansion_3d(in.e.phases, C))
+  if (const auto levin = levin_expansion(in.e.phases, C))
     add_levin<6>(r.expansion, *levin, thermal, warnings,
                  "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)");
   answer.effective["thermal"] = thermal;
-  answer.stresses["thermal"] = phase_stresses_json(r.fields, in, -1, &r.virial_stress);
-  answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded_fields, in, 0, &r.loaded_virial_stress);
-  write_state_pictures(in, r.fields, "thermal", "_thermal");
+  answer.stresses["thermal"] = phase_stresses_json(r.free.fields, in, -1, &r.free.virial_stress);
+  answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded.fields, in, 0, &r.loaded.virial_stress);
+  write_state_pictures(in, r.free.fields, "thermal", "_thermal");
   return r;
 }
 
 // results.vtu (unless pictures are off) of the periodic cases: each mechanical case's
 // fields suffixed _NAME, the thermal residual's _thermal and, cooled then pulled, _thermal_xx.
-void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised3& h, const ThermalResidual3* thermal) {
+void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised<6>& h,
+                                const ThermalResidual<6>* thermal) {
   if (in.picture_width == 0) return;
   std::vector<std::pair<std::string, const CaseFields*>> cases;
-  for (const LoadCaseResult3& r : h.cases)
+  for (const LoadCaseResult<6>& r : h.cases)
     if (r.load.delta_T == 0.0) cases.push_back({"_" + r.load.name, &r.fields});
   if (thermal != nullptr) {
-    cases.push_back({"_thermal", &thermal->fields});
-    cases.push_back({"_thermal_xx", &thermal->loaded_fields});
+    cases.push_back({"_thermal", &thermal->free.fields});
+    cases.push_back({"_thermal_xx", &thermal->loaded.fields});
   }
   write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), cases, in.foam.convert_to_meters);
 }
@@ -139,13 +140,10 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
 }
 
 Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
-  std::vector<std::filesystem::path> dirs, shown;
-  for (const LoadCase<6>& c : periodic_load_cases(in.e, in.foam)) {
-    dirs.push_back(in.dir / load_case_dir(c));
-    shown.push_back(in.staged.failed_dir() / load_case_dir(c));
-  }
-  const PeriodicHomogenised3 h =
-      solve_periodic_3d(dirs, in.e, in.fm, in.foam, solves_side_by_side(in.foam.processes), in.deadline, shown);
+  const std::vector<LoadCase<6>> loads = periodic_load_cases(in.e, in.foam);
+  const PeriodicHomogenised<6> h =
+      solve_periodic(load_case_dirs(loads, in.dir), in.e, in.fm, in.foam, solves_side_by_side(in.foam.processes),
+                     in.deadline, load_case_dirs(loads, in.staged.failed_dir()));
   const std::vector<double> fractions =
       phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
   const TensorBounds<6> bounds = tensor_bounds<6>(in.e.phases, fractions);
@@ -158,20 +156,14 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
                    "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
                    "order in the mesh size; see docs/3d.md, 3D cases and solves");
   add_engineering(engineering_constants(C), effective);
-  std::optional<ThermalResidual3> thermal;
+  std::optional<ThermalResidual<6>> thermal;
   if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, C, in, warnings);
-  Json cases = Json::array();
-  int corrections = 0;
-  for (std::size_t k = 0; k < h.cases.size(); ++k) {
-    const LoadCaseResult3& r = h.cases[k];
-    cases.push_back(load_case_json<6>(r.load.name, r.load.strain, r.stress, r.load.delta_T, r.run, in.dir));
-    corrections = std::max(corrections, r.run.corrections);
-    // The thermal case at its fixed strain is no state of its own: its free state is above.
-    if (r.load.delta_T == 0.0)
-      answer.stresses[r.load.name] = phase_stresses_json(r.fields, in, static_cast<int>(k), &r.virial_stress);
+  add_load_cases(h, in.dir, effective);
+  // The thermal case at its fixed strain is no state of its own: its free state is above.
+  for (std::size_t k = 0; k < 6; ++k) {
+    const LoadCaseResult<6>& r = h.cases[k];
+    answer.stresses[r.load.name] = phase_stresses_json(r.fields, in, static_cast<int>(k), &r.virial_stress);
   }
-  effective["load_cases"] = cases;
-  effective["corrections"] = corrections;
   write_state_pictures(in, h.cases[0].fields, "xx", "");
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);
   return answer;

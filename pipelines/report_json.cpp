@@ -1,5 +1,7 @@
 #include "pipelines/report_json.hpp"
 
+#include <algorithm>
+
 #include "common/format.hpp"
 
 namespace grainmesh {
@@ -57,12 +59,18 @@ Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
 }
 
 template <std::size_t N>
-Json load_case_json(const std::string& name, const std::array<double, N>& strain, const std::array<double, N>& stress,
-                    double delta_T, const SolveRun& r, const std::filesystem::path& dir) {
-  Json c{{"name", name}, {"strain", voigt_json<N>(strain)}, {"stress", voigt_json<N>(stress)}};
-  if (delta_T != 0.0) c["delta_T"] = delta_T;
-  c.update(solve_json(r, dir));
-  return c;
+void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path& dir, Json& effective) {
+  Json cases = Json::array();
+  int corrections = 0;
+  for (const LoadCaseResult<N>& r : h.cases) {
+    Json c{{"name", r.load.name}, {"strain", voigt_json<N>(r.load.strain)}, {"stress", voigt_json<N>(r.stress)}};
+    if (r.load.delta_T != 0.0) c["delta_T"] = r.load.delta_T;
+    c.update(solve_json(r.run, dir));
+    cases.push_back(c);
+    corrections = std::max(corrections, r.run.corrections);
+  }
+  effective["load_cases"] = cases;
+  effective["corrections"] = corrections;
 }
 
 Json distribution_json(const Distribution& d) {
@@ -140,10 +148,8 @@ template Json voigt_json<3>(const std::array<double, 3>&);
 template Json voigt_json<6>(const std::array<double, 6>&);
 template Json stiffness_json<3>(const Stiffness<3>&);
 template Json stiffness_json<6>(const Stiffness<6>&);
-template Json load_case_json<3>(const std::string&, const std::array<double, 3>&, const std::array<double, 3>&, double,
-                                const SolveRun&, const std::filesystem::path&);
-template Json load_case_json<6>(const std::string&, const std::array<double, 6>&, const std::array<double, 6>&, double,
-                                const SolveRun&, const std::filesystem::path&);
+template void add_load_cases(const PeriodicHomogenised<3>&, const std::filesystem::path&, Json&);
+template void add_load_cases(const PeriodicHomogenised<6>&, const std::filesystem::path&, Json&);
 template void add_stiffness<3>(const StiffnessVerdict<3>&, const TensorBounds<3>&, const std::vector<double>&, Json&,
                                std::vector<std::string>&, const std::string&, const std::string&);
 template void add_stiffness<6>(const StiffnessVerdict<6>&, const TensorBounds<6>&, const std::vector<double>&, Json&,

@@ -13,6 +13,7 @@
 #include "analysis/engineering.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/solve.hpp"
+#include "analysis/solved_state.hpp"
 #include "analysis/verdicts.hpp"
 #include "pipelines/report.hpp"
 
@@ -36,11 +37,11 @@ Json stiffness_json(const Stiffness<N>& c);
 // (relative to `dir`), OpenFOAM's steps' seconds.
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
 
-// A periodic load case: name, strain and stress (Voigt components, Pa), delta_T when
-// heated, then its solve.
+// The solved periodic load cases in `effective`: load_cases [{name, strain, stress (Voigt
+// components, Pa), delta_T when heated, then its solve}], and corrections, the most any
+// case took.
 template <std::size_t N>
-Json load_case_json(const std::string& name, const std::array<double, N>& strain, const std::array<double, N>& stress,
-                    double delta_T, const SolveRun& r, const std::filesystem::path& dir);
+void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path& dir, Json& effective);
 
 // A distribution: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d);

@@ -31,7 +31,8 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
   test::ScratchDir dir("laminate");
   const test::Material hard{600e9, 0.2};
   // The strips are 0.2 wide; at a contrast of 20 the interface error is larger, and
-  // the mesh finer there.
+  // the mesh finer there. Both orientations at the contrast of 3 (C11 and C22 trade
+  // places); the contrast of 20 across x only, its costly fine mesh once.
   // (The sanitizer build meshes ten times slower: the contrast of 3 alone there.)
 #ifdef GRAINMESH_SANITIZED
   for (const auto& [ratio, boundary_size] : {std::pair{3.0, 0.01}}) {
@@ -41,6 +42,7 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
     const test::Material soft{hard.E / ratio, 0.3};
     const std::array<double, 4> exact = test::laminate(hard, soft, 0.3);  // C11 C22 C12 C66, layers normal to x
     for (const bool normal_to_x : {true, false}) {
+      if (ratio != 3.0 && !normal_to_x) continue;
       INFO("ratio " << ratio << (normal_to_x ? ", layers normal to x" : ", layers normal to y"));
       const fs::path ini = dir / ("lam" + std::to_string(static_cast<int>(ratio)) + (normal_to_x ? "x" : "y") + ".ini");
       std::ofstream(ini) << test::laminate_config(hard, soft, normal_to_x, boundary_size);
