@@ -32,15 +32,14 @@ enum class Boundary {
 // The area average of the cell stresses of a solved case: xx, yy, xy (Pa).
 std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh& m);
 
-struct Homogenised {
+// The mixed load's state (its virial stresses not computed) and the modulus it gives.
+struct Homogenised : SolvedState<3> {
   double sigma_xx = 0.0;       // the force through `right` over its area
   double strain_xx = 0.0;      // the imposed mean strain: displacement / width
   double modulus = 0.0;        // sigma_xx / strain_xx
   std::array<double, 3> volume_average{};  // the area average of the cell stresses: xx, yy, xy
   double volume_average_modulus = 0.0;
   SolveRun run;
-  CaseFields fields;           // the solution's cell fields
-  std::vector<StressState> cell_stress;  // recovered phase by phase (stress_recovery.hpp)
 };
 
 // Solves the case that write_foam_case wrote into `case_dir` (`pm` is what it returned)

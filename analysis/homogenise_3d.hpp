@@ -46,9 +46,8 @@ PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& 
 // straining sideways): solved, the mean stress through right from the force there (sigma's
 // face values, S . sigma_f), the strain displacement / width, their ratio the modulus
 // under uniaxial strain (C11 of an isotropic cell). Errors as run_solver.
-struct Mixed3 {
+struct Mixed3 : SolvedState<6> {  // its virial stresses not computed
   SolveRun run;
-  CaseFields fields;
   double sigma_xx = 0.0, strain_xx = 0.0, modulus = 0.0;
 };
 Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& m, const FoamMesh3& fm,

@@ -35,6 +35,19 @@ SolvedState<N> superposed(const std::vector<std::pair<double, const SolvedState<
 }
 
 template <std::size_t N>
+std::vector<StressTensor> cell_stress_tensors(const SolvedState<N>& s, bool virial) {
+  if constexpr (N == 3) {
+    return stress_tensors(s.cell_stress, virial ? &s.virial_stress : nullptr);
+  } else {
+    const FieldValues& cells = virial ? s.virial_stress : s.fields.stress;
+    std::vector<StressTensor> out;
+    out.reserve(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c) out.push_back(openfoam_stress(cells[c]));
+    return out;
+  }
+}
+
+template <std::size_t N>
 void assemble_stiffness(PeriodicHomogenised<N>& h) {
   constexpr std::size_t normals = N == 3 ? 2 : 3;  // the normal components come first
   for (std::size_t k = 0; k < N; ++k) {
@@ -49,6 +62,8 @@ void assemble_stiffness(PeriodicHomogenised<N>& h) {
 
 template SolvedState<3> superposed(const std::vector<std::pair<double, const SolvedState<3>*>>&);
 template SolvedState<6> superposed(const std::vector<std::pair<double, const SolvedState<6>*>>&);
+template std::vector<StressTensor> cell_stress_tensors(const SolvedState<3>&, bool);
+template std::vector<StressTensor> cell_stress_tensors(const SolvedState<6>&, bool);
 template void assemble_stiffness(PeriodicHomogenised<3>&);
 template void assemble_stiffness(PeriodicHomogenised<6>&);
 

@@ -39,6 +39,12 @@ struct SolvedState<6> {
 template <std::size_t N>
 SolvedState<N> superposed(const std::vector<std::pair<double, const SolvedState<N>*>>& terms);
 
+// Each cell's stress tensor in `s` (2D: the recovered one, its sigma_zz the plane state's;
+// 3D: OpenFOAM's); with `virial`, each cell's virial stress instead (2D: in plane, sigma_zz
+// still the recovered one).
+template <std::size_t N>
+std::vector<StressTensor> cell_stress_tensors(const SolvedState<N>& s, bool virial = false);
+
 // A solved periodic load case: its state, the mean stress from the forces through the
 // sides (exact for the discrete solution), the volume (2D: area) average of the cell
 // stresses beside it (biased: it mixes the phases in cells next to interfaces), and the

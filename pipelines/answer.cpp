@@ -1,13 +1,9 @@
 #include "pipelines/answer.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
 #include <optional>
 
 #include "analysis/bounds.hpp"
 #include "analysis/check_mesh.hpp"
-#include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
@@ -26,39 +22,20 @@ void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline,
 
 namespace {
 
-// A solved load case: its name in the report, its recovered cell stresses, its loaded
-// component's Voigt index (0 xx, 1 yy, 5 xy; -1 none: the thermal residual's mean is zero).
-struct StressedCase {
-  std::string name;
-  const std::vector<StressState>* cell_stress;
-  int loaded;
-  const std::vector<StressState>* balanced = nullptr;  // the virial stresses, for the means (periodic)
-};
-
 std::vector<double> achieved_fractions(const Tessellation& t) {
   std::vector<double> fractions;
   for (const PhaseStats& p : t.stats.phases) fractions.push_back(p.achieved_fraction);
   return fractions;
 }
 
-// `stresses` {CASE: {PHASE: ...}} (report_json.hpp's phase_stresses_json), Pa, from the
-// recovered cell stresses, each weighted by its area.
-Json phase_stresses_json(const std::vector<StressedCase>& cases, const Tessellation& t, const ExportMesh& e) {
-  Json out;
+// `stresses.CASE` of a solved state, each cell weighted by its area; `loaded` the loaded
+// component's Voigt index (0 xx, 1 yy, 5 xy; -1 none: the thermal residual's mean is
+// zero); `balanced`: the means from the virial stresses (periodic).
+Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const ExportMesh& e, int loaded, bool balanced) {
   std::vector<double> area(e.mesh.cells());
   for (std::size_t k = 0; k < area.size(); ++k) area[k] = cell_area(e.mesh, k);
-  const std::vector<std::string> names = phase_names(t);
-  for (const StressedCase& c : cases) {
-    const std::vector<StressTensor> own = stress_tensors(*c.cell_stress);
-    const std::vector<StressTensor> balanced =
-        c.balanced ? stress_tensors(*c.cell_stress, c.balanced) : std::vector<StressTensor>{};
-    out[c.name] = phase_stresses_json(
-        phase_stresses(own, area, e.phase, static_cast<int>(names.size()), c.loaded, c.balanced ? &balanced : nullptr),
-        names);
-  }
-  return out;
+  return state_stresses_json(s, area, e.phase, phase_names(t), loaded, balanced);
 }
-
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx, yy, xy}
 // (1/K), effective.thermal {delta_T, plane_state, levin, levin_difference}, and
@@ -77,11 +54,8 @@ void add_thermal_answer(Answer& answer, const ThermalResidual<3>& r, const Stiff
     add_levin<3>(r.expansion, *levin, thermal, warnings,
                  "refine the mesh at the interfaces (mesh.boundary_size; see docs/run.md, Thermal residual stress)");
   effective["thermal"] = thermal;
-  const Json stresses = phase_stresses_json(
-      {{"thermal", &r.free.cell_stress, -1, &r.free.virial_stress},
-       {"thermal_xx", &r.loaded.cell_stress, 0, &r.loaded.virial_stress}},
-      t, e);
-  for (const auto& [name, value] : stresses.items()) answer.stresses[name] = value;
+  answer.stresses["thermal"] = state_stresses(r.free, t, e, -1, true);
+  answer.stresses["thermal_xx"] = state_stresses(r.loaded, t, e, 0, true);
 }
 
 }  // namespace
@@ -91,9 +65,8 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
 
   const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
-  const StressedCase stressed{"mixed", &h.cell_stress, 0};
-  answer.stresses = phase_stresses_json({stressed}, t, e);
-  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed.name, h.cell_stress, t, e);
+  answer.stresses["mixed"] = state_stresses(h, t, e, 0, false);
+  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", "mixed", h.cell_stress, t, e);
   Json& effective = answer.effective;
   effective["boundary"] = "mixed";
   effective["modulus"] = h.modulus;
@@ -125,12 +98,10 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   const PeriodicHomogenised<3> h = solve_periodic(load_case_dirs(loads, dir), e, pm, foam, solves_side_by_side(foam.processes),
                                                   deadline, load_case_dirs(loads, staged.failed_dir()));
   const Stiffness<3>& C = h.stiffness;
-  std::vector<StressedCase> stressed;
-  for (int k = 0; k < 3; ++k)
-    stressed.push_back({h.cases[k].load.name, &h.cases[k].cell_stress, k == 2 ? 5 : k, &h.cases[k].virial_stress});
   Answer answer;
-  answer.stresses = phase_stresses_json(stressed, t, e);
-  if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", stressed[0].name, *stressed[0].cell_stress, t, e);
+  for (int k = 0; k < 3; ++k) answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k == 2 ? 5 : k, true);
+  if (picture_width > 0)
+    write_stress_histogram(dir / "stress_histogram.png", h.cases[0].load.name, h.cases[0].cell_stress, t, e);
   Json& effective = answer.effective;
   const std::vector<double> fractions = achieved_fractions(t);
   const TensorBounds<3> bounds = tensor_bounds<3>(e.phases, fractions, foam.plane_stress);

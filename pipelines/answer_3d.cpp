@@ -1,7 +1,5 @@
 #include "pipelines/answer_3d.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <optional>
 #include <tuple>
 
@@ -21,19 +19,11 @@ namespace {
 
 std::vector<std::string> phase_names(const SolveInput3& in);
 
-// {PHASE: ...} of one solved state (report_json.hpp's phase_stresses_json), Pa, each cell
-// weighted by its volume; `loaded` the loaded component's Voigt index (-1 none); the means
-// from the virial stresses when given (a periodic case's).
-Json phase_stresses_json(const CaseFields& fields, const SolveInput3& in, int loaded,
-                         const FieldValues* balanced = nullptr) {
-  std::vector<StressTensor> own, virial;
-  for (std::size_t c = 0; c < fields.stress.size(); ++c) {
-    own.push_back(openfoam_stress(fields.stress[c]));
-    if (balanced) virial.push_back(openfoam_stress((*balanced)[c]));
-  }
-  return phase_stresses_json(phase_stresses(own, in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()),
-                                            loaded, balanced ? &virial : nullptr),
-                             phase_names(in));
+// `stresses.CASE` of a solved state, each cell weighted by its volume; `loaded` the loaded
+// component's Voigt index (-1 none); `balanced`: the means from the virial stresses
+// (a periodic case's).
+Json state_stresses(const SolvedState<6>& s, const SolveInput3& in, int loaded, bool balanced) {
+  return state_stresses_json(s, in.fm.volume, in.fm.phase, phase_names(in), loaded, balanced);
 }
 
 std::vector<std::string> phase_names(const SolveInput3& in) {
@@ -93,8 +83,8 @@ ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenis
     add_levin<6>(r.expansion, *levin, thermal, warnings,
                  "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)");
   answer.effective["thermal"] = thermal;
-  answer.stresses["thermal"] = phase_stresses_json(r.free.fields, in, -1, &r.free.virial_stress);
-  answer.stresses["thermal_xx"] = phase_stresses_json(r.loaded.fields, in, 0, &r.loaded.virial_stress);
+  answer.stresses["thermal"] = state_stresses(r.free, in, -1, true);
+  answer.stresses["thermal_xx"] = state_stresses(r.loaded, in, 0, true);
   write_state_pictures(in, r.free.fields, "thermal", "_thermal");
   return r;
 }
@@ -119,7 +109,7 @@ void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised
 Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
   const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
   Answer answer;
-  answer.stresses["mixed"] = phase_stresses_json(h.fields, in, 0);
+  answer.stresses["mixed"] = state_stresses(h, in, 0, false);
   write_state_pictures(in, h.fields, "mixed", "");
   if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), {{"", &h.fields}}, in.foam.convert_to_meters);
   Json& effective = answer.effective;
@@ -162,7 +152,7 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
   // The thermal case at its fixed strain is no state of its own: its free state is above.
   for (std::size_t k = 0; k < 6; ++k) {
     const LoadCaseResult<6>& r = h.cases[k];
-    answer.stresses[r.load.name] = phase_stresses_json(r.fields, in, static_cast<int>(k), &r.virial_stress);
+    answer.stresses[r.load.name] = state_stresses(r, in, static_cast<int>(k), true);
   }
   write_state_pictures(in, h.cases[0].fields, "xx", "");
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);

@@ -73,6 +73,15 @@ void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path
   effective["corrections"] = corrections;
 }
 
+template <std::size_t N>
+Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& weight, const std::vector<int>& phase,
+                         const std::vector<std::string>& names, int loaded, bool balanced) {
+  const std::vector<StressTensor> own = cell_stress_tensors(s);
+  const std::vector<StressTensor> virial = balanced ? cell_stress_tensors(s, true) : std::vector<StressTensor>{};
+  return phase_stresses_json(
+      phase_stresses(own, weight, phase, static_cast<int>(names.size()), loaded, balanced ? &virial : nullptr), names);
+}
+
 Json distribution_json(const Distribution& d) {
   return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
 }
@@ -148,6 +157,10 @@ template Json voigt_json<3>(const std::array<double, 3>&);
 template Json voigt_json<6>(const std::array<double, 6>&);
 template Json stiffness_json<3>(const Stiffness<3>&);
 template Json stiffness_json<6>(const Stiffness<6>&);
+template Json state_stresses_json(const SolvedState<3>&, const std::vector<double>&, const std::vector<int>&,
+                                  const std::vector<std::string>&, int, bool);
+template Json state_stresses_json(const SolvedState<6>&, const std::vector<double>&, const std::vector<int>&,
+                                  const std::vector<std::string>&, int, bool);
 template void add_load_cases(const PeriodicHomogenised<3>&, const std::filesystem::path&, Json&);
 template void add_load_cases(const PeriodicHomogenised<6>&, const std::filesystem::path&, Json&);
 template void add_stiffness<3>(const StiffnessVerdict<3>&, const TensorBounds<3>&, const std::vector<double>&, Json&,

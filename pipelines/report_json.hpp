@@ -37,6 +37,14 @@ Json stiffness_json(const Stiffness<N>& c);
 // (relative to `dir`), OpenFOAM's steps' seconds.
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
 
+// `stresses.CASE` of one solved state (phase_stresses_json): each cell weighted by
+// `weight` (its area or volume) in its `phase` (indices into `names`); `loaded` the Voigt
+// index (0 xx ... 5 xy) of the loaded component, -1 none; with `balanced`, the means from
+// the cells' virial stresses (a periodic case's).
+template <std::size_t N>
+Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& weight, const std::vector<int>& phase,
+                         const std::vector<std::string>& names, int loaded, bool balanced);
+
 // The solved periodic load cases in `effective`: load_cases [{name, strain, stress (Voigt
 // components, Pa), delta_T when heated, then its solve}], and corrections, the most any
 // case took.
