@@ -64,8 +64,9 @@ std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOpti
 // A failing case throws SolveError naming it (the first in order when several fail).
 // `cases_shown_as`: where the cases are to be found if they fail (or empty).
 PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
-                                   const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline = {},
-                                   const std::vector<std::filesystem::path>& cases_shown_as = {});
+                                      const PolyMesh& pm, const FoamOptions& o, int parallel,
+                                      const Deadline& deadline = {},
+                                      const std::vector<std::filesystem::path>& cases_shown_as = {});
 
 
 }  // namespace grainmesh

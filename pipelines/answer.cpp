@@ -95,8 +95,9 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
 
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
-  const PeriodicHomogenised<3> h = solve_periodic(load_case_dirs(loads, dir), e, pm, foam, solves_side_by_side(foam.processes),
-                                                  deadline, load_case_dirs(loads, staged.failed_dir()));
+  const PeriodicHomogenised<3> h =
+      solve_periodic(load_case_dirs(loads, dir), e, pm, foam, solves_side_by_side(foam.processes), deadline,
+                     load_case_dirs(loads, staged.failed_dir()));
   const Stiffness<3>& C = h.stiffness;
   Answer answer;
   for (int k = 0; k < 3; ++k) answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k == 2 ? 5 : k, true);
