@@ -100,7 +100,8 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
                      load_case_dirs(loads, staged.failed_dir()));
   const Stiffness<3>& C = h.stiffness;
   Answer answer;
-  for (int k = 0; k < 3; ++k) answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k == 2 ? 5 : k, true);
+  for (int k = 0; k < 3; ++k)
+    answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k == 2 ? 5 : k, true);
   if (picture_width > 0)
     write_stress_histogram(dir / "stress_histogram.png", h.cases[0].load.name, h.cases[0].cell_stress, t, e);
   Json& effective = answer.effective;
