@@ -25,16 +25,11 @@ std::pair<double, double> hashin_shtrikman(const Moduli& r, const Moduli& o, dou
   return {K, mu};
 }
 
-template <std::size_t N>
-constexpr int dimensions() {
-  return N == 3 ? 2 : 3;
-}
-
 }  // namespace
 
 template <std::size_t N>
 Stiffness<N> isotropic_stiffness(const FoamPhase& phase, bool plane_stress) {
-  constexpr int d = dimensions<N>();
+  constexpr int d = static_cast<int>(voigt_dimensions<N>());
   const Moduli m = moduli(phase, d, plane_stress);
   Stiffness<N> c{};
   for (int i = 0; i < d; ++i) {
@@ -48,7 +43,7 @@ Stiffness<N> isotropic_stiffness(const FoamPhase& phase, bool plane_stress) {
 template <std::size_t N>
 TensorBounds<N> tensor_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
                               bool plane_stress) {
-  constexpr int d = dimensions<N>();
+  constexpr int d = static_cast<int>(voigt_dimensions<N>());
   TensorBounds<N> b;
   Stiffness<N> compliance{};
   for (std::size_t p = 0; p < phases.size(); ++p) {

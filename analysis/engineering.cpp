@@ -13,15 +13,12 @@ double EngineeringConstants::operator[](const std::string& name) const {
 
 template <std::size_t N>
 EngineeringConstants engineering_constants(const Stiffness<N>& c) {
-  constexpr std::size_t d = N == 3 ? 2 : 3;  // normal directions, the first d Voigt indices
+  constexpr std::size_t d = voigt_dimensions<N>();  // normal directions, the first d Voigt indices
   static const char* axis = "xyz";
-  static const char* shear3[] = {"xy"};
-  static const char* shear6[] = {"yz", "xz", "xy"};
   const Stiffness<N> s = inverse(c);
   EngineeringConstants e;
   for (std::size_t i = 0; i < d; ++i) e.constants.push_back({std::string("E_") + axis[i], 1 / s[i][i]});
-  for (std::size_t k = d; k < N; ++k)
-    e.constants.push_back({std::string("G_") + (N == 3 ? shear3[k - d] : shear6[k - d]), 1 / s[k][k]});
+  for (std::size_t k = d; k < N; ++k) e.constants.push_back({std::string("G_") + voigt_names<N>()[k], 1 / s[k][k]});
   for (std::size_t i = 0; i < d; ++i)
     for (std::size_t j = 0; j < d; ++j)
       if (i != j) e.constants.push_back({std::string("nu_") + axis[i] + axis[j], -s[j][i] / s[i][i]});

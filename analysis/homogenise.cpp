@@ -27,9 +27,7 @@ std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh&
 }
 
 std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
-  const double strain = load_strain(foam_cell(m), o);
-  std::vector<LoadCase<3>> cases{LoadCase<3>{"xx", {strain, 0.0, 0.0}}, LoadCase<3>{"yy", {0.0, strain, 0.0}},
-                                 LoadCase<3>{"xy", {0.0, 0.0, 0.5 * strain}}};
+  std::vector<LoadCase<3>> cases = mechanical_load_cases<3>(load_strain(foam_cell(m), o));
   if (o.delta_T == 0.0) return cases;
   double area = 0.0, free = 0.0;
   for (std::size_t t = 0; t < m.phase.size(); ++t) {
@@ -38,7 +36,7 @@ std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOpti
     free += a * free_expansion(m.phases[m.phase[t]], o.plane_stress);
   }
   const double e = free / area * o.delta_T;
-  cases.push_back(LoadCase<3>{"thermal", {e, e, 0.0}, o.delta_T});
+  cases.push_back(thermal_load_case<3>(e, o.delta_T));
   return cases;
 }
 

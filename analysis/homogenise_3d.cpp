@@ -61,14 +61,7 @@ Voigt6 volume_average(const CaseFields& fields, const FoamMesh3& fm) {
 }  // namespace
 
 std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o) {
-  const double e = load_strain(foam_cell(m), o);
-  std::vector<LoadCase<6>> cases;
-  const char* names[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
-  for (int k = 0; k < 6; ++k) {
-    LoadCase<6> c{names[k], {}};
-    c.strain[static_cast<std::size_t>(k)] = k < 3 ? e : 0.5 * e;
-    cases.push_back(c);
-  }
+  std::vector<LoadCase<6>> cases = mechanical_load_cases<6>(load_strain(foam_cell(m), o));
   if (o.delta_T == 0.0) return cases;
   std::vector<double> volume;
   for (const auto& v : m.mesh.tets) {
@@ -78,8 +71,7 @@ std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOpt
   const std::vector<double> fraction = phase_volume_fractions(volume, m.phase, static_cast<int>(m.phases.size()));
   double free = 0.0;
   for (std::size_t p = 0; p < fraction.size(); ++p) free += fraction[p] * m.phases[p].alpha;
-  const double strain = free * o.delta_T;
-  cases.push_back(LoadCase<6>{"thermal", {strain, strain, strain, 0.0, 0.0, 0.0}, o.delta_T});
+  cases.push_back(thermal_load_case<6>(free * o.delta_T, o.delta_T));
   return cases;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/voigt.hpp"
 #include "export/foam_options.hpp"
 
 namespace grainmesh {
@@ -21,6 +22,17 @@ struct LoadCase {
   std::array<double, N> strain{};  // tensor components
   double delta_T = 0.0;           // K
 };
+
+// The mechanical load cases of a periodic cell at the mean strain e: one per Voigt
+// component, in its order and named by it, e in a normal component, an engineering shear
+// e (the tensor component e / 2) in a shear one.
+template <std::size_t N>
+std::vector<LoadCase<N>> mechanical_load_cases(double e);
+
+// The thermal load case, `thermal`: the temperature change delta_T at the strain `free` in
+// every normal direction (the phases' mean free strain), no shear.
+template <std::size_t N>
+LoadCase<N> thermal_load_case(double free, double delta_T);
 
 // The case directory of a load case: case_NAME.
 template <std::size_t N>

@@ -82,12 +82,9 @@ std::vector<PhaseStresses> phase_stresses(const std::vector<StressTensor>& stres
 
 std::vector<std::vector<Vec2>> von_mises_histograms(const std::vector<StressState>& cell_stress, const CellMesh& mesh,
                                                     const std::vector<int>& phase, int phases, int bins) {
-  std::vector<double> mises, area;
-  for (std::size_t k = 0; k < cell_stress.size(); ++k) {
-    mises.push_back(von_mises(cell_stress[k]));
-    area.push_back(cell_area(mesh, k));
-  }
-  return phase_histograms(mises, area, phase, phases, bins);
+  std::vector<double> mises;
+  for (const StressState& s : cell_stress) mises.push_back(von_mises(s));
+  return phase_histograms(mises, cell_areas(mesh), phase, phases, bins);
 }
 
 std::vector<std::vector<Vec2>> phase_histograms(const std::vector<double>& values, const std::vector<double>& weights,

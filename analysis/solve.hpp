@@ -27,18 +27,18 @@ struct SolveRun {
   double solver_seconds = 0.0, decompose_seconds = 0.0, reconstruct_seconds = 0.0;
 };
 
-// Runs solidDisplacementFoam in `case_dir` (written by write_foam_case, or
-// write_foam_case_3d, for a mesh of `cell` with `o`),
-// following its log: it is stopped once converged (solve_monitor.hpp), or killed within
-// a few hundred corrections of stalling or diverging. A case whose multigrid linear solver
-// diverges is solved again from its start with conjugate gradients (SolveRun says so). Throws IoError when OpenFOAM is
-// missing, SolveError (one line naming the field and `load_case` when given, what
-// happened and what to do, and the log as found under `case_shown_as`, when given) when
-// it fails, and TimeLimitError when `deadline` passes.
 // How many cases to solve side by side when each runs on `processes` MPI processes: as
 // many as the machine's cores take, at least one.
 int solves_side_by_side(int processes);
 
+// Runs solidDisplacementFoam in `case_dir` (written by write_foam_case, or
+// write_foam_case_3d, for a mesh of `cell` with `o`), following its log: it is stopped
+// once converged (solve_monitor.hpp), or killed within a few hundred corrections of
+// stalling or diverging. A case whose multigrid linear solver diverges is solved again
+// from its start with conjugate gradients (SolveRun says so). Throws IoError when
+// OpenFOAM is missing, SolveError (one line naming the field and `load_case` when given,
+// what happened and what to do, and the log as found under `case_shown_as`, when given)
+// when it fails, and TimeLimitError when `deadline` passes.
 SolveRun run_solver(const std::filesystem::path& case_dir, const FoamCell& cell, const FoamOptions& o,
                     const Deadline& deadline = {}, const std::filesystem::path& case_shown_as = {},
                     const std::string& load_case = {});

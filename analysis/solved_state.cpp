@@ -49,7 +49,7 @@ std::vector<StressTensor> cell_stress_tensors(const SolvedState<N>& s, bool viri
 
 template <std::size_t N>
 void assemble_stiffness(PeriodicHomogenised<N>& h) {
-  constexpr std::size_t normals = N == 3 ? 2 : 3;  // the normal components come first
+  constexpr std::size_t normals = voigt_dimensions<N>();
   for (std::size_t k = 0; k < N; ++k) {
     const LoadCaseResult<N>& r = h.cases[k];
     const double e = k < normals ? r.load.strain[k] : 2.0 * r.load.strain[k];  // engineering

@@ -7,15 +7,15 @@
 namespace grainmesh {
 
 template <std::size_t N>
-ThermalResidual<N> thermal_residual(const PeriodicHomogenised<N>& h, const Stiffness<N>& stiffness) {
+ThermalResidual<N> thermal_residual(const PeriodicHomogenised<N>& h) {
   if (h.cases.size() != N + 1 || h.cases[N].load.delta_T == 0.0)
     throw GeometryError("thermal_residual: the load cases hold no thermal case");
-  constexpr std::size_t normals = N == 3 ? 2 : 3;
+  constexpr std::size_t normals = voigt_dimensions<N>();
   const LoadCaseResult<N>& thermal = h.cases[N];
   ThermalResidual<N> r;
   r.delta_T = thermal.load.delta_T;
   // The (engineering) strain that takes the thermal case's mean stress off: C e = -sigma_T.
-  const Stiffness<N> S = inverse(stiffness);
+  const Stiffness<N> S = inverse(h.stiffness);
   std::array<double, N> e{};
   for (std::size_t i = 0; i < N; ++i)
     for (std::size_t j = 0; j < N; ++j) e[i] -= S[i][j] * thermal.stress[j];
@@ -36,11 +36,12 @@ template <std::size_t N>
 std::optional<std::array<double, N>> levin_expansion(const std::vector<FoamPhase>& phases, const Stiffness<N>& c,
                                                      bool plane_stress) {
   if (phases.size() != 2) return std::nullopt;
-  constexpr std::size_t normals = N == 3 ? 2 : 3;
-  std::array<double, 2> compliance{}, b{};  // 1 / (d K), the free expansion
+  constexpr std::size_t normals = voigt_dimensions<N>();
+  std::array<double, 2> compliance{}, b{};  // 1 / (d K) = 1 / (d lambda + 2 mu), the free expansion
   for (int i = 0; i < 2; ++i) {
     const Lame l = lame(phases[i], plane_stress);
-    compliance[i] = N == 3 ? 1 / (2 * (l.lambda + l.mu)) : 1.0 / (3.0 * l.lambda + 2.0 * l.mu);
+    compliance[i] = 1.0 / (static_cast<double>(normals) * l.lambda + 2.0 * l.mu);
+    // In 2D the in-plane free expansion under the plane state; in 3D alpha itself.
     b[i] = N == 3 ? free_expansion(phases[i], plane_stress) : phases[i].alpha;
   }
   const double dk = compliance[0] - compliance[1];
@@ -57,8 +58,8 @@ std::optional<std::array<double, N>> levin_expansion(const std::vector<FoamPhase
   return a;
 }
 
-template ThermalResidual<3> thermal_residual(const PeriodicHomogenised<3>&, const Stiffness<3>&);
-template ThermalResidual<6> thermal_residual(const PeriodicHomogenised<6>&, const Stiffness<6>&);
+template ThermalResidual<3> thermal_residual(const PeriodicHomogenised<3>&);
+template ThermalResidual<6> thermal_residual(const PeriodicHomogenised<6>&);
 template std::optional<std::array<double, 3>> levin_expansion(const std::vector<FoamPhase>&, const Stiffness<3>&, bool);
 template std::optional<std::array<double, 6>> levin_expansion(const std::vector<FoamPhase>&, const Stiffness<6>&, bool);
 

@@ -31,9 +31,12 @@ struct ThermalResidual {
 };
 
 // From solved periodic cases with a thermal case last (periodic_load_cases with delta_T),
-// freed with `stiffness`. Throws GeometryError when there is none.
+// freed with the stiffness as solved (h.stiffness, not its symmetric part): its columns
+// are the mechanical cases' own mean stresses, so the free state's mean stress is zero to
+// rounding (the symmetric part would leave the symmetry error's share of sigma_T). Throws
+// GeometryError when there is no thermal case.
 template <std::size_t N>
-ThermalResidual<N> thermal_residual(const PeriodicHomogenised<N>& h, const Stiffness<N>& stiffness);
+ThermalResidual<N> thermal_residual(const PeriodicHomogenised<N>& h);
 
 // Levin's exact relation for two isotropic phases (any microstructure): a uniform pressure
 // p that strains both phases alike, p / (d K_i) + b_i delta_T equal for both (d the

@@ -9,6 +9,17 @@
 namespace grainmesh {
 
 template <std::size_t N>
+const std::array<const char*, N>& voigt_names() {
+  if constexpr (N == 3) {
+    static const std::array<const char*, 3> names{"xx", "yy", "xy"};
+    return names;
+  } else {
+    static const std::array<const char*, 6> names{"xx", "yy", "zz", "yz", "xz", "xy"};
+    return names;
+  }
+}
+
+template <std::size_t N>
 double largest_entry(const Stiffness<N>& c) {
   double scale = 0.0;
   for (const auto& row : c)
@@ -97,6 +108,7 @@ double shear_modulus(const Stiffness<N>& c) {
 }
 
 #define GRAINMESH_VOIGT(N)                                                                     \
+  template const std::array<const char*, N>& voigt_names<N>();                                \
   template double largest_entry<N>(const Stiffness<N>&);                                      \
   template Stiffness<N> inverse<N>(const Stiffness<N>&);                                      \
   template bool semidefinite_order<N>(const Stiffness<N>&, const Stiffness<N>&, double);      \

@@ -14,6 +14,24 @@ using Stiffness = std::array<std::array<double, N>, N>;
 
 // The Voigt size of a dimension: 3 in 2D, 6 in 3D.
 constexpr std::size_t voigt_size(int dimensions) { return dimensions == 2 ? 3 : 6; }
+// The dimensions of Voigt size N: 2 for N = 3, 3 for N = 6; also how many normal
+// components (xx, yy[, zz]) come first, the shears after them.
+template <std::size_t N>
+constexpr std::size_t voigt_dimensions() {
+  return N == 3 ? 2 : 3;
+}
+
+// The components of a symmetric tensor in Voigt order: xx, yy, xy (N = 3) or xx, yy, zz,
+// yz, xz, xy (N = 6); the names of load cases, report fields and engineering constants.
+template <std::size_t N>
+const std::array<const char*, N>& voigt_names();
+
+// The index of Voigt-N component k among the six of the 3D tensor (xx yy zz yz xz xy):
+// 2D's xx, yy, xy are 0, 1, 5.
+template <std::size_t N>
+constexpr std::size_t tensor_index(std::size_t k) {
+  return N == 3 && k == 2 ? 5 : k;
+}
 
 // The largest |entry|.
 template <std::size_t N>

@@ -44,6 +44,12 @@ double cell_area(const CellMesh& mesh, std::size_t c) {
   return ring_area(v.size(), [&](std::size_t k) { return mesh.points[v[k]]; });
 }
 
+std::vector<double> cell_areas(const CellMesh& mesh) {
+  std::vector<double> out(mesh.cells());
+  for (std::size_t c = 0; c < out.size(); ++c) out[c] = cell_area(mesh, c);
+  return out;
+}
+
 Vec2 cell_centroid(const CellMesh& mesh, std::size_t c) {
   const std::span<const int> v = mesh.cell(c);
   if (v.size() == 3) return (mesh.points[v[0]] + mesh.points[v[1]] + mesh.points[v[2]]) / 3.0;  // as triangle_centroid

@@ -36,6 +36,8 @@ std::optional<TriMesh> as_triangles(const CellMesh& mesh);
 // triangle_centroid's bits). No allocation: these run once per cell in every stage.
 double cell_area(const CellMesh& mesh, std::size_t c);
 Vec2 cell_centroid(const CellMesh& mesh, std::size_t c);
+// Every cell's cell_area, in order.
+std::vector<double> cell_areas(const CellMesh& mesh);
 
 // Triangles and cells read alike, for code written once for both (the conformity checker,
 // the VTU and PNG writers) without copying a triangle mesh into a CellMesh.

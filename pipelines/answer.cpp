@@ -29,28 +29,26 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
 }
 
 // `stresses.CASE` of a solved state, each cell weighted by its area; `loaded` the loaded
-// component's Voigt index (0 xx, 1 yy, 5 xy; -1 none: the thermal residual's mean is
-// zero); `balanced`: the means from the virial stresses (periodic).
+// component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero); `balanced`:
+// the means from the virial stresses (periodic).
 Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const ExportMesh& e, int loaded, bool balanced) {
-  std::vector<double> area(e.mesh.cells());
-  for (std::size_t k = 0; k < area.size(); ++k) area[k] = cell_area(e.mesh, k);
-  return state_stresses_json(s, area, e.phase, phase_names(t), loaded, balanced);
+  return state_stresses_json(s, cell_areas(e.mesh), e.phase, phase_names(t), loaded, balanced);
 }
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx, yy, xy}
 // (1/K), effective.thermal {delta_T, plane_state, levin, levin_difference}, and
 // stresses.thermal (the residual stress, free expansion) and stresses.thermal_xx (cooled,
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
-// relation by more than 1 % is a warning.
-void add_thermal_answer(Answer& answer, const ThermalResidual<3>& r, const Stiffness<3>& C, const Tessellation& t,
-                        const ExportMesh& e, const FoamOptions& foam,
+// relation (with the stiffness it was freed with, as solved) by more than 1 % is a warning.
+void add_thermal_answer(Answer& answer, const PeriodicHomogenised<3>& h, const ThermalResidual<3>& r,
+                        const Tessellation& t, const ExportMesh& e, const FoamOptions& foam,
                         std::vector<std::string>& warnings) {
   Json& effective = answer.effective;
   effective["thermal_expansion"] = voigt_json<3>(r.expansion);
   // In plane strain the cell is held out of plane: one material expands (1 + nu) alpha in
   // plane, and carries sigma_zz; in plane stress alpha (docs/run.md, Thermal residual stress).
   Json thermal{{"delta_T", r.delta_T}, {"plane_state", plane_state(foam)}};
-  if (const auto levin = levin_expansion(e.phases, C, foam.plane_stress))
+  if (const auto levin = levin_expansion(e.phases, h.stiffness, foam.plane_stress))
     add_levin<3>(r.expansion, *levin, thermal, warnings,
                  "refine the mesh at the interfaces (mesh.boundary_size; see docs/run.md, Thermal residual stress)");
   effective["thermal"] = thermal;
@@ -98,16 +96,15 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   const PeriodicHomogenised<3> h =
       solve_periodic(load_case_dirs(loads, dir), e, pm, foam, solves_side_by_side(foam.processes), deadline,
                      load_case_dirs(loads, staged.failed_dir()));
-  const Stiffness<3>& C = h.stiffness;
   Answer answer;
   for (int k = 0; k < 3; ++k)
-    answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k == 2 ? 5 : k, true);
+    answer.stresses[h.cases[k].load.name] = state_stresses(h.cases[k], t, e, k, true);
   if (picture_width > 0)
     write_stress_histogram(dir / "stress_histogram.png", h.cases[0].load.name, h.cases[0].cell_stress, t, e);
   Json& effective = answer.effective;
   const std::vector<double> fractions = achieved_fractions(t);
   const TensorBounds<3> bounds = tensor_bounds<3>(e.phases, fractions, foam.plane_stress);
-  const StiffnessVerdict<3> verdict = judge_stiffness(C, bounds);
+  const StiffnessVerdict<3> verdict = judge_stiffness(h.stiffness, bounds);
   effective["boundary"] = "periodic";
   add_stiffness<3>(verdict, bounds, fractions, effective, warnings, "see docs/run.md, Homogenisation",
                    "a finite cell is not isotropic; see docs/run.md, Homogenisation");
@@ -117,8 +114,8 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   for (int k = 0; k < 3; ++k) solved.push_back({"_" + h.cases[k].load.name, &h.cases[k].fields, &h.cases[k].cell_stress});
   std::optional<ThermalResidual<3>> thermal;
   if (foam.delta_T != 0.0) {
-    thermal = thermal_residual(h, h.stiffness);
-    add_thermal_answer(answer, *thermal, C, t, e, foam, warnings);
+    thermal = thermal_residual(h);
+    add_thermal_answer(answer, h, *thermal, t, e, foam, warnings);
     solved.push_back({"_thermal", &thermal->free.fields, &thermal->free.cell_stress});
     solved.push_back({"_thermal_xx", &thermal->loaded.fields, &thermal->loaded.cell_stress});
     if (picture_width > 0)

@@ -74,12 +74,13 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
 // tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
-ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const Stiffness<6>& C,
-                                         const SolveInput3& in, std::vector<std::string>& warnings) {
-  const ThermalResidual<6> r = thermal_residual(h, C);
+// Levin's relation with the stiffness the expansion was freed with (as solved).
+ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput3& in,
+                                         std::vector<std::string>& warnings) {
+  const ThermalResidual<6> r = thermal_residual(h);
   answer.effective["thermal_expansion"] = voigt_json<6>(r.expansion);
   Json thermal{{"delta_T", r.delta_T}};
-  if (const auto levin = levin_expansion(in.e.phases, C))
+  if (const auto levin = levin_expansion(in.e.phases, h.stiffness))
     add_levin<6>(r.expansion, *levin, thermal, warnings,
                  "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)");
   answer.effective["thermal"] = thermal;
@@ -138,16 +139,15 @@ Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& w
       phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
   const TensorBounds<6> bounds = tensor_bounds<6>(in.e.phases, fractions);
   const StiffnessVerdict<6> verdict = judge_stiffness(h.stiffness, bounds);
-  const Stiffness<6>& C = verdict.stiffness;
   Answer answer;
   Json& effective = answer.effective;
   effective["boundary"] = "periodic";
   add_stiffness<6>(verdict, bounds, fractions, effective, warnings, "see docs/3d.md, 3D cases and solves",
                    "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
                    "order in the mesh size; see docs/3d.md, 3D cases and solves");
-  add_engineering(engineering_constants(C), effective);
+  add_engineering(engineering_constants(verdict.stiffness), effective);
   std::optional<ThermalResidual<6>> thermal;
-  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, C, in, warnings);
+  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, in, warnings);
   add_load_cases(h, in.dir, effective);
   // The thermal case at its fixed strain is no state of its own: its free state is above.
   for (std::size_t k = 0; k < 6; ++k) {

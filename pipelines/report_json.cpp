@@ -18,17 +18,6 @@ char voigt_index(std::size_t k) {
 }  // namespace
 
 template <std::size_t N>
-const std::array<const char*, N>& voigt_names() {
-  if constexpr (N == 3) {
-    static const std::array<const char*, 3> names{"xx", "yy", "xy"};
-    return names;
-  } else {
-    static const std::array<const char*, 6> names{"xx", "yy", "zz", "yz", "xz", "xy"};
-    return names;
-  }
-}
-
-template <std::size_t N>
 Json voigt_json(const std::array<double, N>& v) {
   Json out = Json::object();
   for (std::size_t k = 0; k < N; ++k) out[voigt_names<N>()[k]] = v[k];
@@ -78,8 +67,10 @@ Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& wei
                          const std::vector<std::string>& names, int loaded, bool balanced) {
   const std::vector<StressTensor> own = cell_stress_tensors(s);
   const std::vector<StressTensor> virial = balanced ? cell_stress_tensors(s, true) : std::vector<StressTensor>{};
+  const int component = loaded < 0 ? -1 : static_cast<int>(tensor_index<N>(static_cast<std::size_t>(loaded)));
   return phase_stresses_json(
-      phase_stresses(own, weight, phase, static_cast<int>(names.size()), loaded, balanced ? &virial : nullptr), names);
+      phase_stresses(own, weight, phase, static_cast<int>(names.size()), component, balanced ? &virial : nullptr),
+      names);
 }
 
 Json distribution_json(const Distribution& d) {
@@ -151,8 +142,6 @@ void add_levin(const std::array<double, N>& expansion, const std::array<double, 
                        " % of its largest component: " + advice);
 }
 
-template const std::array<const char*, 3>& voigt_names<3>();
-template const std::array<const char*, 6>& voigt_names<6>();
 template Json voigt_json<3>(const std::array<double, 3>&);
 template Json voigt_json<6>(const std::array<double, 6>&);
 template Json stiffness_json<3>(const Stiffness<3>&);

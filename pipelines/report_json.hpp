@@ -19,11 +19,6 @@
 
 namespace grainmesh {
 
-// The components of a symmetric tensor in Voigt order: xx, yy, xy (N = 3) or xx, yy, zz,
-// yz, xz, xy (N = 6).
-template <std::size_t N>
-const std::array<const char*, N>& voigt_names();
-
 // {xx: .., yy: .., ...} of a tensor's Voigt components.
 template <std::size_t N>
 Json voigt_json(const std::array<double, N>& v);
@@ -38,9 +33,9 @@ Json stiffness_json(const Stiffness<N>& c);
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir);
 
 // `stresses.CASE` of one solved state (phase_stresses_json): each cell weighted by
-// `weight` (its area or volume) in its `phase` (indices into `names`); `loaded` the Voigt
-// index (0 xx ... 5 xy) of the loaded component, -1 none; with `balanced`, the means from
-// the cells' virial stresses (a periodic case's).
+// `weight` (its area or volume) in its `phase` (indices into `names`); `loaded` the
+// loaded component's index among the N Voigt components (a load case's), -1 none; with
+// `balanced`, the means from the cells' virial stresses (a periodic case's).
 template <std::size_t N>
 Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& weight, const std::vector<int>& phase,
                          const std::vector<std::string>& names, int loaded, bool balanced);

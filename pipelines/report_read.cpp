@@ -22,7 +22,7 @@ Json symmetric_stiffness(const Json& c) {
 }
 
 // {a11, a22, a12} as {xx, yy, xy}.
-Json voigt_names(const Json& a) {
+Json expansion_names(const Json& a) {
   if (!a.is_object() || !a.contains("a11")) return a;
   return Json{{"xx", a.at("a11")}, {"yy", a.at("a22")}, {"xy", a.at("a12")}};
 }
@@ -32,8 +32,8 @@ void upgrade_effective(Json& e) {
     if (e.contains(key)) e[key] = symmetric_stiffness(e[key]);
   if (e.contains("volume_average") && e["volume_average"].contains("stiffness"))
     e["volume_average"]["stiffness"] = symmetric_stiffness(e["volume_average"]["stiffness"]);
-  if (e.contains("thermal_expansion")) e["thermal_expansion"] = voigt_names(e["thermal_expansion"]);
-  if (e.contains("thermal") && e["thermal"].contains("levin")) e["thermal"]["levin"] = voigt_names(e["thermal"]["levin"]);
+  if (e.contains("thermal_expansion")) e["thermal_expansion"] = expansion_names(e["thermal_expansion"]);
+  if (e.contains("thermal") && e["thermal"].contains("levin")) e["thermal"]["levin"] = expansion_names(e["thermal"]["levin"]);
   if (e.contains("load_cases") && e["load_cases"].is_object()) {  // 3D: by name
     Json cases = Json::array();
     for (auto& [name, run] : e["load_cases"].items()) {

@@ -136,14 +136,15 @@ TEST_CASE("a 3D WC-Co cell cooled: Levin's relation met, the residual stress's p
     CHECK(e["thermal_expansion"][kVoigt[i]].get<double>() < co.alpha);
   }
   // Free on average: the phases' volume-weighted means (of the face forces' virial) add
-  // up to a zero mean stress (measured 8e-5 of Co's).
+  // up to a zero mean stress (measured 2.3e-7 of Co's, freed with the stiffness as solved;
+  // 8e-5 when freed with its symmetric part).
   const Json& s = report["stresses"]["thermal"];
   const double f_wc = s["WC"]["volume_fraction"].get<double>(), f_co = s["Co"]["volume_fraction"].get<double>();
   CHECK(f_wc + f_co == Approx(1.0).epsilon(1e-12));
   const double larger = std::abs(s["Co"]["mean"]["xx"].get<double>());
   for (const char* c : kVoigt) {
     INFO(c);
-    CHECK(std::abs(f_wc * s["WC"]["mean"][c].get<double>() + f_co * s["Co"]["mean"][c].get<double>()) <= 1e-3 * larger);
+    CHECK(std::abs(f_wc * s["WC"]["mean"][c].get<double>() + f_co * s["Co"]["mean"][c].get<double>()) <= 1e-5 * larger);
   }
   // The xx case's phase means (of the face forces' virial) add up to the cell's mean stress,
   // the stiffness's first column times the strain (measured: the symmetric C12 is the
