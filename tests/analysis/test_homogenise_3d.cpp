@@ -220,7 +220,7 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
   // At 800 tetrahedra per grain (19 s); the sanitizer build, which meshes ten times
   // slower, at 200.
 #ifdef GRAINMESH_SANITIZED
-  constexpr double kTetsPerGrain = 800;
+  constexpr double kTetsPerGrain = 200;
   constexpr double kShearExcess = 0.015;
 #else
   constexpr double kTetsPerGrain = 800;
