@@ -32,7 +32,7 @@ using Voigt6 = std::array<double, 6>;
 // and zz), which leaves only the phases' mismatch to carry (analysis/thermal.hpp).
 std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o);
 
-// Solves the load cases written by write_foam_case_3d into `case_dirs` (in the order of
+// Solves the load cases written by write_foam_case into `case_dirs` (in the order of
 // periodic_load_cases(m, o), each with load_case_options; `fm` the mesh it wrote,
 // the same for all), up to `parallel` at a time, and assembles the stiffness. A failing
 // case throws SolveError naming it (the first in order when several fail).
@@ -41,7 +41,7 @@ PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& 
                                       const Deadline& deadline = {},
                                       const std::vector<std::filesystem::path>& cases_shown_as = {});
 
-// The thesis' mixed load in 3D (write_foam_case_3d without cyclic: right pulled by
+// The thesis' mixed load in 3D (write_foam_case without cyclic: right pulled by
 // load.displacement, symmetry planes on the other sides, so the cell is held from
 // straining sideways): solved, the mean stress through right from the force there (sigma's
 // face values, S . sigma_f), the strain displacement / width, their ratio the modulus

@@ -32,7 +32,7 @@ struct SolveRun {
 int solves_side_by_side(int processes);
 
 // Runs solidDisplacementFoam in `case_dir` (written by write_foam_case, or
-// write_foam_case_3d, for a mesh of `cell` with `o`), following its log: it is stopped
+// write_foam_case, for a mesh of `cell` with `o`), following its log: it is stopped
 // once converged (solve_monitor.hpp), or killed within a few hundred corrections of
 // stalling or diverging. A case whose multigrid linear solver diverges is solved again
 // from its start with conjugate gradients (SolveRun says so). Throws IoError when

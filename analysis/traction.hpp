@@ -36,7 +36,7 @@ class DiscreteTraction {
   // grad(D) only in the compact form; the plain form's force needs sigma alone.
   DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
-  // The same for a 3D case's mesh (write_foam_case_3d) in `cell`.
+  // The same for a 3D case's mesh (write_foam_case) in `cell`.
   DiscreteTraction(const FoamMesh3& m, const FoamCell& cell, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
 

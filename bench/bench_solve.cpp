@@ -39,7 +39,7 @@ Json solve_case(const Case& c, const std::filesystem::path& dir) {
   const Config config = Config::from_text(default_run_config(), "default config", c.set);
   const Config tess_config = config.subset(tessellate_config_keys());
   const TessellateJob job = read_tessellate_job(tess_config);
-  const Tessellation t = run_tessellate_job(job, tess_config);
+  const Tessellation t = run_tessellate_job(job);
   const GrainMesh m = mesh_tessellation(t, read_mesh_job(config.subset(mesh_config_keys()), t).options);
   const ExportMesh e = grain_export_mesh(t, m);
   const FoamOptions o = read_foam_options(config.subset(export_config_keys()));

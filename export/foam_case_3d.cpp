@@ -34,14 +34,14 @@ FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
   return out;
 }
 
-FoamMesh3 write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& o) {
+FoamMesh3 write_foam_case(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& o) {
   check_case_3d(m, o);
   FoamMesh3 fm = foam_mesh_3d(m, o);
-  write_foam_case_3d(dir, m, fm, o);
+  write_foam_case(dir, m, fm, o);
   return fm;
 }
 
-void write_foam_case_3d(const std::filesystem::path& dir, const ExportMesh3& m, const FoamMesh3& fm,
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh3& m, const FoamMesh3& fm,
                         const FoamOptions& o, const std::filesystem::path& polymesh_from) {
   check_case_3d(m, o);
   write_case_files(dir, foam_cell(m), fm.phase, fm.centre, fm.mesh, o, polymesh_from);

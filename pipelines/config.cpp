@@ -56,7 +56,6 @@ Config Config::from_file(const std::filesystem::path& file, const std::vector<st
 
 Config Config::from_text(std::string_view text, std::string source, const std::vector<std::string>& overrides) {
   Config c;
-  c.source_ = std::move(source);
   // Editors on Windows start UTF-8 files with a byte order mark.
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::istringstream in{std::string(text)};
@@ -67,9 +66,9 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
   } catch (const po::invalid_config_file_syntax&) {
     // Not e.what(): Boost substitutes the line into its message until no placeholder is
     // left, forever if the line holds one ("%invalid_line%"; found by fuzzing).
-    throw ConfigError(c.source_ + ": " + describe_bad_line(text));
+    throw ConfigError(source + ": " + describe_bad_line(text));
   } catch (const po::error& e) {
-    throw ConfigError(c.source_ + ": " + e.what());
+    throw ConfigError(source + ": " + e.what());
   }
 
   std::vector<std::pair<std::string, std::string>> set;
@@ -78,16 +77,14 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
     if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + o + ": expected KEY=VALUE");
     set.emplace_back(trimmed(o.substr(0, eq)), trimmed(o.substr(eq + 1)));
   }
-  for (const auto& kv : set) c.set_.insert(kv.first);
-  std::erase_if(c.entries_, [&](const auto& kv) { return c.set_.count(kv.first) > 0; });
+  std::set<std::string> set_keys;
+  for (const auto& kv : set) set_keys.insert(kv.first);
+  std::erase_if(c.entries_, [&](const auto& kv) { return set_keys.count(kv.first) > 0; });
+  c.origin_ = ConfigOrigin(std::move(source), std::move(set_keys));
   // KEY= (nothing) removes KEY: its default applies, or another key can take its place.
   std::erase_if(set, [](const auto& kv) { return kv.second.empty(); });
   c.entries_.insert(c.entries_.end(), set.begin(), set.end());
   return c;
-}
-
-void Config::fail(const std::string& key, const std::string& message) const {
-  throw ConfigError((set_.count(key) ? std::string("--set") : source_) + ": " + key + ": " + message);
 }
 
 namespace {
@@ -154,7 +151,7 @@ void Config::check_keys(const std::vector<std::string>& known) const {
       for (const auto& k : known)
         if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
       const std::string nearest = nearest_key(key, known);
-      throw ConfigError((set_.count(key) ? std::string("--set") : source_) + ": unknown key '" + key + "'" +
+      throw ConfigError(origin_.where(key) + ": unknown key '" + key + "'" +
                         (!nearest.empty() ? " (did you mean " + nearest + "?)"
                          : hint.empty()   ? ""
                                           : " (known here: " + hint + ")") +
@@ -165,8 +162,7 @@ void Config::check_keys(const std::vector<std::string>& known) const {
 
 Config Config::subset(const std::vector<std::string>& known) const {
   Config c;
-  c.source_ = source_;
-  c.set_ = set_;
+  c.origin_ = origin_;
   for (const auto& entry : entries_)
     if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, entry.first); }))
       c.entries_.push_back(entry);

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "pipelines/config_origin.hpp"
+
 namespace grainmesh {
 
 class Config {
@@ -43,10 +45,12 @@ class Config {
   // they first appear.
   std::vector<std::string> names_in(const std::string& section) const;
 
-  const std::string& source() const { return source_; }
+  const std::string& source() const { return origin_.source(); }
+  // Where the values came from, for errors found once the config is read.
+  const ConfigOrigin& origin() const { return origin_; }
   // "source: key: message", the form of every config error ("--set: key: message" for a
   // key given with --set).
-  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const { origin_.fail(key, message); }
 
   // The entries whose keys match `known` (patterns as in check_keys): the part of a
   // run's config one stage reads.
@@ -56,9 +60,8 @@ class Config {
   const std::vector<std::pair<std::string, std::string>>& entries() const { return entries_; }
 
  private:
-  std::string source_;
+  ConfigOrigin origin_;
   std::vector<std::pair<std::string, std::string>> entries_;
-  std::set<std::string> set_;  // keys given by --set
 };
 
 // The run's wall-clock guard: key limits.seconds, seconds > 0 or "none"; 6 hours unless

@@ -15,6 +15,8 @@
 #include "pipelines/report.hpp"
 #include "pipelines/report_read.hpp"
 #include "pipelines/run_command.hpp"
+#include "pipelines/run_config.hpp"
+#include "pipelines/run_plan.hpp"
 #include "view/picture.hpp"
 
 namespace grainmesh {
@@ -53,7 +55,7 @@ void check_study(const Config& c, const ConvergeOptions& o) {
     throw ConfigError("converge: --levels " + std::to_string(o.levels) +
                       ": give 3 to 12 (Richardson extrapolation needs three levels)");
   if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
-  check_run_config(c);
+  read_run_plan(c, /*solve=*/true);
   for (const auto& [key, value] : c.entries())
     if (key == "mesh.size" || key == "mesh.h" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))

@@ -21,30 +21,26 @@ constexpr double kMaxTets = 2e7;
 
 }  // namespace
 
-Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
+Mesh3Job read_mesh_3d_job(const Config& c) {
   for (const char* key : {"mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
                           "mesh.grading", "mesh.seed", "mesh.max_iterations"})
     if (c.has(key)) c.fail(key, "not available for 3D meshes (mesh.size or mesh.tets_per_grain, mesh.threads)");
   for (const std::string& name : c.names_in("phase"))
     if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
   Mesh3Job job;
+  job.origin = c.origin();
   GrainMesh3Options& o = job.options;
   const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
   if (c.has(size_key) && c.has("mesh.tets_per_grain"))
     c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
-  const double box = t.width * t.height * t.depth;
   if (c.has(size_key)) {
     o.size = c.number(size_key);
     if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
+    job.size_key = size_key;
   } else {
-    const double n = c.number("mesh.tets_per_grain", 500.0);
-    if (!(n >= 10.0 && n <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
-    o.size = size_for_tets_per_grain(t, n);
+    job.per_grain = c.number("mesh.tets_per_grain", 500.0);
+    if (!(*job.per_grain >= 10.0 && *job.per_grain <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
   }
-  const double tets = box / regular_tet_volume(o.size);
-  if (tets > kMaxTets)
-    c.fail(c.has(size_key) ? size_key : "mesh.tets_per_grain",
-           "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");
   const long long threads = c.integer("mesh.threads", 0);
   if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
   o.threads = static_cast<int>(threads);
@@ -55,6 +51,16 @@ Mesh3Job read_mesh_3d_job(const Config& c, const Tessellation3& t) {
   if (!(job.section > 0.0 && job.section < 1.0))
     c.fail("output.section", "must lie in (0, 1) (a fraction of the depth), got " + c.text("output.section"));
   o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
+  return job;
+}
+
+Mesh3Job resolve_mesh_3d_job(Mesh3Job job, const Tessellation3& t) {
+  GrainMesh3Options& o = job.options;
+  if (job.per_grain) o.size = size_for_tets_per_grain(t, *job.per_grain);
+  const double tets = t.width * t.height * t.depth / regular_tet_volume(o.size);
+  if (tets > kMaxTets)
+    job.origin.fail(job.per_grain ? "mesh.tets_per_grain" : job.size_key,
+                    "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");
   return job;
 }
 
@@ -129,7 +135,7 @@ void print_mesh_3d_summary(const Json& mesh, double seconds) {
 
 void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
                          const std::filesystem::path& out) {
-  const Mesh3Job job = read_mesh_3d_job(c, t);
+  const Mesh3Job job = resolve_mesh_3d_job(read_mesh_3d_job(c), t);
   const GrainMesh3 m = run_mesh_3d_job(t, job);
   Warnings warnings;
   StagedOutput staged(out, "mesh");

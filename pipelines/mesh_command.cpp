@@ -27,11 +27,12 @@ Tessellation read_tessellation_file(const std::filesystem::path& file) {
   return tessellation_from_json(read_text_file(file, "tessellation file"), file.string());
 }
 
-MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
+MeshJob read_mesh_job(const Config& c) {
   c.check_keys(mesh_config_keys());
   for (const char* key : {"mesh.tets_per_grain", "output.section"})
     if (c.has(key)) c.fail(key, "only for 3D tessellations (tessellation.json version 2)");
   MeshJob job;
+  job.origin = c.origin();
   GrainMeshOptions& o = job.options;
   // mesh.h and mesh.grading are the run config's names of mesh.size and mesh.gradient.
   const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
@@ -41,44 +42,21 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   if (c.has(size_key)) {
     o.size = c.number(size_key);
     if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
+    job.size_key = size_key;
   } else {
-    const double n = c.number("mesh.triangles_per_grain", 100.0);
-    if (!(n >= 2.0 && n <= 1e6)) c.fail("mesh.triangles_per_grain", "must lie between 2 and 1e6");
-    // Equilateral triangles of side h have area h^2 sqrt(3) / 4.
-    const double grain_area = t.width * t.height / std::max(1, t.stats.grains);
-    o.size = std::sqrt(4.0 * grain_area / (n * std::sqrt(3.0)));
+    job.per_grain = c.number("mesh.triangles_per_grain", 100.0);
+    if (!(*job.per_grain >= 2.0 && *job.per_grain <= 1e6)) c.fail("mesh.triangles_per_grain", "must lie between 2 and 1e6");
   }
-  o.phase_size.assign(t.phases.size(), 0.0);
   for (const std::string& name : c.names_in("phase")) {
     const std::string key = "phase." + name + ".size";
-    std::size_t p = 0;
-    while (p < t.phases.size() && t.phases[p].name != name) ++p;
-    if (p == t.phases.size()) {
-      std::string names;
-      for (const Phase& ph : t.phases) names += (names.empty() ? "" : ", ") + ph.name;
-      c.fail(key, "unknown phase '" + name + "' (the tessellation's phases: " + names + ")");
-    }
-    o.phase_size[p] = c.number(key);
-    if (!(o.phase_size[p] > 0.0) || !std::isfinite(o.phase_size[p])) c.fail(key, "must be positive, got " + c.text(key));
+    if (!c.has(key)) continue;
+    job.phase_sizes.emplace_back(name, c.number(key));
+    if (!(job.phase_sizes.back().second > 0.0) || !std::isfinite(job.phase_sizes.back().second))
+      c.fail(key, "must be positive, got " + c.text(key));
   }
   for (const auto& [key, value] : {std::pair{"mesh.boundary_size", &o.boundary_size}, {"mesh.junction_size", &o.junction_size}}) {
     *value = c.number(key, 0.0);
     if (!(*value >= 0.0) || !std::isfinite(*value)) c.fail(key, "must be positive (or 0 for none), got " + c.text(key));
-  }
-  // Far too fine a size is a slip (a unit, a digit): refused before any work is done.
-  double finest = o.size;
-  std::string finest_key = c.has(size_key) ? size_key : "mesh.triangles_per_grain";
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    if (o.phase_size[p] > 0.0 && o.phase_size[p] < finest) {
-      finest = o.phase_size[p];
-      finest_key = "phase." + t.phases[p].name + ".size";
-    }
-  const double triangles = t.width * t.height / (0.25 * std::sqrt(3.0) * finest * finest);
-  if (triangles > 2.0 * kMaxMeshPoints) {
-    c.fail(finest_key,
-           "asks for about " + to_text(triangles) + " triangles (size " + to_text(finest) + " over a " +
-               to_text(t.width) + " x " + to_text(t.height) + " cell), more than " + to_text(2.0 * kMaxMeshPoints) +
-               ": coarsen it");
   }
   o.gradient = c.number(gradient_key, o.gradient);
   if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail(gradient_key, "must lie between 0.05 and 10");
@@ -95,6 +73,43 @@ MeshJob read_mesh_job(const Config& c, const Tessellation& t) {
   job.picture_width = static_cast<int>(width);
   return job;
 }
+
+MeshJob resolve_mesh_job(MeshJob job, const Tessellation& t) {
+  GrainMeshOptions& o = job.options;
+  if (job.per_grain) {
+    // Equilateral triangles of side h have area h^2 sqrt(3) / 4.
+    const double grain_area = t.width * t.height / std::max(1, t.stats.grains);
+    o.size = std::sqrt(4.0 * grain_area / (*job.per_grain * std::sqrt(3.0)));
+  }
+  o.phase_size.assign(t.phases.size(), 0.0);
+  for (const auto& [name, size] : job.phase_sizes) {
+    std::size_t p = 0;
+    while (p < t.phases.size() && t.phases[p].name != name) ++p;
+    if (p == t.phases.size()) {
+      std::string names;
+      for (const Phase& ph : t.phases) names += (names.empty() ? "" : ", ") + ph.name;
+      job.origin.fail("phase." + name + ".size", "unknown phase '" + name + "' (the tessellation's phases: " + names + ")");
+    }
+    o.phase_size[p] = size;
+  }
+  // Far too fine a size is a slip (a unit, a digit): refused before any work is done.
+  double finest = o.size;
+  std::string finest_key = job.per_grain ? "mesh.triangles_per_grain" : job.size_key;
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    if (o.phase_size[p] > 0.0 && o.phase_size[p] < finest) {
+      finest = o.phase_size[p];
+      finest_key = "phase." + t.phases[p].name + ".size";
+    }
+  const double triangles = t.width * t.height / (0.25 * std::sqrt(3.0) * finest * finest);
+  if (triangles > 2.0 * kMaxMeshPoints) {
+    job.origin.fail(finest_key, "asks for about " + to_text(triangles) + " triangles (size " + to_text(finest) + " over a " +
+                                    to_text(t.width) + " x " + to_text(t.height) + " cell), more than " +
+                                    to_text(2.0 * kMaxMeshPoints) + ": coarsen it");
+  }
+  return job;
+}
+
+MeshJob read_mesh_job(const Config& config, const Tessellation& t) { return resolve_mesh_job(read_mesh_job(config), t); }
 
 std::optional<std::string> poor_quality_warning(const MeshQuality& q, std::size_t triangles, const std::string& causes) {
   if (!(q.q_min < kPoorQuality)) return std::nullopt;

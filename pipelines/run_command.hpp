@@ -1,24 +1,33 @@
 // `grainmesh run [CONFIG] -o OUT`: tessellate, mesh and export in one process, from one
-// config (or the embedded default, data/default.ini). Writes OUT/tessellation.json,
-// tessellation.png, mesh.vtu, mesh.json, mesh.png, case/ (the OpenFOAM case), config.ini
-// (the resolved config, which repeats the run exactly) and report.json, last; with
-// --solve the case is solved and homogenised too.
+// config (or the embedded default, data/default.ini), on a plane or a solid cell alike.
+// Writes OUT/tessellation.json, the tessellation's and the mesh's files and pictures, the
+// OpenFOAM cases (the mixed load's case/, or the periodic load cases' case_NAME/),
+// config.ini (the resolved config, which repeats the run exactly) and report.json, last;
+// with --solve the cases are solved and homogenised too (answer.hpp, answer_3d.hpp).
 #pragma once
 
 #include <filesystem>
-#include <string>
-#include <vector>
 
 #include "pipelines/config.hpp"
-#include "pipelines/run_config.hpp"
+#include "pipelines/run_plan.hpp"
 
 namespace grainmesh {
 
-// With `solve`, also runs solidDisplacementFoam on the case and homogenises (report.json
-// "effective"); a run that does not converge fails.
+// Reads the run's plan from `config` (read_run_plan: every key checked before
+// any work) and runs it. With `solve`, also runs solidDisplacementFoam on the cases and
+// homogenises (report.json "effective"); a run that does not converge fails.
 // A terminal shows the stage and the meshing's progress on stderr unless `quiet`; the
 // summary goes to stdout when `summary`.
 void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false,
                      bool summary = true);
+
+// Runs a plan on its cell (a plane or a solid one: cell_run.hpp).
+void run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet = false, bool summary = true);
+
+class CellRun;
+// The one run driver of plane and solid cells: `cell`'s stages in order, timed, their
+// output staged and committed with report.json last; `deadline` the run's time limit.
+void run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
+              bool summary);
 
 }  // namespace grainmesh

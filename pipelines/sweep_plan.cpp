@@ -11,6 +11,7 @@
 #include "common/random.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/run_config.hpp"
+#include "pipelines/run_plan.hpp"
 
 namespace grainmesh {
 namespace {
@@ -142,7 +143,7 @@ SweepPlan make_sweep_plan(const Config& c, const SweepOptions& o) {
   for (SweepRun& r : plan.runs) {
     const Config run_config = Config::from_text(plan.base_text, c.source(), r.overrides);
     try {
-      check_run_config(run_config);
+      read_run_plan(run_config, o.solve);
     } catch (const ConfigError& e) {
       // The point's values are the sweep file's, not --set's: the message names the file.
       std::string point, why = e.what();

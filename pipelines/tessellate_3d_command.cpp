@@ -82,6 +82,7 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
   c.check_keys(tessellate_config_keys());
   refuse_2d_only(c);
   Tessellate3Job job;
+  job.origin = c.origin();
   Tessellation3Options& o = job.options;
   o.width = positive(c, "domain.width");
   o.height = positive(c, "domain.height");
@@ -104,7 +105,7 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
   return job;
 }
 
-Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& c, Warnings& warnings) {
+Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, Warnings& warnings) {
   Rng rng(job.seed);
   Tessellation3 t;
   try {
@@ -120,7 +121,7 @@ Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, const Config& c, 
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
     const PhaseStats& ps = s.phases[p];
     if (ps.grains == 0)
-      c.fail("phase." + t.phases[p].name + ".fraction",
+      job.origin.fail("phase." + t.phases[p].name + ".fraction",
              "a fraction of " + to_text(ps.target_fraction) + " gives the phase none of the " + std::to_string(s.grains) +
                  " grains: use at least " + to_text(std::ceil(1.0 / ps.target_fraction - 1e-9)) +
                  " grains (tessellation.grains), about 50 for fractions within 1 %");
@@ -185,7 +186,7 @@ void run_tessellate_3d_command(const Config& c, const std::filesystem::path& out
   const Tessellate3Job job = read_tessellate_3d_job(c);
   const auto start = std::chrono::steady_clock::now();
   Warnings warnings;
-  const Tessellation3 t = run_tessellate_3d_job(job, c, warnings);
+  const Tessellation3 t = run_tessellate_3d_job(job, warnings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   StagedOutput staged(out, "tessellate");

@@ -109,6 +109,7 @@ TessellateJob read_tessellate_job(const Config& c) {
                            "2D meshes (leave domain.depth out)");
   if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
   TessellateJob job;
+  job.origin = c.origin();
   TessellationOptions& o = job.options;
   o.width = positive(c, "domain.width");
   o.height = positive(c, "domain.height");
@@ -137,14 +138,14 @@ TessellateJob read_tessellate_job(const Config& c) {
 namespace {
 
 // A contiguity target missed: refused, with the range the trades reach.
-void check_contiguity(const Tessellation& t, const TessellateJob& job, const Config& c) {
+void check_contiguity(const Tessellation& t, const TessellateJob& job) {
   const TessellationOptions& o = job.options;
   if (!o.contiguity) return;
   const double reached = t.stats.phases[o.contiguity_phase].contiguity;
   if (std::abs(reached - *o.contiguity) <= kContiguityTolerance) return;
   const std::string phase = t.phases[o.contiguity_phase].name;
   const auto& range = t.stats.contiguity_range;
-  c.fail("tessellation.contiguity",
+  job.origin.fail("tessellation.contiguity",
          to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
              std::to_string(job.seed) + "): " +
              (range ? "trading like-sized grains' labels moves its contiguity from " + to_text(range->first, 3) + " to " +
@@ -155,7 +156,7 @@ void check_contiguity(const Tessellation& t, const TessellateJob& job, const Con
 
 }  // namespace
 
-Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
+Tessellation run_tessellate_job(const TessellateJob& job) {
   Rng rng(job.seed);
   Tessellation t;
   try {
@@ -164,9 +165,9 @@ Tessellation run_tessellate_job(const TessellateJob& job, const Config& c) {
     // The only option tessellate() can find unreachable is the binder fraction.
     const TessellationOptions& o = job.options;
     const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
-    c.fail(key, e.what());
+    job.origin.fail(key, e.what());
   }
-  check_contiguity(t, job, c);
+  check_contiguity(t, job);
   return t;
 }
 
@@ -176,7 +177,7 @@ PictureOptions tessellation_picture(const Tessellation& t, int width, const std:
   return o;
 }
 
-void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& c) {
+void check_phases_have_grains(const Tessellation& t, const TessellateJob& job) {
   // A phase without a grain is not in the microstructure at all: its properties would
   // never reach the solver. A grain has about 1 / N of the cell, so 1 / fraction grains
   // give every phase one.
@@ -184,7 +185,7 @@ void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, c
     const PhaseStats& s = t.stats.phases[p];
     if (s.grains > 0 || static_cast<int>(p) == job.options.matrix_phase) continue;
     const double needed = std::ceil(1.0 / s.target_fraction - 1e-9);
-    c.fail("phase." + t.phases[p].name + ".fraction",
+    job.origin.fail("phase." + t.phases[p].name + ".fraction",
            "a fraction of " + to_text(s.target_fraction) + " gives the phase none of the " +
                std::to_string(t.stats.grains) + " grains: use at least " + to_text(needed) +
                " grains (tessellation.grains), about 50 for fractions within 1 %");
@@ -208,8 +209,8 @@ void run_tessellate_command(const Config& c, const std::filesystem::path& out) {
   claim_output(out, "tessellate");
   const TessellateJob job = read_tessellate_job(c);
   const auto start = std::chrono::steady_clock::now();
-  const Tessellation t = run_tessellate_job(job, c);
-  check_phases_have_grains(t, job, c);
+  const Tessellation t = run_tessellate_job(job);
+  check_phases_have_grains(t, job);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Warnings warnings;
   for (const std::string& w : tessellation_warnings(t)) warnings.add(w);

@@ -18,6 +18,7 @@ struct TessellateJob {
   TessellationOptions options;
   std::uint64_t seed = 1;
   int picture_width = 1200;  // pixels
+  ConfigOrigin origin;       // names the key at fault in errors found while tessellating
 };
 
 
@@ -25,11 +26,11 @@ struct TessellateJob {
 TessellateJob read_tessellate_job(const Config& config);
 
 // Tessellates with randomness from the job's seed alone. Errors name the config key.
-Tessellation run_tessellate_job(const TessellateJob& job, const Config& config);
+Tessellation run_tessellate_job(const TessellateJob& job);
 
 // Refuses (ConfigError naming its fraction) a tessellation in which a phase got no grain,
 // with the grain count that would give it one: the commands' check before meshing.
-void check_phases_have_grains(const Tessellation& t, const TessellateJob& job, const Config& config);
+void check_phases_have_grains(const Tessellation& t, const TessellateJob& job);
 
 // How tessellation.png is drawn: `width` pixels wide, the phases' legend, a scale bar in
 // `length_unit` (empty: the config's own, unnamed).

@@ -27,7 +27,7 @@ PeriodicHomogenised<6> solve_six(const ExportMesh3& e, const FoamOptions& o, con
   for (const LoadCase<6>& c : periodic_load_cases(e, o)) {
     dirs.push_back(dir / ("case_" + c.name));
     fs::create_directories(dirs.back());
-    fm = write_foam_case_3d(dirs.back(), e, load_case_options(o, c));
+    fm = write_foam_case(dirs.back(), e, load_case_options(o, c));
   }
   return solve_periodic(dirs, e, fm, o, 2);
 }

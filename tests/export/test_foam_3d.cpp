@@ -141,10 +141,10 @@ TEST_CASE("3D case: plane stress and a temperature change on a cell that is not 
   const ExportMesh3 e = cell_3d(true);
   FoamOptions plane;
   plane.plane_stress = true;
-  CHECK_THROWS_WITH(write_foam_case_3d(dir.path(), e, plane), Catch::Contains("export.plane_stress"));
+  CHECK_THROWS_WITH(write_foam_case(dir.path(), e, plane), Catch::Contains("export.plane_stress"));
   FoamOptions thermal;
   thermal.delta_T = -500.0;
-  CHECK_THROWS_WITH(write_foam_case_3d(dir.path(), e, thermal), Catch::Contains("load.delta_T"));
+  CHECK_THROWS_WITH(write_foam_case(dir.path(), e, thermal), Catch::Contains("load.delta_T"));
   CHECK(fs::is_empty(dir.path()));
 }
 

@@ -26,7 +26,7 @@ inline Realised realise(const std::string& ini) {
   const Config c = Config::from_text(ini, "realisation.ini");
   const TessellateJob job = read_tessellate_job(c.subset(tessellate_config_keys()));
   Realised r;
-  r.tessellation = run_tessellate_job(job, c);
+  r.tessellation = run_tessellate_job(job);
   validate(r.tessellation);
   const MeshJob mesh_job = read_mesh_job(c.subset(mesh_config_keys()), r.tessellation);
   r.mesh = mesh_tessellation(r.tessellation, mesh_job.options);

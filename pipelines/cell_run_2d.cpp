@@ -1,0 +1,153 @@
+// `grainmesh run`'s stages on a plane cell (cell_run.hpp).
+#include <cstdio>
+#include <optional>
+
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/foam_load.hpp"
+#include "export/polymesh.hpp"
+#include "grains/conformity.hpp"
+#include "mesh/quality.hpp"
+#include "pipelines/cell_run.hpp"
+#include "pipelines/run_cases.hpp"
+#include "pipelines/result_pictures.hpp"
+#include "tessellate/tessellation_json.hpp"
+#include "view/picture.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+class PlaneCellRun final : public CellRun {
+ public:
+  PlaneCellRun(const RunPlan& plan, const CellJobs<2>& jobs)
+      : plan_(plan), jobs_(jobs), foam_(plan.foam), unit_(length_unit_name(plan.foam.convert_to_meters)) {}
+
+  void tessellate(Warnings& warnings) override {
+    t_ = run_tessellate_job(jobs_.tessellate);
+    check_phases_have_grains(*t_, jobs_.tessellate);
+    for (const std::string& w : tessellation_warnings(*t_)) warnings.add(w);
+  }
+
+  void mesh(const StageLine& stage, Warnings& warnings) override {
+    mesh_job_ = resolve_mesh_job(jobs_.mesh, *t_);
+    mesh_job_.options.distmesh.deadline = jobs_.tessellate.options.deadline;  // one guard for the whole run
+    stage.show("meshing");
+    if (stage.shown())
+      mesh_job_.options.progress = [&](int done, int total) {
+        stage.show("meshing: " + std::to_string(done) + " / " + std::to_string(total) + " regions", done == total);
+      };
+    m_ = mesh_tessellation(*t_, mesh_job_.options);
+    mesh_job_.options.progress = nullptr;
+    check_conformity(*t_, *m_);
+    q_ = measure_quality(m_->mesh);
+    for (const std::string& w : mesh_warnings(*m_, q_, mesh_job_.options)) warnings.add(w);
+  }
+
+  Json write_geometry(const std::filesystem::path& dir, Warnings&) override {
+    const Tessellation& t = *t_;
+    const GrainMesh& m = *m_;
+    write_text_file(dir / "tessellation.json", tessellation_to_json(t));
+    if (plan_.pictures != Pictures::none)
+      write_tessellation_png(dir / "tessellation.png", t,
+                             tessellation_picture(t, jobs_.tessellate.picture_width, unit_));
+    write_mesh_files(dir, t, m, picture_width(), plan_.pictures == Pictures::all, unit_);
+    return {{"dimensions", 2},
+            {"seed", jobs_.tessellate.seed},
+            {"width", t.width},
+            {"height", t.height},
+            {"periodic", t.periodic},
+            {"grains", t.stats.grains},
+            {"phases", phases_json(t)},
+            {"statistics", descriptors_json(t)},
+            {"mesh",
+             {{"points", m.mesh.points.size()},
+              {"cells", m.mesh.triangles.size()},
+              {"q_min", q_.q_min},
+              {"q_mean", q_.q_mean},
+              {"min_angle_deg", q_.min_angle_deg},
+              {"max_non_orthogonality_deg", q_.max_non_orthogonality_deg},
+              {"cells_per_grain_mean", static_cast<double>(m.mesh.triangles.size()) / t.stats.grains},
+              {"unconverged_regions", m.unconverged_regions}}}};
+  }
+
+  std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
+    e_ = export_mesh(*t_, *m_, foam_.cells);
+    if (foam_.cells == FoamOptions::Cells::polygons && plan_.pictures == Pictures::all)
+      // The solved cells, as mesh_detail.png shows the triangles.
+      write_mesh_png(dir / "cells_detail.png", e_->mesh,
+                     {.width_px = picture_width(), .fill_by = e_->phase, .outline_by = e_->grain,
+                      .view = detail_view(*t_), .legend = phase_names(*t_), .scale_bar = true, .length_unit = unit_});
+    foam_.binary = binary_case(plan_, e_->mesh.cells());
+    return write_run_cases(dir, *e_, foam_, plan_.boundary, pm_);
+  }
+
+  Json case_fields() const override {
+    Json fields{{"case_format", foam_.binary ? "binary" : "ascii"}, {"plane_state", plane_state(foam_)}};
+    // Polygonal cells: how many the case has (mesh.cells counts the triangles they come from).
+    if (foam_.cells == FoamOptions::Cells::polygons) fields["case_cells"] = {{"shape", "polygons"}, {"cells", e_->mesh.cells()}};
+    return fields;
+  }
+
+  std::string solving() const override { return "solving with solidDisplacementFoam"; }
+
+  Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
+    const SolveInput in{dir, staged, *t_, *e_, pm_, foam_, jobs_.tessellate.options.deadline, picture_width(),
+                        plan_.pictures == Pictures::all, unit_};
+    return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
+  }
+
+  void print_summary(const std::filesystem::path& out, const Json& report) const override {
+    // What is there (the pictures are optional), directories marked.
+    std::string written;
+    for (const std::string& name : entry_names(out))
+      written += (written.empty() ? "" : ", ") + name + (std::filesystem::is_directory(out / name) ? "/" : "");
+    std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{%s}\n  each case's "
+                "Allrun runs checkMesh and solidDisplacementFoam\n",
+                t_->stats.grains, m_->mesh.triangles.size(), q_.q_min, q_.q_mean,
+                report["seconds"]["total"].get<double>(), out.string().c_str(), written.c_str());
+    if (!plan_.solve) return;
+    const Json& eff = report["effective"];
+    if (plan_.boundary == Boundary::mixed) {
+      std::printf("  solved: effective modulus %.4g Pa", eff["modulus"].get<double>());
+      if (eff.contains("reuss"))
+        std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
+      std::printf(", %d corrections\n", eff["corrections"].get<int>());
+      return;
+    }
+    const Json& C = eff["stiffness"];
+    std::printf("  solved: effective stiffness C11 %.4g, C22 %.4g, C12 %.4g, C66 %.4g Pa (%zu load cases, at most %d "
+                "corrections)\n",
+                C["C11"].get<double>(), C["C22"].get<double>(), C["C12"].get<double>(), C["C66"].get<double>(),
+                eff["load_cases"].size(), eff["corrections"].get<int>());
+    if (foam_.delta_T == 0.0) return;
+    const Json& a = eff["thermal_expansion"];
+    std::printf("  thermal (%s): free in-plane expansion %.4g, %.4g 1/K (xx, yy)%s; residual stresses in report.json "
+                "(stresses.thermal)\n",
+                foam_.plane_stress ? "plane stress" : "plane strain", a["xx"].get<double>(), a["yy"].get<double>(),
+                foam_.plane_stress ? "" : " (held out of plane: not a 3D expansion, see docs/run.md)");
+  }
+
+ private:
+  // The pictures' width in pixels; 0 for none.
+  int picture_width() const { return plan_.pictures != Pictures::none ? mesh_job_.picture_width : 0; }
+
+  const RunPlan& plan_;
+  const CellJobs<2>& jobs_;
+  FoamOptions foam_;  // the plan's, the case's format decided by its size
+  std::string unit_;  // the pictures' scale bars
+  MeshJob mesh_job_;
+  std::optional<Tessellation> t_;
+  std::optional<GrainMesh> m_;
+  MeshQuality q_;
+  std::optional<ExportMesh> e_;
+  PolyMesh pm_;
+};
+
+}  // namespace
+
+std::unique_ptr<CellRun> make_cell_run(const RunPlan& plan, const CellJobs<2>& jobs) {
+  return std::make_unique<PlaneCellRun>(plan, jobs);
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,132 @@
+// `grainmesh run`'s stages on a solid cell (cell_run.hpp).
+#include <cstdio>
+#include <optional>
+
+#include "common/format.hpp"
+#include "export/foam_case_3d.hpp"
+#include "export/foam_load.hpp"
+#include "pipelines/answer_3d.hpp"
+#include "pipelines/cell_run.hpp"
+#include "pipelines/run_cases.hpp"
+#include "view/picture.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+class SolidCellRun final : public CellRun {
+ public:
+  SolidCellRun(const RunPlan& plan, const CellJobs<3>& jobs)
+      : plan_(plan), jobs_(jobs), foam_(plan.foam), unit_(length_unit_name(plan.foam.convert_to_meters)) {}
+
+  void tessellate(Warnings& warnings) override { t_ = run_tessellate_3d_job(jobs_.tessellate, warnings); }
+
+  void mesh(const StageLine& stage, Warnings&) override {
+    mesh_job_ = resolve_mesh_3d_job(jobs_.mesh, *t_);
+    mesh_job_.options.deadline = jobs_.tessellate.options.deadline;  // one guard for the whole run
+    stage.show("meshing " + std::to_string(t_->regions.size()) + " regions");
+    m_ = run_mesh_3d_job(*t_, mesh_job_);
+  }
+
+  Json write_geometry(const std::filesystem::path& dir, Warnings& warnings) override {
+    Json fields = write_tessellation_3d_files(dir, *t_, jobs_.tessellate, pictures(), unit_, warnings);
+    fields.update(write_mesh_3d_files(dir, *t_, *m_, mesh_job_, warnings, pictures(), unit_));  // grains, section_z: the same
+    section_z_ = fields["section_z"].get<double>();
+    mesh_fields_ = fields["mesh"];
+    return fields;
+  }
+
+  std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
+    e_ = grain_export_mesh_3d(*t_, *m_);
+    foam_.binary = binary_case(plan_, e_->mesh.tets.size());
+    return write_run_cases(dir, *e_, foam_, plan_.boundary, fm_);
+  }
+
+  Json case_fields() const override {
+    return {{"case_format", foam_.binary ? "binary" : "ascii"},
+            {"case_cells",
+             {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polyhedra" : "tetrahedra"},
+              {"cells", fm_.mesh.cells},
+              {"faces", fm_.mesh.faces()}}}};
+  }
+
+  std::string solving() const override {
+    return plan_.boundary == Boundary::mixed ? "solving with solidDisplacementFoam (1 case)"
+                                             : "solving with solidDisplacementFoam (" + std::to_string(cases()) + " cases)";
+  }
+
+  Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
+    const SolveInput3 in{dir,  staged, *t_, *e_, fm_, foam_, jobs_.tessellate.options.deadline,
+                         pictures() ? mesh_job_.picture_width : 0, section_z_, unit_};
+    return plan_.boundary == Boundary::mixed ? homogenise_mixed_3d(in, warnings) : homogenise_periodic_3d(in, warnings);
+  }
+
+  void print_summary(const std::filesystem::path& out, const Json& report) const override {
+    print_tessellation_3d_summary(*t_, report["seconds"]["tessellate"].get<double>());
+    print_mesh_3d_summary(mesh_fields_, m_->seconds);
+    const char* cases = plan_.boundary == Boundary::mixed ? "case/"
+                        : foam_.delta_T == 0.0            ? "case_xx/ ... case_xy/ (six load cases)"
+                                                          : "case_xx/ ... case_xy/, case_thermal/ (seven load cases)";
+    std::printf("  cases: %s (%d %s cells)\n", cases, fm_.mesh.cells,
+                foam_.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
+    if (plan_.solve) print_answer(report["effective"]);
+    // What is there (the pictures are optional), directories marked, case_* once.
+    std::string written;
+    bool cases_listed = false;
+    for (const std::string& name : entry_names(out)) {
+      const bool load_case = name.rfind("case_", 0) == 0;
+      if (load_case && cases_listed) continue;
+      cases_listed = cases_listed || load_case;
+      written += (written.empty() ? "" : ", ") + (load_case ? std::string("case_*") : name) +
+                 (std::filesystem::is_directory(out / name) ? "/" : "");
+    }
+    std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), written.c_str(),
+                pictures() ? (" (sections z = " + to_text(section_z_) + ")").c_str() : "");
+  }
+
+ private:
+  bool pictures() const { return plan_.pictures != Pictures::none; }
+  // The periodic load cases' count: six, and the thermal one.
+  int cases() const { return foam_.delta_T == 0.0 ? 6 : 7; }
+
+  void print_answer(const Json& eff) const {
+    if (plan_.boundary == Boundary::mixed) {
+      std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
+      if (eff.contains("voigt"))
+        std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
+      std::printf(", %d corrections\n", eff["corrections"].get<int>());
+      return;
+    }
+    const Json& C = eff["stiffness"];
+    std::printf("  solved: C11 %.4g, C22 %.4g, C33 %.4g, C12 %.4g, C44 %.4g Pa; K %.4g, G %.4g Pa; symmetric to %.1e "
+                "(6 load cases, at most %d corrections)\n",
+                C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
+                C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
+                eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
+    if (!eff.contains("thermal_expansion")) return;
+    const Json& a = eff["thermal_expansion"];
+    std::printf("  thermal: free expansion %.4g, %.4g, %.4g 1/K (xx, yy, zz); residual stresses in report.json "
+                "(stresses.thermal)\n",
+                a["xx"].get<double>(), a["yy"].get<double>(), a["zz"].get<double>());
+  }
+
+  const RunPlan& plan_;
+  const CellJobs<3>& jobs_;
+  FoamOptions foam_;  // the plan's, the case's format decided by its size
+  std::string unit_;  // the pictures' scale bars
+  Mesh3Job mesh_job_;
+  std::optional<Tessellation3> t_;
+  std::optional<GrainMesh3> m_;
+  std::optional<ExportMesh3> e_;
+  FoamMesh3 fm_;
+  double section_z_ = 0.0;
+  Json mesh_fields_;
+};
+
+}  // namespace
+
+std::unique_ptr<CellRun> make_cell_run(const RunPlan& plan, const CellJobs<3>& jobs) {
+  return std::make_unique<SolidCellRun>(plan, jobs);
+}
+
+}  // namespace grainmesh

@@ -1,0 +1,61 @@
+// `grainmesh run`'s config read and checked once, before any work: the run plan (its specification).
+// The run (run_command.cpp) takes only this plan; errors found later (a phase left without
+// grains, a size too fine for the cell) name their key through the jobs' ConfigOrigin.
+// The dimension of the cell is decided here, once, by cell_dimensions.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "analysis/homogenise.hpp"
+#include "export/foam_options.hpp"
+#include "pipelines/config.hpp"
+#include "pipelines/mesh_3d_command.hpp"
+#include "pipelines/mesh_command.hpp"
+#include "pipelines/tessellate_3d_command.hpp"
+#include "pipelines/tessellate_command.hpp"
+
+namespace grainmesh {
+
+// Which pictures a run draws (output.pictures): none (no PNG, and no results.vtu: what a
+// sweep wants); basic (tessellation.png, mesh.png and, solved, stress_xx.png and
+// results.vtu); all (also mesh_detail.png, stress_yy.png, stress_xy.png and
+// displacement.png), the default. true and false are all and none.
+enum class Pictures { none, basic, all };
+
+// The jobs of a cell's tessellation and mesh, per dimension (their keys' meaning differs).
+template <int N>
+struct CellJobs;
+template <>
+struct CellJobs<2> {
+  TessellateJob tessellate;
+  MeshJob mesh;
+};
+template <>
+struct CellJobs<3> {
+  Tessellate3Job tessellate;
+  Mesh3Job mesh;
+};
+
+struct RunPlan {
+  std::string source;        // the config's file ("default" for the embedded one)
+  std::string fingerprint;   // config_fingerprint of the config
+  std::string resolved_ini;  // config.ini: the config as resolved, with what the defaults meant
+  std::variant<CellJobs<2>, CellJobs<3>> cell;
+  FoamOptions foam;
+  bool format_given = false;  // export.format given: a large case is not made binary
+  Boundary boundary = Boundary::mixed;
+  Pictures pictures = Pictures::all;
+  bool solve = false;
+  bool keep_cases = true;               // output.cases = keep (answers: dropped once solved)
+  std::vector<std::string> warnings;    // what the config's load makes doubtful (check_load)
+
+  int dimensions() const { return cell.index() == 0 ? 2 : 3; }
+};
+
+// Reads and checks every key of a run config (`solve`: the run solves, --solve).
+// Throws ConfigError naming the key.
+RunPlan read_run_plan(const Config& config, bool solve);
+
+}  // namespace grainmesh
