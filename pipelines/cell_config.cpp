@@ -1,9 +1,12 @@
 #include "pipelines/cell_config.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <string_view>
 
 #include "common/format.hpp"
+#include "domain/shape_parser.hpp"
 #include "pipelines/material_units.hpp"
 
 namespace grainmesh {
@@ -23,6 +26,74 @@ DiagramSettings read_diagram_settings(const Config& c, double min_edge) {
   else if (arr == "clustered") d.arrangement = Arrangement::clustered;
   else c.fail("tessellation.arrangement", "unknown arrangement '" + arr + "' (random, dispersed or clustered)");
   return d;
+}
+
+namespace {
+
+// The seeds of tessellation.seeds, each checked inside the box.
+std::vector<Vec3> read_seeds(const Config& c, Vec3 box, int dimensions) {
+  const std::string what = c.source() + ": tessellation.seeds";
+  std::vector<Vec3> seeds;
+  for (const auto& text : c.all("tessellation.seeds")) {
+    if (dimensions == 2) {
+      for (const Vec2 p : parse_point_list(text, what)) seeds.push_back({p.x, p.y, 0.0});
+      continue;
+    }
+    for (std::string_view rest = text; !rest.empty();) {
+      const std::size_t comma = rest.find(',');
+      const std::vector<double> v = parse_numbers(rest.substr(0, comma), 3, what + " (x y z, x y z, ...)");
+      seeds.push_back({v[0], v[1], v[2]});
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    }
+  }
+  const char* name = dimensions == 3 ? "box" : "cell";
+  for (const Vec3& p : seeds) {
+    bool inside = true;
+    std::string at, extent;
+    for (int a = 0; a < dimensions; ++a) {
+      inside = inside && p[a] >= 0.0 && p[a] <= box[a];
+      at += (a ? ", " : "") + to_text(p[a]);
+      extent += std::string(a ? " x " : "") + "[0, " + to_text(box[a]) + "]";
+    }
+    if (!inside) c.fail("tessellation.seeds", "seed (" + at + ") lies outside the " + name + " " + extent);
+  }
+  if (seeds.empty()) c.fail("tessellation.seeds", dimensions == 3 ? "no seed given (x y z, x y z, ...)" : "no seed given (x y, x y, ...)");
+  return seeds;
+}
+
+}  // namespace
+
+GrainCount read_grain_count(const Config& c, Vec3 box, int dimensions) {
+  const double most = dimensions == 3 ? 1e6 : 1e7;
+  const std::string most_text = dimensions == 3 ? "a million" : "10 million";
+  const char* name = dimensions == 3 ? "box" : "cell";
+  if (c.has("tessellation.grains") && c.has("tessellation.grain_size"))
+    c.fail("tessellation.grain_size", "give either tessellation.grains or tessellation.grain_size, not both");
+  GrainCount count;
+  if (c.has("tessellation.seeds")) {
+    if (c.has("tessellation.grain_size"))
+      c.fail("tessellation.grain_size", "give tessellation.seeds or tessellation.grain_size, not both");
+    count.seeds = read_seeds(c, box, dimensions);
+    if (static_cast<double>(count.seeds.size()) > most) c.fail("tessellation.seeds", "more than " + most_text + " seeds");
+    count.grains = static_cast<int>(count.seeds.size());
+    if (c.has("tessellation.grains") && c.integer("tessellation.grains", 0) != count.grains)
+      c.fail("tessellation.grains", "is " + c.text("tessellation.grains") + " but tessellation.seeds gives " +
+                                        std::to_string(count.grains) + " seeds: set it to that or leave it out");
+  } else if (c.has("tessellation.grain_size")) {
+    const double d = positive(c, "tessellation.grain_size");  // mean equivalent-circle (-sphere) diameter
+    const double n = dimensions == 3 ? std::round(box.x * box.y * box.z / (std::numbers::pi / 6.0 * d * d * d))
+                                     : std::round(box.x * box.y / (0.25 * std::numbers::pi * d * d));
+    if (n < 1.0) c.fail("tessellation.grain_size", std::string("is larger than the ") + name + ": no grain fits");
+    if (n > most) c.fail("tessellation.grain_size", "gives " + to_text(n) + " grains, more than " + most_text);
+    count.grains = static_cast<int>(n);
+  } else {
+    const long long n = c.integer("tessellation.grains", 100);
+    if (n < 1) c.fail("tessellation.grains", "must be at least 1, got " + c.text("tessellation.grains"));
+    if (static_cast<double>(n) > most)
+      c.fail("tessellation.grains", "must be at most " + most_text + (dimensions == 3 ? " in 3D" : ""));
+    count.grains = static_cast<int>(n);
+  }
+  return count;
 }
 
 std::vector<Phase> read_phases(const Config& c) {

@@ -10,7 +10,9 @@
 #include "mesh/quality.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/run_cases.hpp"
+#include "pipelines/mesh_command.hpp"
 #include "pipelines/result_pictures.hpp"
+#include "pipelines/tessellate_command.hpp"
 #include "tessellate/tessellation_json.hpp"
 #include "view/picture.hpp"
 
@@ -25,8 +27,9 @@ class PlaneCellRun final : public CellRun {
 
   void tessellate(Warnings& warnings) override {
     t_ = run_tessellate_job(jobs_.tessellate);
-    check_phases_have_grains(*t_, jobs_.tessellate);
-    for (const std::string& w : tessellation_warnings(*t_)) warnings.add(w);
+    const TessellationStats& s = t_->stats;
+    check_phases_have_grains(t_->phases, s.phases, s.grains, jobs_.tessellate.origin, jobs_.tessellate.options.matrix_phase);
+    for (const std::string& w : phase_fraction_warnings(t_->phases, s.phases, s.grains)) warnings.add(w);
   }
 
   void mesh(const StageLine& stage, Warnings& warnings) override {

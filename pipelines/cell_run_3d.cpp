@@ -7,7 +7,9 @@
 #include "export/foam_load.hpp"
 #include "pipelines/answer_3d.hpp"
 #include "pipelines/cell_run.hpp"
+#include "pipelines/mesh_3d_command.hpp"
 #include "pipelines/run_cases.hpp"
+#include "pipelines/tessellate_3d_command.hpp"
 #include "view/picture.hpp"
 
 namespace grainmesh {
@@ -19,10 +21,10 @@ class SolidCellRun final : public CellRun {
   SolidCellRun(const RunPlan& plan, const CellJobs<3>& jobs)
       : plan_(plan), jobs_(jobs), foam_(plan.foam), unit_(length_unit_name(plan.foam.convert_to_meters)) {}
 
-  void tessellate(Warnings& warnings) override { t_ = run_tessellate_3d_job(jobs_.tessellate, warnings); }
+  void tessellate(Warnings& warnings) override { t_ = run_tessellate_job(jobs_.tessellate, warnings); }
 
   void mesh(const StageLine& stage, Warnings&) override {
-    mesh_job_ = resolve_mesh_3d_job(jobs_.mesh, *t_);
+    mesh_job_ = resolve_mesh_job(jobs_.mesh, *t_);
     mesh_job_.options.deadline = jobs_.tessellate.options.deadline;  // one guard for the whole run
     stage.show("meshing " + std::to_string(t_->regions.size()) + " regions");
     m_ = run_mesh_3d_job(*t_, mesh_job_);

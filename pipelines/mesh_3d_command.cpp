@@ -14,56 +14,6 @@
 
 namespace grainmesh {
 
-namespace {
-
-// Far too many tetrahedra is a slip (a unit, a digit): refused before any work is done.
-constexpr double kMaxTets = 2e7;
-
-}  // namespace
-
-Mesh3Job read_mesh_3d_job(const Config& c) {
-  for (const char* key : {"mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
-                          "mesh.grading", "mesh.seed", "mesh.max_iterations"})
-    if (c.has(key)) c.fail(key, "not available for 3D meshes (mesh.size or mesh.tets_per_grain, mesh.threads)");
-  for (const std::string& name : c.names_in("phase"))
-    if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
-  Mesh3Job job;
-  job.origin = c.origin();
-  GrainMesh3Options& o = job.options;
-  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
-  if (c.has(size_key) && c.has("mesh.tets_per_grain"))
-    c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
-  if (c.has(size_key)) {
-    o.size = c.number(size_key);
-    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
-    job.size_key = size_key;
-  } else {
-    job.per_grain = c.number("mesh.tets_per_grain", 500.0);
-    if (!(*job.per_grain >= 10.0 && *job.per_grain <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
-  }
-  const long long threads = c.integer("mesh.threads", 0);
-  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
-  o.threads = static_cast<int>(threads);
-  const long long width = c.integer("output.picture_width", job.picture_width);
-  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
-  job.picture_width = static_cast<int>(width);
-  job.section = c.number("output.section", job.section);
-  if (!(job.section > 0.0 && job.section < 1.0))
-    c.fail("output.section", "must lie in (0, 1) (a fraction of the depth), got " + c.text("output.section"));
-  o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
-  return job;
-}
-
-Mesh3Job resolve_mesh_3d_job(Mesh3Job job, const Tessellation3& t) {
-  GrainMesh3Options& o = job.options;
-  if (job.per_grain) o.size = size_for_tets_per_grain(t, *job.per_grain);
-  const double tets = t.width * t.height * t.depth / regular_tet_volume(o.size);
-  if (tets > kMaxTets)
-    job.origin.fail(job.per_grain ? "mesh.tets_per_grain" : job.size_key,
-                    "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");
-  return job;
-}
-
 GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job) {
   GrainMesh3 m = mesh_tessellation_3d(t, job.options);
   try {
@@ -135,7 +85,7 @@ void print_mesh_3d_summary(const Json& mesh, double seconds) {
 
 void run_mesh_3d_command(const Tessellation3& t, const std::filesystem::path& tessellation, const Config& c,
                          const std::filesystem::path& out) {
-  const Mesh3Job job = resolve_mesh_3d_job(read_mesh_3d_job(c), t);
+  const Mesh3Job job = resolve_mesh_job(read_mesh_3d_job(c), t);
   const GrainMesh3 m = run_mesh_3d_job(t, job);
   Warnings warnings;
   StagedOutput staged(out, "mesh");

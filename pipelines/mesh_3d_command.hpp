@@ -9,28 +9,11 @@
 
 #include "grains3d/grain_mesh_3d.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/mesh_job.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
-
-// The mesh keys of a 3D cell, read; the size per grain resolved against a tessellation by
-// resolve_mesh_3d_job.
-struct Mesh3Job {
-  GrainMesh3Options options;
-  int picture_width = 1200;  // pixels
-  double section = 0.5;      // mesh.png: the section's height, a fraction of the depth
-  std::optional<double> per_grain;  // mesh.tets_per_grain, when no size is given
-  std::string size_key;             // mesh.size or mesh.h, when given
-  ConfigOrigin origin;              // names the key at fault in resolve_mesh_3d_job's errors
-};
-
-// Reads and checks the mesh keys for a 3D tessellation: mesh.size (or mesh.h) or
-// mesh.tets_per_grain (default 500), mesh.threads; the 2D-only keys refused by name.
-Mesh3Job read_mesh_3d_job(const Config& config);
-// The job for tessellation `t`: options.size from mesh.tets_per_grain; refuses (ConfigError
-// naming the key) a size that asks for more than 2e7 tetrahedra.
-Mesh3Job resolve_mesh_3d_job(Mesh3Job job, const Tessellation3& t);
 
 // Meshes the cell and checks the mesh's conformity (check_conformity throws otherwise).
 GrainMesh3 run_mesh_3d_job(const Tessellation3& t, const Mesh3Job& job);

@@ -11,29 +11,9 @@
 #include "grains/grain_mesh.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/mesh_job.hpp"
 
 namespace grainmesh {
-
-// The mesh keys, read; the size per grain and per phase resolved against a tessellation
-// by resolve_mesh_job.
-struct MeshJob {
-  GrainMeshOptions options;
-  int picture_width = 1200;  // pixels
-  std::optional<double> per_grain;                          // mesh.triangles_per_grain, when no size is given
-  std::string size_key;                                     // mesh.size or mesh.h, when given
-  std::vector<std::pair<std::string, double>> phase_sizes;  // phase.NAME.size, by name
-  ConfigOrigin origin;                                      // names the key at fault in resolve_mesh_job's errors
-};
-
-// Reads and checks the mesh keys (all that can be checked without the tessellation).
-// Throws ConfigError naming the key.
-MeshJob read_mesh_job(const Config& config);
-// The job for tessellation `t`: options.size from mesh.triangles_per_grain and the grains'
-// mean area, options.phase_size by the tessellation's phases; refuses (ConfigError naming
-// the key) an unknown phase and a size that asks for more than 2 kMaxMeshPoints triangles.
-MeshJob resolve_mesh_job(MeshJob job, const Tessellation& t);
-// Both at once (the mesh command's and the tests' way).
-MeshJob read_mesh_job(const Config& config, const Tessellation& t);
 
 // Reads and validates tessellation.json. Throws IoError or GeometryError naming the file.
 Tessellation read_tessellation_file(const std::filesystem::path& file);

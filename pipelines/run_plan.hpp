@@ -11,10 +11,8 @@
 #include "analysis/homogenise.hpp"
 #include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
-#include "pipelines/mesh_3d_command.hpp"
-#include "pipelines/mesh_command.hpp"
-#include "pipelines/tessellate_3d_command.hpp"
-#include "pipelines/tessellate_command.hpp"
+#include "pipelines/mesh_job.hpp"
+#include "pipelines/tessellate_job.hpp"
 
 namespace grainmesh {
 

@@ -8,25 +8,10 @@
 
 #include "pipelines/config.hpp"
 #include "pipelines/report.hpp"
+#include "pipelines/tessellate_job.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
-
-struct Tessellate3Job {
-  Tessellation3Options options;
-  std::uint64_t seed = 1;
-  int picture_width = 1200;  // pixels
-  double section = 0.5;      // the section's height, as a fraction of the depth
-  ConfigOrigin origin;       // names the key at fault in errors found while tessellating
-};
-
-// Reads and checks a 3D tessellation config (the keys of tessellate_config_keys(); the
-// 2D-only ones refused by name). Throws ConfigError naming the key.
-Tessellate3Job read_tessellate_3d_job(const Config& config);
-
-// Tessellates (randomness from job.seed only). A phase with no grain fails naming its
-// fraction key; a fraction missed by more than 1 % becomes a warning.
-Tessellation3 run_tessellate_3d_job(const Tessellate3Job& job, Warnings& warnings);
 
 // Writes tessellation.json, tessellation.vtu and, when `pictures`, tessellation.png (the
 // section at section_height: a laminate's face may lie in the plane asked for), its scale

@@ -1,0 +1,178 @@
+#include "pipelines/tessellate_job.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/random.hpp"
+#include "pipelines/cell_config.hpp"
+#include "pipelines/config_keys.hpp"
+#include "pipelines/phase_checks.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/tessellate_3d.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// Binder mode's matrix phase: named, else the phase called matrix or binder.
+void read_matrix_phase(const Config& c, TessellationOptions& o) {
+  if (o.phase_mode == PhaseMode::binder) {
+    std::string matrix = c.optional_text("tessellation.matrix_phase").value_or("");
+    if (matrix.empty())
+      for (const Phase& p : o.phases)
+        if (p.name == "matrix" || p.name == "binder") matrix = p.name;
+    if (matrix.empty()) c.fail("tessellation.matrix_phase", "binder mode needs the matrix phase's name");
+    for (std::size_t p = 0; p < o.phases.size(); ++p)
+      if (o.phases[p].name == matrix) o.matrix_phase = static_cast<int>(p);
+    if (o.matrix_phase < 0) c.fail("tessellation.matrix_phase", "no phase is named '" + matrix + "'");
+    if (o.phases.size() < 2) c.fail("tessellation.matrix_phase", "binder mode needs a grain phase besides the matrix");
+  } else if (c.has("tessellation.matrix_phase")) {
+    c.fail("tessellation.matrix_phase", "only used with tessellation.phase_mode = binder");
+  }
+}
+
+// A contiguity target and the phase it is of (grain mode only).
+void read_contiguity(const Config& c, TessellationOptions& o) {
+  if (c.has("tessellation.contiguity")) {
+    const double target = c.number("tessellation.contiguity");
+    if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
+    if (o.phase_mode != PhaseMode::grain)
+      c.fail("tessellation.contiguity", "a target only in grain mode (in binder mode the binder keeps the grains apart)");
+    if (c.has("tessellation.arrangement") && o.arrangement != Arrangement::random)
+      c.fail("tessellation.contiguity", "give tessellation.arrangement or tessellation.contiguity, not both");
+    o.contiguity = target;
+    // The phase it is of: named, else the rest phase, else the first.
+    const std::string name = c.optional_text("tessellation.contiguity_phase").value_or("");
+    for (std::size_t p = 0; p < o.phases.size(); ++p)
+      if (name.empty() ? o.phases[p].rest : o.phases[p].name == name) o.contiguity_phase = static_cast<int>(p);
+    if (!name.empty() && o.contiguity_phase < 0)
+      c.fail("tessellation.contiguity_phase", "no phase is named '" + name + "'");
+    if (o.contiguity_phase < 0) o.contiguity_phase = 0;
+  } else if (c.has("tessellation.contiguity_phase")) {
+    c.fail("tessellation.contiguity_phase", "only used with tessellation.contiguity");
+  }
+}
+
+// A contiguity target missed: refused, with the range the trades reach.
+void check_contiguity(const Tessellation& t, const TessellateJob& job) {
+  const TessellationOptions& o = job.options;
+  if (!o.contiguity) return;
+  const double reached = t.stats.phases[o.contiguity_phase].contiguity;
+  if (std::abs(reached - *o.contiguity) <= kContiguityTolerance) return;
+  const std::string phase = t.phases[o.contiguity_phase].name;
+  const auto& range = t.stats.contiguity_range;
+  job.origin.fail("tessellation.contiguity",
+         to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
+             std::to_string(job.seed) + "): " +
+             (range ? "trading like-sized grains' labels moves its contiguity from " + to_text(range->first, 3) + " to " +
+                          to_text(range->second, 3)
+                    : "it reached " + to_text(reached, 3)) +
+             "; ask within that, or change the fractions or the grains");
+}
+
+// Keys of the 2D stage with no 3D meaning yet, and why.
+void refuse_2d_only(const Config& c) {
+  for (const char* key : {"tessellation.matrix_phase", "tessellation.contiguity",
+                          "tessellation.contiguity_phase"})
+    if (c.has(key)) c.fail(key, "not available for 3D cells yet (domain.depth is set)");
+  if (c.optional_text("tessellation.phase_mode").value_or("grain") != "grain")
+    c.fail("tessellation.phase_mode", "3D cells have grain mode only so far, got '" + c.text("tessellation.phase_mode") + "'");
+}
+
+// The keys a plane and a solid cell's job share: the box (its depth in 3D), periodicity,
+// grain count, seed, the diagram's settings, the phases, the pictures' width, time limit.
+template <class Job>
+void read_shared_keys(const Config& c, Job& job) {
+  job.origin = c.origin();
+  auto& o = job.options;
+  o.width = positive(c, "domain.width");
+  o.height = positive(c, "domain.height");
+  Vec3 box{o.width, o.height, 0.0};
+  constexpr bool solid = requires { o.depth; };
+  if constexpr (solid) box.z = o.depth = positive(c, "domain.depth");
+  o.periodic = c.flag("domain.periodic", true);
+  const GrainCount count = read_grain_count(c, box, solid ? 3 : 2);
+  o.grains = count.grains;
+  for (const Vec3& p : count.seeds) {
+    if constexpr (solid) o.seeds.push_back(p);
+    else o.seeds.push_back({p.x, p.y});
+  }
+  job.seed = c.unsigned_integer("tessellation.seed", 1);
+  const DiagramSettings d = read_diagram_settings(c, o.min_edge);
+  o.lloyd_iterations = d.lloyd_iterations;
+  o.size_cv = d.size_cv;
+  o.min_edge = d.min_edge;
+  o.arrangement = d.arrangement;
+  o.phases = read_phases(c);
+  const long long width = c.integer("output.picture_width", job.picture_width);
+  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  job.picture_width = static_cast<int>(width);
+  o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
+}
+
+}  // namespace
+
+TessellateJob read_tessellate_job(const Config& c) {
+  c.check_keys(tessellate_config_keys());
+  if (cell_dimensions(c) == 3)
+    c.fail("domain.depth", "3D cells go through grainmesh tessellate, mesh, run, sweep and converge; export takes "
+                           "2D meshes (leave domain.depth out)");
+  if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
+  TessellateJob job;
+  read_shared_keys(c, job);
+  TessellationOptions& o = job.options;
+  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
+  if (mode == "grain") o.phase_mode = PhaseMode::grain;
+  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
+  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
+  read_matrix_phase(c, o);
+  read_contiguity(c, o);
+  return job;
+}
+
+Tessellate3Job read_tessellate_3d_job(const Config& c) {
+  c.check_keys(tessellate_config_keys());
+  refuse_2d_only(c);
+  Tessellate3Job job;
+  read_shared_keys(c, job);
+  job.section = c.number("output.section", job.section);
+  if (!(job.section > 0.0 && job.section < 1.0))
+    c.fail("output.section", "must lie in (0, 1) (a fraction of domain.depth), got " + c.text("output.section"));
+  return job;
+}
+
+Tessellation run_tessellate_job(const TessellateJob& job) {
+  Rng rng(job.seed);
+  Tessellation t;
+  try {
+    t = tessellate(job.options, rng);
+  } catch (const ConfigError& e) {
+    // The only option tessellate() can find unreachable is the binder fraction.
+    const TessellationOptions& o = job.options;
+    const std::string key = o.matrix_phase >= 0 ? "phase." + o.phases[o.matrix_phase].name + ".fraction" : "phase.*.fraction";
+    job.origin.fail(key, e.what());
+  }
+  check_contiguity(t, job);
+  return t;
+}
+
+Tessellation3 run_tessellate_job(const Tessellate3Job& job, Warnings& warnings) {
+  Rng rng(job.seed);
+  Tessellation3 t;
+  try {
+    t = tessellate_3d(job.options, rng);
+  } catch (const GeometryError& e) {
+    // The stage's own checks failed: an inconsistency no config should be able to make.
+    throw GeometryError(std::string("the 3D tessellation failed its own check (") + e.what() +
+                        "): a grainmesh bug, please report it with this config; another " +
+                        (job.options.seeds.empty() ? "tessellation.seed" : "placing of tessellation.seeds") +
+                        " or tessellation.lloyd_iterations avoids it");
+  }
+  check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin);
+  for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
+  return t;
+}
+
+}  // namespace grainmesh
