@@ -7,6 +7,7 @@
 
 #include "common/format.hpp"
 #include "domain/shape_parser.hpp"
+#include "pipelines/config_values.hpp"
 #include "pipelines/material_units.hpp"
 
 namespace grainmesh {

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <set>
 #include <sstream>
 
@@ -14,6 +13,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "pipelines/key_patterns.hpp"
 
 namespace grainmesh {
 
@@ -87,76 +87,12 @@ Config Config::from_text(std::string_view text, std::string source, const std::v
   return c;
 }
 
-namespace {
-
-// A known key matches a key when their dot-separated parts agree, "*" matching any one.
-bool key_matches(std::string_view pattern, std::string_view key) {
-  while (true) {
-    const auto pd = pattern.find('.'), kd = key.find('.');
-    const std::string_view ph = pattern.substr(0, pd), kh = key.substr(0, kd);
-    if (ph != "*" ? ph != kh : kh.empty()) return false;
-    if (pd == std::string_view::npos || kd == std::string_view::npos) return pd == kd;
-    pattern.remove_prefix(pd + 1);
-    key.remove_prefix(kd + 1);
-  }
-}
-
-// Levenshtein's edit distance.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// The known key nearest `key` when it is a slip away (a letter or two: US spelling,
-// a typo), a "*" part taken as the key's own; empty otherwise.
-std::string nearest_key(const std::string& key, const std::vector<std::string>& known) {
-  std::string best;
-  std::size_t best_distance = 3;  // at most two edits
-  for (const std::string& k : known) {
-    // The pattern with its "*" parts filled from the key's.
-    std::string filled;
-    std::size_t kp = 0, pp = 0;
-    while (pp <= k.size()) {
-      const std::size_t pe = std::min(k.find('.', pp), k.size()), ke = std::min(key.find('.', kp), key.size());
-      const std::string part = k.substr(pp, pe - pp);
-      filled += (filled.empty() ? "" : ".") + (part == "*" && kp <= key.size() ? key.substr(kp, ke - kp) : part);
-      pp = pe + 1;
-      kp = ke + 1;
-    }
-    const std::size_t d = edit_distance(key, filled);
-    if (d < best_distance && 4 * d <= key.size()) best_distance = d, best = filled;  // a slip, not another short key
-  }
-  return best;
-}
-
-}  // namespace
-
 void Config::check_keys(const std::vector<std::string>& known) const {
   for (const auto& entry : entries_) {
     const std::string& key = entry.first;
-    if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); })) {
-      // Point at the section's keys when the section exists, so typos are easy to fix.
-      const std::string section = key.substr(0, key.find('.') + 1);
-      std::string hint;
-      for (const auto& k : known)
-        if (!section.empty() && k.rfind(section, 0) == 0) hint += (hint.empty() ? "" : ", ") + k;
-      const std::string nearest = nearest_key(key, known);
-      throw ConfigError(origin_.where(key) + ": unknown key '" + key + "'" +
-                        (!nearest.empty() ? " (did you mean " + nearest + "?)"
-                         : hint.empty()   ? ""
-                                          : " (known here: " + hint + ")") +
+    if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return key_matches(k, key); }))
+      throw ConfigError(origin_.where(key) + ": unknown key '" + key + "'" + unknown_key_hint(key, known) +
                         "; grainmesh keys lists them all");
-    }
   }
 }
 
@@ -252,32 +188,6 @@ bool Config::flag(const std::string& key, bool fallback) const {
   if (s == "true" || s == "yes" || s == "on" || s == "1") return true;
   if (s == "false" || s == "no" || s == "off" || s == "0") return false;
   fail(key, "'" + s + "' is not true or false");
-}
-
-double read_time_limit(const Config& c) {
-  if (c.optional_text(kTimeLimitKey) == "none") return std::numeric_limits<double>::infinity();
-  const double seconds = c.number(kTimeLimitKey, kDefaultTimeLimitSeconds);
-  if (!(seconds > 0.0) || !std::isfinite(seconds))
-    c.fail(kTimeLimitKey, "must be a positive number of seconds or none, got " + c.text(kTimeLimitKey));
-  return seconds;
-}
-
-double positive(const Config& c, const std::string& key) {
-  if (!c.has(key)) c.fail(key, "missing (required)");
-  const double v = c.number(key);
-  if (!(v > 0.0) || !std::isfinite(v)) c.fail(key, "must be positive, got " + c.text(key));
-  return v;
-}
-
-double positive(const Config& c, const std::string& key, double fallback) {
-  const double v = c.number(key, fallback);
-  if (!(v > 0.0)) c.fail(key, "must be positive, got " + c.text(key));
-  return v;
-}
-
-std::string one_of_keys(const Config& c, const std::string& a, const std::string& b) {
-  if (c.has(a) && c.has(b)) c.fail(b, "give either " + a + " or " + b + ", not both");
-  return c.has(b) ? b : a;
 }
 
 }  // namespace grainmesh

@@ -64,21 +64,6 @@ class Config {
   std::vector<std::pair<std::string, std::string>> entries_;
 };
 
-// The run's wall-clock guard: key limits.seconds, seconds > 0 or "none"; 6 hours unless
-// given. Every command that meshes or tessellates reads it and reports it.
-inline constexpr const char* kTimeLimitKey = "limits.seconds";
-inline constexpr double kDefaultTimeLimitSeconds = 6 * 3600.0;
-// Its value (infinity for "none"). Throws ConfigError naming the key.
-double read_time_limit(const Config& config);
-
-// A key's value that must be a positive number (ConfigError naming the key otherwise):
-// required, or `fallback` when the key is not given.
-double positive(const Config& c, const std::string& key);
-double positive(const Config& c, const std::string& key, double fallback);
-// Of two names for one key (`a`, and the run config's `b`: mesh.size and mesh.h), the one
-// the config gives (a when neither); both given fails naming b.
-std::string one_of_keys(const Config& config, const std::string& a, const std::string& b);
-
 // The dimension of the cell a config describes, decided here and nowhere else: 3 when it
 // sets domain.depth (a W x H x D box), 2 otherwise.
 inline int cell_dimensions(const Config& config) { return config.has("domain.depth") ? 3 : 2; }

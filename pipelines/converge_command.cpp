@@ -8,24 +8,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/richardson.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "pipelines/convergence_study.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
-#include "pipelines/report_read.hpp"
 #include "pipelines/run_command.hpp"
 #include "pipelines/run_config.hpp"
 #include "pipelines/run_plan.hpp"
-#include "view/picture.hpp"
 
 namespace grainmesh {
 
 namespace {
 
-
-// Relative tolerance of "converged" in the study.
-constexpr double kWithin = 1e-3;
 
 // The quantities a level's report gives: the mixed modulus (and the biased area average
 // beside it), or the periodic tensor's components.
@@ -46,9 +41,6 @@ std::vector<std::pair<std::string, double>> quantities(const Json& effective, in
 std::string level_key(const Config& c) {
   return cell_dimensions(c) == 3 ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
 }
-// The column of the levels' elements per grain in convergence.csv and the report.
-const char* per_grain_name(int dimensions) { return dimensions == 3 ? "tets_per_grain" : "triangles_per_grain"; }
-
 // The study's checks: its levels, and no key that fixes an element size.
 void check_study(const Config& c, const ConvergeOptions& o) {
   if (o.levels < 3 || o.levels > 12)
@@ -62,16 +54,6 @@ void check_study(const Config& c, const ConvergeOptions& o) {
       c.fail(key, "fixes an element size, which would not follow the study's levels (" + level_key(c) +
                       "); remove it to study convergence");
 }
-
-// The runs of the study's levels: each quantity's value per level, the levels' cells,
-// triangles per grain and seconds, and their entries in the report.
-struct Levels {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> values;  // [quantity][level]
-  std::vector<double> cells, tpg, seconds;
-  int dimensions = 2;
-  Json json = Json::array();
-};
 
 // Runs the levels into `dir`; a failed solve keeps the study so far as DIR.failed.
 Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged, const ConvergeOptions& o) {
@@ -88,8 +70,9 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
     const Config level = Config::from_text(ini, c.source(), {level_key(c) + "=" + std::to_string(n)});
     std::fprintf(stderr, "grainmesh converge: level %d of %d: %d %s per grain\n", k + 1, o.levels, n,
                  l.dimensions == 3 ? "tetrahedra" : "triangles");
+    Json report;  // the level's, as its run wrote it
     try {
-      run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+      report = run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
     } catch (const SolveError& e) {
       // Kept for a look, as a run keeps its failed solve: the study so far as DIR.failed,
       // the message naming the log where it now is.
@@ -101,7 +84,6 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       staged.keep_as_failed();
       throw SolveError(what);
     }
-    const Json report = read_report(dir / name / "report.json");
     const auto q = quantities(report.at("effective"), l.dimensions);
     if (names.empty()) {
       for (const auto& [qn, v] : q) names.push_back(qn);
@@ -118,96 +100,6 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
   }
 
   return l;
-}
-
-// Each quantity's Richardson estimate and the coarsest level within kWithin of its limit.
-struct Study {
-  std::vector<RichardsonEstimate> estimates;
-  std::vector<std::optional<int>> within;
-  Json json = Json::object();
-};
-
-Study study_of(const Levels& l) {
-  const std::vector<std::string>& names = l.names;
-  const std::vector<std::vector<double>>& values = l.values;
-  const std::vector<double>&cells = l.cells, &tpg = l.tpg;
-  Study st;
-  Json& study = st.json;
-  std::vector<RichardsonEstimate>& estimates = st.estimates;
-  std::vector<std::optional<int>>& within = st.within;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    estimates.push_back(richardson(values[i], cells, l.dimensions));
-    within.push_back(first_within(values[i], estimates.back().limit, kWithin));
-    Json s{{"values", values[i]},
-           {"limit", estimates.back().limit},
-           {"asymptotic", estimates.back().asymptotic},
-           {"settled", estimates.back().settled},
-           {"order", estimates.back().order ? Json(*estimates.back().order) : Json(nullptr)},
-           {"coarsest_within_0.1_percent",
-            within.back() ? Json(static_cast<int>(tpg[static_cast<std::size_t>(*within.back())])) : Json(nullptr)}};
-    study[names[i]] = s;
-  }
-
-  return st;
-}
-
-// convergence.csv: a row per level, then the limit, the order and the coarsest level
-// within 0.1 % of the limit (in triangles per grain).
-std::string convergence_csv(const Levels& l, const Study& st) {
-  const std::vector<std::string>& names = l.names;
-  const std::vector<std::vector<double>>& values = l.values;
-  const std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
-  const std::vector<RichardsonEstimate>& estimates = st.estimates;
-  const std::vector<std::optional<int>>& within = st.within;
-  std::string csv = std::string("level,") + per_grain_name(l.dimensions) + ",cells,seconds";
-  for (const std::string& n : names) csv.append(",").append(n);
-  csv += "\n";
-  for (std::size_t k = 0; k < tpg.size(); ++k) {
-    csv += std::to_string(k) + "," + to_text(tpg[k]) + "," + to_text(cells[k]) + "," + to_text(seconds[k], 4);
-    for (const auto& v : values) csv.append(",").append(to_text(v[k], 10));
-    csv += "\n";
-  }
-  auto row = [&](const std::string& label, auto cell) {
-    csv += label + ",,,";
-    for (std::size_t i = 0; i < names.size(); ++i) csv.append(",").append(cell(i));
-    csv += "\n";
-  };
-  row("richardson_limit", [&](std::size_t i) { return to_text(estimates[i].limit, 10); });
-  row("observed_order", [&](std::size_t i) { return estimates[i].order ? to_text(*estimates[i].order, 3) : std::string(); });
-  row("coarsest_within_0.1_percent",
-      [&](std::size_t i) { return within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]) : std::string(); });
-
-  return csv;
-}
-
-// convergence.png: each quantity's distance from its limit, in per cent, over the cells;
-// under mixed both estimators of the modulus from the traction value's limit, which the
-// area average approaches from above.
-void write_convergence_png(const std::filesystem::path& file, const Levels& l, const Study& st) {
-  const std::vector<std::string>& names = l.names;
-  const std::vector<std::vector<double>>& values = l.values;
-  const std::vector<double>& cells = l.cells;
-  const std::vector<RichardsonEstimate>& estimates = st.estimates;
-  const bool mixed = names.front() == "modulus";
-  Plot plot{.x_label = "cells",
-            .y_label = mixed ? "modulus: deviation from the Richardson limit (%)" : "deviation from the Richardson limit (%)",
-            .series = {}};
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const double limit = estimates[mixed ? 0 : i].limit;
-    PlotSeries line{.name = names[i], .points = {}, .line = true, .colour = static_cast<int>(i)};
-    for (std::size_t k = 0; k < cells.size(); ++k) line.points.push_back({cells[k], 100.0 * (values[i][k] / limit - 1.0)});
-    PlotSeries dots = line;
-    dots.name.clear();
-    dots.line = false;
-    plot.series.insert(plot.series.end(), {line, dots});
-  }
-  const int band_colour = 5;  // the plot palette's last: after every quantity's
-  plot.series.push_back({.name = "+/- 0.1 %", .points = {{cells.front(), 0.1}, {cells.back(), 0.1}}, .line = true,
-                         .colour = band_colour});
-  plot.series.push_back({.name = "", .points = {{cells.front(), -0.1}, {cells.back(), -0.1}}, .line = true,
-                         .colour = band_colour});
-  write_plot_png(file, plot);
-
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "domain/shape_parser.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/config_values.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"

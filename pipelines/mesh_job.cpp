@@ -6,6 +6,7 @@
 
 #include "common/format.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/config_values.hpp"
 
 namespace grainmesh {
 
@@ -14,6 +15,36 @@ namespace {
 // Far too many tetrahedra is a slip (a unit, a digit): refused before any work is done.
 constexpr double kMaxTets = 2e7;
 
+// The keys a plane and a solid cell's mesh share: the size (mesh.size or mesh.h), or
+// elements per grain under `per_grain_key` (`fallback` when neither is given, between
+// `fewest` and 1e6); mesh.threads, output.picture_width and the time limit.
+template <class Job>
+void read_shared_keys(const Config& c, Job& job, const std::string& per_grain_key, double fallback, double fewest) {
+  job.origin = c.origin();
+  auto& o = job.options;
+  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
+  if (c.has(size_key) && c.has(per_grain_key))
+    c.fail(per_grain_key, "give either " + size_key + " or " + per_grain_key + ", not both");
+  if (c.has(size_key)) {
+    o.size = c.number(size_key);
+    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
+    job.size_key = size_key;
+  } else {
+    job.per_grain = c.number(per_grain_key, fallback);
+    if (!(*job.per_grain >= fewest && *job.per_grain <= 1e6))
+      c.fail(per_grain_key, "must lie between " + to_text(fewest) + " and 1e6");
+  }
+  const long long threads = c.integer("mesh.threads", 0);
+  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
+  o.threads = static_cast<int>(threads);
+  const long long width = c.integer("output.picture_width", job.picture_width);
+  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
+  job.picture_width = static_cast<int>(width);
+  const Deadline deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
+  if constexpr (requires { o.distmesh; }) o.distmesh.deadline = deadline;
+  else o.deadline = deadline;
+}
+
 }  // namespace
 
 MeshJob read_mesh_job(const Config& c) {
@@ -21,21 +52,10 @@ MeshJob read_mesh_job(const Config& c) {
   for (const char* key : {"mesh.tets_per_grain", "output.section"})
     if (c.has(key)) c.fail(key, "only for 3D tessellations (tessellation.json version 2)");
   MeshJob job;
-  job.origin = c.origin();
+  read_shared_keys(c, job, "mesh.triangles_per_grain", 100.0, 2.0);
   GrainMeshOptions& o = job.options;
-  // mesh.h and mesh.grading are the run config's names of mesh.size and mesh.gradient.
-  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
+  // mesh.grading is the run config's name of mesh.gradient.
   const std::string gradient_key = one_of_keys(c, "mesh.gradient", "mesh.grading");
-  if (c.has(size_key) && c.has("mesh.triangles_per_grain"))
-    c.fail("mesh.triangles_per_grain", "give either " + size_key + " or mesh.triangles_per_grain, not both");
-  if (c.has(size_key)) {
-    o.size = c.number(size_key);
-    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
-    job.size_key = size_key;
-  } else {
-    job.per_grain = c.number("mesh.triangles_per_grain", 100.0);
-    if (!(*job.per_grain >= 2.0 && *job.per_grain <= 1e6)) c.fail("mesh.triangles_per_grain", "must lie between 2 and 1e6");
-  }
   for (const std::string& name : c.names_in("phase")) {
     const std::string key = "phase." + name + ".size";
     if (!c.has(key)) continue;
@@ -49,17 +69,10 @@ MeshJob read_mesh_job(const Config& c) {
   }
   o.gradient = c.number(gradient_key, o.gradient);
   if (!(o.gradient >= 0.05 && o.gradient <= 10.0)) c.fail(gradient_key, "must lie between 0.05 and 10");
-  const long long threads = c.integer("mesh.threads", 0);
-  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
-  o.threads = static_cast<int>(threads);
   o.seed = c.unsigned_integer("mesh.seed", 1);
   const long long iterations = c.integer("mesh.max_iterations", o.distmesh.max_iterations);
   if (iterations < 1 || iterations > 100'000'000) c.fail("mesh.max_iterations", "must be at least 1");
   o.distmesh.max_iterations = static_cast<int>(iterations);
-  const long long width = c.integer("output.picture_width", job.picture_width);
-  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
-  o.distmesh.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
-  job.picture_width = static_cast<int>(width);
   return job;
 }
 
@@ -107,29 +120,10 @@ Mesh3Job read_mesh_3d_job(const Config& c) {
   for (const std::string& name : c.names_in("phase"))
     if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
   Mesh3Job job;
-  job.origin = c.origin();
-  GrainMesh3Options& o = job.options;
-  const std::string size_key = one_of_keys(c, "mesh.size", "mesh.h");
-  if (c.has(size_key) && c.has("mesh.tets_per_grain"))
-    c.fail("mesh.tets_per_grain", "give either " + size_key + " or mesh.tets_per_grain, not both");
-  if (c.has(size_key)) {
-    o.size = c.number(size_key);
-    if (!(o.size > 0.0) || !std::isfinite(o.size)) c.fail(size_key, "must be positive, got " + c.text(size_key));
-    job.size_key = size_key;
-  } else {
-    job.per_grain = c.number("mesh.tets_per_grain", 500.0);
-    if (!(*job.per_grain >= 10.0 && *job.per_grain <= 1e6)) c.fail("mesh.tets_per_grain", "must lie between 10 and 1e6");
-  }
-  const long long threads = c.integer("mesh.threads", 0);
-  if (threads < 0 || threads > 1024) c.fail("mesh.threads", "must be between 0 (all cores) and 1024");
-  o.threads = static_cast<int>(threads);
-  const long long width = c.integer("output.picture_width", job.picture_width);
-  if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
-  job.picture_width = static_cast<int>(width);
+  read_shared_keys(c, job, "mesh.tets_per_grain", 500.0, 10.0);
   job.section = c.number("output.section", job.section);
   if (!(job.section > 0.0 && job.section < 1.0))
     c.fail("output.section", "must lie in (0, 1) (a fraction of the depth), got " + c.text("output.section"));
-  o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
   return job;
 }
 

@@ -45,7 +45,7 @@ void Warnings::add(const std::string& warning) {
   lines_.push_back(warning);
 }
 
-void write_report(const StagedOutput& out, Json report, const Warnings& warnings) {
+Json write_report(const StagedOutput& out, Json report, const Warnings& warnings) {
   Json ordered{{kReportCommand, out.kind()}, {"schema", kReportSchema}};
   for (auto& [key, value] : report.items())
     if (key != kReportCommand && key != "schema") ordered[key] = std::move(value);
@@ -55,6 +55,7 @@ void write_report(const StagedOutput& out, Json report, const Warnings& warnings
   std::sort(files.begin(), files.end());
   ordered[kReportFiles] = files;
   write_json(out.dir() / "report.json", ordered);
+  return ordered;
 }
 
 void add_time_limit(Json& report, const Deadline& deadline) {

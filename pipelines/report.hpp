@@ -48,6 +48,7 @@ class Warnings {
 
 // Writes `report` as the staged output's report.json, last: with "command" (the output's
 // kind) and "schema" first, then "warnings" and "files" (every entry of the directory) at the end.
-void write_report(const StagedOutput& out, Json report, const Warnings& warnings = {});
+// Returns the report as written.
+Json write_report(const StagedOutput& out, Json report, const Warnings& warnings = {});
 
 }  // namespace grainmesh

@@ -81,19 +81,19 @@ void solve_stage(CellRun& cell, const RunPlan& plan, StagedOutput& staged, const
 
 }  // namespace
 
-void run_run_command(const Config& config, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
+Json run_run_command(const Config& config, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   const RunPlan plan = read_run_plan(config, solve);
-  run_plan(plan, out, quiet, summary);
+  return run_plan(plan, out, quiet, summary);
 }
 
-void run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet, bool summary) {
+Json run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet, bool summary) {
   if (const auto* jobs = std::get_if<CellJobs<2>>(&plan.cell))
     return run_cell(*make_cell_run(plan, *jobs), plan, jobs->tessellate.options.deadline, out, quiet, summary);
   const auto& jobs = std::get<CellJobs<3>>(plan.cell);
-  run_cell(*make_cell_run(plan, jobs), plan, jobs.tessellate.options.deadline, out, quiet, summary);
+  return run_cell(*make_cell_run(plan, jobs), plan, jobs.tessellate.options.deadline, out, quiet, summary);
 }
 
-void run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
+Json run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
               bool summary) {
   claim_output(out, "run");
   Warnings warnings;
@@ -144,13 +144,14 @@ void run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, cons
   }
   log.seconds()["total"] = since(start);
   add_stage_figures(report, log, log.seconds());
-  write_report(staged, report, warnings);
+  const Json written = write_report(staged, report, warnings);
   staged.commit();
   stage.end();
-  if (!summary) return;
-  cell.print_summary(out, report);
+  if (!summary) return written;
+  cell.print_summary(out, written);
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
+  return written;
 }
 
 }  // namespace grainmesh

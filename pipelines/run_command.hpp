@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "pipelines/config.hpp"
+#include "pipelines/report.hpp"
 #include "pipelines/run_plan.hpp"
 
 namespace grainmesh {
@@ -17,17 +18,17 @@ namespace grainmesh {
 // any work) and runs it. With `solve`, also runs solidDisplacementFoam on the cases and
 // homogenises (report.json "effective"); a run that does not converge fails.
 // A terminal shows the stage and the meshing's progress on stderr unless `quiet`; the
-// summary goes to stdout when `summary`.
-void run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false,
+// summary goes to stdout when `summary`. Returns report.json as written.
+Json run_run_command(const Config& config, const std::filesystem::path& out, bool solve = false, bool quiet = false,
                      bool summary = true);
 
 // Runs a plan on its cell (a plane or a solid one: cell_run.hpp).
-void run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet = false, bool summary = true);
+Json run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet = false, bool summary = true);
 
 class CellRun;
 // The one run driver of plane and solid cells: `cell`'s stages in order, timed, their
 // output staged and committed with report.json last; `deadline` the run's time limit.
-void run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
+Json run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
               bool summary);
 
 }  // namespace grainmesh

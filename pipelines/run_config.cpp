@@ -1,16 +1,13 @@
 #include "pipelines/run_config.hpp"
 
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <map>
 
 #include "pipelines/config_keys.hpp"
+#include "pipelines/config_values.hpp"
 #include "pipelines/default_config.hpp"
 #include "pipelines/export_command.hpp"
-#include "pipelines/mesh_command.hpp"
-#include "pipelines/tessellate_3d_command.hpp"
-#include "pipelines/tessellate_command.hpp"
 
 namespace grainmesh {
 

@@ -8,6 +8,7 @@
 #include "common/random.hpp"
 #include "pipelines/cell_config.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/config_values.hpp"
 #include "pipelines/phase_checks.hpp"
 #include "tessellate/tessellate.hpp"
 #include "tessellate/tessellate_3d.hpp"
