@@ -9,6 +9,7 @@
 #include "grains/conformity.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/cell_run.hpp"
+#include "pipelines/directory.hpp"
 #include "pipelines/run_cases.hpp"
 #include "pipelines/mesh_command.hpp"
 #include "pipelines/result_pictures.hpp"

@@ -7,6 +7,7 @@
 #include "export/foam_load.hpp"
 #include "pipelines/answer_3d.hpp"
 #include "pipelines/cell_run.hpp"
+#include "pipelines/directory.hpp"
 #include "pipelines/mesh_3d_command.hpp"
 #include "pipelines/run_cases.hpp"
 #include "pipelines/tessellate_3d_command.hpp"

@@ -5,6 +5,7 @@
 
 #include "common/interrupt.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/key_reference.hpp"
 #include "pipelines/run_config.hpp"
 
 namespace grainmesh {

@@ -1,6 +1,7 @@
 // Every config key in one table: which commands read it, its default and what it means.
 // The commands' key lists, which their config readers check against, are drawn from it,
-// and `grainmesh keys` prints it, so the reference cannot drift from what is read.
+// and `grainmesh keys` prints it (key_reference.hpp), so the reference cannot drift from
+// what is read.
 #pragma once
 
 #include <string>
@@ -36,14 +37,5 @@ std::vector<std::string> keys_of(unsigned commands);
 // The keys of the tessellate and mesh stages (keys_of(kTessellateKey), of kMeshKey), kept.
 const std::vector<std::string>& tessellate_config_keys();
 const std::vector<std::string>& mesh_config_keys();
-
-// The reference as text: for the commands in `commands`, each key with its default and
-// meaning, a line each, grouped by section.
-std::string key_reference(unsigned commands);
-
-// The whole reference as markdown (docs/keys.md is this, and a test holds it so): a table
-// per section, each key with the commands that read it, its default, its meaning and
-// details.
-std::string key_reference_markdown();
 
 }  // namespace grainmesh

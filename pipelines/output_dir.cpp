@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
+#include "pipelines/directory.hpp"
 
 namespace grainmesh {
 
@@ -39,42 +40,7 @@ bool openfoam_output(const std::string& name) {
   return !name.empty() && std::isdigit(static_cast<unsigned char>(name[0])) && *end == '\0';
 }
 
-fs::path absolute_path(fs::path p) {
-  std::error_code ec;
-  fs::path a = fs::weakly_canonical(fs::absolute(p), ec);
-  if (ec) a = fs::absolute(p).lexically_normal();
-  if (a.filename().empty()) a = a.parent_path();
-  return a;
-}
-
 }  // namespace
-
-bool holds_current_directory(const fs::path& dir) {
-  std::error_code ec;
-  const fs::path cwd = fs::current_path(ec);
-  if (ec) return false;
-  const fs::path d = absolute_path(dir), here = absolute_path(cwd);
-  const auto [d_end, h_end] = std::mismatch(d.begin(), d.end(), here.begin(), here.end());
-  return d_end == d.end();  // every part of dir begins the current directory
-}
-
-std::vector<std::string> entry_names(const fs::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-bool occupied_directory(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::exists(dir, ec)) return false;
-  const std::string where = absolute_path(dir).string();
-  if (!fs::is_directory(dir, ec)) throw IoError(where + ": exists and is not a directory");
-  if (holds_current_directory(dir))
-    throw IoError(where + ": is the current directory or holds it; refusing to write into it (give a new directory)");
-  return !fs::is_empty(dir, ec);
-}
 
 void check_output_replaceable(const fs::path& final_dir, const std::string& kind) {
   if (!occupied_directory(final_dir)) return;

@@ -73,16 +73,4 @@ void refuse_unsolved_over_solved(const std::filesystem::path& final_dir, bool so
 inline constexpr const char* kReportCommand = "command";
 inline constexpr const char* kReportFiles = "files";
 
-// Whether `dir` is the current directory or holds it (replacing it would pull the
-// ground from under the shell that started us).
-bool holds_current_directory(const std::filesystem::path& dir);
-
-// Whether an existing `dir` holds anything, so that what it holds must be checked before
-// writing there: false when it does not exist or is empty. Throws IoError naming it when
-// it is not a directory, or is (or holds) the current directory.
-bool occupied_directory(const std::filesystem::path& dir);
-
-// The names directly inside `dir`, sorted.
-std::vector<std::string> entry_names(const std::filesystem::path& dir);
-
 }  // namespace grainmesh

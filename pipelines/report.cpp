@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
+#include "pipelines/directory.hpp"
 #include "pipelines/output_dir.hpp"
 
 namespace grainmesh {

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "common/text_file.hpp"
+#include "pipelines/directory.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/sweep_command.hpp"
 #include "pipelines/sweep_runs.hpp"

@@ -6,7 +6,7 @@
 
 #include "common/errors.hpp"
 #include "pipelines/report_read.hpp"
-#include "pipelines/sweep_plan.hpp"
+#include "pipelines/sweep_dir.hpp"
 
 namespace grainmesh {
 

@@ -11,6 +11,7 @@
 
 #include "helpers.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/key_reference.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
