@@ -12,7 +12,7 @@
 
 namespace grainmesh {
 
-std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh& m) {
+std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh<2>& m) {
   const std::vector<StressState> sigma = stress_states(fields, /*plane_stress=*/false);  // in-plane parts only
   std::array<double, 3> s{};
   double area = 0.0;
@@ -26,7 +26,7 @@ std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh&
   return {s[0] / area, s[1] / area, s[2] / area};
 }
 
-std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o) {
+std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh<2>& m, const FoamOptions& o) {
   std::vector<LoadCase<3>> cases = mechanical_load_cases<3>(load_strain(foam_cell(m), o));
   if (o.delta_T == 0.0) return cases;
   double area = 0.0, free = 0.0;
@@ -48,7 +48,7 @@ struct Balanced {
   std::array<double, 3> mean{};  // xx, yy, xy
   std::vector<StressState> virial;
 };
-Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh& m,
+Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh<2>& m,
                          const PolyMesh& pm, const FoamOptions& o) {
   const std::size_t cells = static_cast<std::size_t>(pm.cells);
   const DiscreteTraction traction(pm, m, o, fields.displacement,
@@ -62,10 +62,10 @@ Balanced periodic_stress(const std::filesystem::path& result_dir, const CaseFiel
 
 }  // namespace
 
-Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const PolyMesh& pm,
-                                 const FoamOptions& o, const Deadline& deadline,
-                                 const std::filesystem::path& case_shown_as) {
-  Homogenised h;
+MixedHomogenised<3> solve_mixed(const std::filesystem::path& case_dir, const ExportMesh<2>& m, const PolyMesh& pm,
+                                const FoamOptions& o, const Deadline& deadline,
+                                const std::filesystem::path& case_shown_as) {
+  MixedHomogenised<3> h;
   h.run = run_solver(case_dir, foam_cell(m), o, deadline, case_shown_as);
   h.fields = read_case_fields(h.run.result_dir, m.phases, m.phase, o);
   h.cell_stress = recovered_stress(h.fields, m, o);
@@ -90,7 +90,7 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
   return h;
 }
 
-PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
+PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh<2>& m,
                                       const PolyMesh& pm, const FoamOptions& o, int parallel, const Deadline& deadline,
                                       const std::vector<std::filesystem::path>& cases_shown_as) {
   const std::vector<LoadCase<3>> loads = periodic_load_cases(m, o);

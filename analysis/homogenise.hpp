@@ -30,23 +30,14 @@ enum class Boundary {
 };
 
 // The area average of the cell stresses of a solved case: xx, yy, xy (Pa).
-std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh& m);
-
-// The mixed load's state (its virial stresses not computed) and the modulus it gives.
-struct Homogenised : SolvedState<3> {
-  double sigma_xx = 0.0;       // the force through `right` over its area
-  double strain_xx = 0.0;      // the imposed mean strain: displacement / width
-  double modulus = 0.0;        // sigma_xx / strain_xx
-  std::array<double, 3> volume_average{};  // the area average of the cell stresses: xx, yy, xy
-  double volume_average_modulus = 0.0;
-  SolveRun run;
-};
+std::array<double, 3> volume_average(const CaseFields& fields, const ExportMesh<2>& m);
 
 // Solves the case that write_foam_case wrote into `case_dir` (`pm` is what it returned)
-// under the `mixed` load and homogenises. Errors as run_solver.
-Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const ExportMesh& m, const PolyMesh& pm,
-                                 const FoamOptions& o, const Deadline& deadline = {},
-                                 const std::filesystem::path& case_shown_as = {});
+// under the `mixed` load and homogenises (a cyclic case's force from its cell fields).
+// Errors as run_solver.
+MixedHomogenised<3> solve_mixed(const std::filesystem::path& case_dir, const ExportMesh<2>& m, const PolyMesh& pm,
+                                const FoamOptions& o, const Deadline& deadline = {},
+                                const std::filesystem::path& case_shown_as = {});
 
 // The load cases of the periodic homogenisation of `m` under `o`: a macroscopic strain
 // e = load_strain (o.displacement / width) in xx, in yy, and an engineering shear e in xy
@@ -56,14 +47,14 @@ Homogenised solve_and_homogenise(const std::filesystem::path& case_dir, const Ex
 // is the answer for one material (no stress); and the solve needs a strain: a cell held
 // at zero mean strain under a uniform thermal stress has a source of rounding noise
 // alone, which its singular periodic system (a translation is free) turns into drift.
-std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh& m, const FoamOptions& o);
+std::vector<LoadCase<3>> periodic_load_cases(const ExportMesh<2>& m, const FoamOptions& o);
 
 // Solves the periodic load cases written by write_foam_case into `case_dirs` (in the
 // order of periodic_load_cases(m, o), each with load_case_options; `pm`
 // the mesh, the same for all), up to `parallel` at a time, and assembles the stiffness.
 // A failing case throws SolveError naming it (the first in order when several fail).
 // `cases_shown_as`: where the cases are to be found if they fail (or empty).
-PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh& m,
+PeriodicHomogenised<3> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh<2>& m,
                                       const PolyMesh& pm, const FoamOptions& o, int parallel,
                                       const Deadline& deadline = {},
                                       const std::vector<std::filesystem::path>& cases_shown_as = {});

@@ -24,7 +24,7 @@ struct Balanced3 {
   Voigt6 mean{};
   FieldValues virial;
 };
-Balanced3 periodic_stress_3d(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh3& m,
+Balanced3 periodic_stress_3d(const std::filesystem::path& result_dir, const CaseFields& fields, const ExportMesh<3>& m,
                              const FoamMesh3& fm, const FoamOptions& o) {
   const FoamCell cell = foam_cell(m);
   // The plain form's face force is S . sigma_f: no gradient needed (nor written).
@@ -33,7 +33,7 @@ Balanced3 periodic_stress_3d(const std::filesystem::path& result_dir, const Case
                                : FieldValues{};
   const DiscreteTraction traction(fm, cell, o, fields.displacement, grad, fields.stress);
   const double s2 = o.convert_to_meters * o.convert_to_meters;
-  const Vec3 box = m.box;
+  const Vec3 box = m.cell.size();
   const std::array<Vec3, 3> row{traction.side_force("right") / (box.y * box.z * s2),
                                 traction.side_force("top") / (box.x * box.z * s2),
                                 traction.side_force("front") / (box.x * box.y * s2)};
@@ -60,7 +60,7 @@ Voigt6 volume_average(const CaseFields& fields, const FoamMesh3& fm) {
 
 }  // namespace
 
-std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o) {
+std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh<3>& m, const FoamOptions& o) {
   std::vector<LoadCase<6>> cases = mechanical_load_cases<6>(load_strain(foam_cell(m), o));
   if (o.delta_T == 0.0) return cases;
   std::vector<double> volume;
@@ -75,7 +75,7 @@ std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOpt
   return cases;
 }
 
-PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh<3>& m,
                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
                                       const Deadline& deadline,
                                       const std::vector<std::filesystem::path>& cases_shown_as) {
@@ -103,9 +103,10 @@ PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& 
   return h;
 }
 
-Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& m, const FoamMesh3& fm,
-                      const FoamOptions& o, const Deadline& deadline, const std::filesystem::path& case_shown_as) {
-  Mixed3 r;
+MixedHomogenised<6> solve_mixed(const std::filesystem::path& case_dir, const ExportMesh<3>& m, const FoamMesh3& fm,
+                                const FoamOptions& o, const Deadline& deadline,
+                                const std::filesystem::path& case_shown_as) {
+  MixedHomogenised<6> r;
   r.run = run_solver(case_dir, foam_cell(m), o, deadline, case_shown_as);
   r.fields = read_case_fields(r.run.result_dir, static_cast<std::size_t>(fm.mesh.cells));
   const PolyMesh& pm = fm.mesh;
@@ -118,9 +119,11 @@ Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& 
     const Vec3 S = (o.convert_to_meters * o.convert_to_meters) * foam_face(pm, right.start + k).area;
     force += S.x * sigma[k][0] + S.y * sigma[k][1] + S.z * sigma[k][2];
   }
-  r.sigma_xx = force / (m.box.y * m.box.z * o.convert_to_meters * o.convert_to_meters);
+  r.sigma_xx = force / (m.cell.size().y * m.cell.size().z * o.convert_to_meters * o.convert_to_meters);
   r.strain_xx = load_strain(foam_cell(m), o);
   r.modulus = r.sigma_xx / r.strain_xx;
+  r.volume_average = volume_average(r.fields, fm);
+  r.volume_average_modulus = r.volume_average[0] / r.strain_xx;
   return r;
 }
 

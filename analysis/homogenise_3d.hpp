@@ -30,13 +30,13 @@ using Voigt6 = std::array<double, 6>;
 // temperature change (o.delta_T) a seventh, `thermal`: the change at the mean strain the
 // phases would take free, each on its own (the volume mean of alpha delta_T, in xx, yy
 // and zz), which leaves only the phases' mismatch to carry (analysis/thermal.hpp).
-std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh3& m, const FoamOptions& o);
+std::vector<LoadCase<6>> periodic_load_cases(const ExportMesh<3>& m, const FoamOptions& o);
 
 // Solves the load cases written by write_foam_case into `case_dirs` (in the order of
 // periodic_load_cases(m, o), each with load_case_options; `fm` the mesh it wrote,
 // the same for all), up to `parallel` at a time, and assembles the stiffness. A failing
 // case throws SolveError naming it (the first in order when several fail).
-PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh3& m,
+PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& case_dirs, const ExportMesh<3>& m,
                                       const FoamMesh3& fm, const FoamOptions& o, int parallel,
                                       const Deadline& deadline = {},
                                       const std::vector<std::filesystem::path>& cases_shown_as = {});
@@ -46,13 +46,9 @@ PeriodicHomogenised<6> solve_periodic(const std::vector<std::filesystem::path>& 
 // straining sideways): solved, the mean stress through right from the force there (sigma's
 // face values, S . sigma_f), the strain displacement / width, their ratio the modulus
 // under uniaxial strain (C11 of an isotropic cell). Errors as run_solver.
-struct Mixed3 : SolvedState<6> {  // its virial stresses not computed
-  SolveRun run;
-  double sigma_xx = 0.0, strain_xx = 0.0, modulus = 0.0;
-};
-Mixed3 solve_mixed_3d(const std::filesystem::path& case_dir, const ExportMesh3& m, const FoamMesh3& fm,
-                      const FoamOptions& o, const Deadline& deadline = {},
-                      const std::filesystem::path& case_shown_as = {});
+MixedHomogenised<6> solve_mixed(const std::filesystem::path& case_dir, const ExportMesh<3>& m, const FoamMesh3& fm,
+                                const FoamOptions& o, const Deadline& deadline = {},
+                                const std::filesystem::path& case_shown_as = {});
 
 
 }  // namespace grainmesh

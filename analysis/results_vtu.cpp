@@ -15,7 +15,7 @@ std::vector<double> in_mesh_units(const FieldValues& D, double metres_per_unit) 
 }
 }  // namespace
 
-void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
+void write_results_vtu(const std::filesystem::path& file, const ExportMesh<2>& m, const std::vector<std::string>& phase_names,
                        const std::vector<SolvedFields>& cases, double metres_per_unit) {
   const std::size_t cells = m.mesh.cells();
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};

@@ -29,7 +29,7 @@ struct SolvedFields {
 // (symmetric tensor, Pa, the recovered cell stress; zz the out-of-plane stress),
 // von_mises and max_principal (Pa); field data phase_names, length_unit. Throws IoError
 // naming the file when it cannot be written.
-void write_results_vtu(const std::filesystem::path& file, const ExportMesh& m, const std::vector<std::string>& phase_names,
+void write_results_vtu(const std::filesystem::path& file, const ExportMesh<2>& m, const std::vector<std::string>& phase_names,
                        const std::vector<SolvedFields>& cases, double metres_per_unit);
 
 // The same over a 3D case's cells (VTK polyhedra): grain, phase, and per case (`suffix`

@@ -57,6 +57,21 @@ struct LoadCaseResult : SolvedState<N> {
   SolveRun run;
 };
 
+// The thesis' mixed load solved (right pulled, symmetry planes elsewhere; its virial
+// stresses not computed): the force through `right` over its area, the imposed mean
+// strain (displacement / width), their ratio the modulus (2D: plane strain or stress; 3D:
+// under uniaxial strain, C11 of an isotropic cell), and the same from the volume (2D:
+// area) average of the cell stresses (biased, as a load case's).
+template <std::size_t N>
+struct MixedHomogenised : SolvedState<N> {
+  double sigma_xx = 0.0;                   // Pa
+  double strain_xx = 0.0;
+  double modulus = 0.0;                    // sigma_xx / strain_xx, Pa
+  std::array<double, N> volume_average{};  // Pa, Voigt order
+  double volume_average_modulus = 0.0;     // volume_average[0] / strain_xx, Pa
+  SolveRun run;
+};
+
 template <std::size_t N>
 struct PeriodicHomogenised {
   std::vector<LoadCaseResult<N>> cases;    // as periodic_load_cases: the mechanical ones, then thermal

@@ -32,7 +32,7 @@ struct GradientFit {
 
 }  // namespace
 
-std::vector<StressState> recovered_stress(const CaseFields& fields, const ExportMesh& m, const FoamOptions& o) {
+std::vector<StressState> recovered_stress(const CaseFields& fields, const ExportMesh<2>& m, const FoamOptions& o) {
   const CellMesh& mesh = m.mesh;
   const std::size_t cells = mesh.cells();
   const double metres = o.convert_to_meters;

@@ -22,6 +22,6 @@ namespace grainmesh {
 // One stress state per cell of `m` from the case's displacement (metres; the mesh in
 // units of o.convert_to_meters). A cell whose own-phase neighbourhood cannot fix a
 // gradient (fewer than two independent directions) keeps the solver's stress.
-std::vector<StressState> recovered_stress(const CaseFields& fields, const ExportMesh& m, const FoamOptions& o);
+std::vector<StressState> recovered_stress(const CaseFields& fields, const ExportMesh<2>& m, const FoamOptions& o);
 
 }  // namespace grainmesh

@@ -82,7 +82,7 @@ DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, con
   }
 }
 
-DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D,
+DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const ExportMesh<2>& m, const FoamOptions& o, FieldValues D,
                                    FieldValues grad_D, FieldValues sigma)
     : DiscreteTraction(pm, foam_cell(m), m.phase, o, {}, {}, std::move(D), std::move(grad_D), std::move(sigma)) {
   centre_.resize(pm.cells);
@@ -217,7 +217,7 @@ std::vector<StressState> DiscreteTraction::virial_stress() const {
   return out;
 }
 
-Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
+Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh<2>& m, const FoamOptions& o, int patch,
                          const FieldValues& sigma) {
   const PolyMesh::Patch& p = pm.patches[patch];
   Vec3 sum{};

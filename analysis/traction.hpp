@@ -34,7 +34,7 @@ class DiscreteTraction {
   // The case's mesh (`pm`, built from `m` with `o`), its solved cell fields, and each
   // cyclic patch's jump in D (metres; the low patch's, the high one has its negative).
   // grad(D) only in the compact form; the plain form's force needs sigma alone.
-  DiscreteTraction(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
+  DiscreteTraction(const PolyMesh& pm, const ExportMesh<2>& m, const FoamOptions& o, FieldValues D, FieldValues grad_D,
                    FieldValues sigma);
   // The same for a 3D case's mesh (write_foam_case) in `cell`.
   DiscreteTraction(const FoamMesh3& m, const FoamCell& cell, const FoamOptions& o, FieldValues D, FieldValues grad_D,
@@ -92,7 +92,7 @@ class DiscreteTraction {
 };
 
 // The force through a plain patch from sigma's face values written there.
-Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh& m, const FoamOptions& o, int patch,
+Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh<2>& m, const FoamOptions& o, int patch,
                          const FieldValues& sigma_on_patch);
 
 // The index of patch `name` in pm.patches; -1 when there is none.

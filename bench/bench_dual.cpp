@@ -60,7 +60,7 @@ double logged(const std::string& log, const std::string& label) {
 
 // Writes the case, runs checkMesh on it and solves it: cells, checkMesh's worst faces,
 // the solve's seconds and the homogenised answer.
-Json check_and_solve(const ExportMesh& e, const FoamOptions& o, Homogenised& h) {
+Json check_and_solve(const ExportMesh<2>& e, const FoamOptions& o, MixedHomogenised<3>& h) {
   fs::remove_all(kDir);
   fs::create_directories(kDir);
   const PolyMesh pm = write_foam_case(kDir, e, o);
@@ -76,7 +76,7 @@ Json check_and_solve(const ExportMesh& e, const FoamOptions& o, Homogenised& h) 
            {"skewness_max", logged(log.str(), "Max skewness = ")},
            {"mesh_ok", log.str().find("Mesh OK.") != std::string::npos}};
   const auto start = std::chrono::steady_clock::now();
-  h = solve_and_homogenise(kDir, e, pm, o);
+  h = solve_mixed(kDir, e, pm, o);
   row["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return row;
 }
@@ -90,7 +90,7 @@ Json measure(const Family& f, Cells cells, int per_grain) {
   const GrainMesh m = mesh_tessellation(t, read_mesh_job(config.subset(mesh_config_keys()), t).options);
   FoamOptions o = read_foam_options(config.subset(export_config_keys()));
   o.cells = cells;
-  Homogenised h;
+  MixedHomogenised<3> h;
   Json row = check_and_solve(export_mesh(t, m, cells), o, h);
   row["triangles"] = m.mesh.triangles.size();
   row["modulus"] = h.modulus;
@@ -141,12 +141,12 @@ double default_limit(const Family& f, Json& results) {
 // x = 0 from the hole up to 3 R, against Kirsch's solution.
 Json kirsch_row(Cells cells, double h0) {
   const double R = test::kHoleRadius;
-  const ExportMesh triangles = test::plate_with_hole(h0);
+  const ExportMesh<2> triangles = test::plate_with_hole(h0);
   bool corner = false;  // the top of the hole is a node: the line's first cell starts there
   for (const Vec2 p : triangles.mesh.points) corner |= std::abs(p.x) < 1e-12 && std::abs(p.y - R) < 1e-12;
   if (!corner) throw GeometryError("Kirsch: no mesh node at the top of the hole (h0 " + std::to_string(h0) + ")");
-  const ExportMesh e = cells == Cells::polygons ? polygon_cells(triangles) : triangles;
-  Homogenised h;
+  const ExportMesh<2> e = cells == Cells::polygons ? polygon_cells(triangles) : triangles;
+  MixedHomogenised<3> h;
   Json row = check_and_solve(e, {.convert_to_meters = 1.0, .traction = test::kPlateTraction, .uniaxial = true}, h);
   const FieldValues sigma = read_cell_field(h.run.result_dir / kStressField, "symmTensor", e.mesh.cells());
   double sum = 0.0, worst = 0.0, top = 0.0, nearest = 1e300;
@@ -221,7 +221,7 @@ int main(int argc, char** argv) {
     results.push_back(labelled);
   }
   write_results(source / "bench" / "results.json", "dual",
-                "median of 3 runs, each in a fresh process; seconds = solve_and_homogenise() (mixed load); modulus_error = "
+                "median of 3 runs, each in a fresh process; seconds = solve_mixed() (mixed load); modulus_error = "
                 "modulus / reference - 1, the reference the exact layered modulus (laminates) or the Richardson limit of "
                 "the polygons' modulus at 400, 800 and 1,600 triangles per grain (default cell); compare: same mesh, or "
                 "polygons of a finer mesh at about the triangles' cell count or solve seconds",

@@ -19,8 +19,8 @@ using namespace grainmesh;
 
 namespace {
 
-ExportMesh grid_mesh(int n) {
-  ExportMesh e;
+ExportMesh<2> grid_mesh(int n) {
+  ExportMesh<2> e;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) e.mesh.points.push_back({static_cast<double>(i) / n, static_cast<double>(j) / n});
   for (int j = 0; j < n; ++j)
@@ -43,7 +43,7 @@ ExportMesh grid_mesh(int n) {
 
 int main(int argc, char** argv) {
   const std::filesystem::path source = argc > 1 ? argv[1] : ".";
-  const ExportMesh mesh = grid_mesh(708);  // 1,002,528 cells
+  const ExportMesh<2> mesh = grid_mesh(708);  // 1,002,528 cells
   Json results = Json::array();
   std::printf("%-30s %9s %10s %12s %9s\n", "export, 1M cells", "seconds", "cells", "cells / s", "peak MiB");
   for (bool binary : {false, true}) {

@@ -2,7 +2,7 @@
 // corrections and seconds to convergence as the stiffness contrast grows, one material
 // (the case's own stop on x alone), two phases a hair apart (a component near zero),
 // cyclic patches, a 1,000-grain cell, and how soon a diverging solve is stopped. Each case in a child process, three times (median); "seconds" is
-// solve_and_homogenise() (the solver with its start-up, reading the stress). Writes
+// solve_mixed() (the solver with its start-up, reading the stress). Writes
 // bench/results.json ("solve").
 #include <chrono>
 #include <cstdio>
@@ -41,7 +41,7 @@ Json solve_case(const Case& c, const std::filesystem::path& dir) {
   const TessellateJob job = read_tessellate_job(tess_config);
   const Tessellation t = run_tessellate_job(job);
   const GrainMesh m = mesh_tessellation(t, read_mesh_job(config.subset(mesh_config_keys()), t).options);
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   const FoamOptions o = read_foam_options(config.subset(export_config_keys()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -49,7 +49,7 @@ Json solve_case(const Case& c, const std::filesystem::path& dir) {
   const auto start = std::chrono::steady_clock::now();
   Json row{{"cells", m.mesh.triangles.size()}, {"stiffness_contrast", stiffness_contrast(e.phases, o)}};
   try {
-    const Homogenised h = solve_and_homogenise(dir, e, pm, o);
+    const MixedHomogenised<3> h = solve_mixed(dir, e, pm, o);
     row["corrections"] = h.run.corrections;
     row["final_residual"] = h.run.final_residual;
     row["modulus"] = h.modulus;
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     results.push_back(labelled);
   }
   write_results(source / "bench" / "results.json", "solve",
-                "median of 3 runs, each in a fresh process; solve_and_homogenise() alone (the solver's run, "
+                "median of 3 runs, each in a fresh process; solve_mixed() alone (the solver's run, "
                 "start-up included, and reading its stress)",
                 results);
   return 0;

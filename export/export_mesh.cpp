@@ -15,16 +15,16 @@ namespace grainmesh {
 namespace {
 
 // The export's frame of a grain mesh: everything but the cells.
-ExportMesh frame(const Tessellation& t, const GrainMesh& m) {
-  return ExportMesh{.mesh = {}, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases),
+ExportMesh<2> frame(const Tessellation& t, const GrainMesh& m) {
+  return ExportMesh<2>{.mesh = {}, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases),
                     .cell = Box{{0.0, 0.0}, {t.width, t.height}}, .periodic = t.periodic, .pairs = m.pairs};
 }
 
 // The dual of `mesh` (whose triangles `triangles` labels) as cells, each with the grain and
 // phase of its triangles, the periodic pairs carried.
-ExportMesh dual_cells(const TriMesh& mesh, const ExportMesh& triangles) {
+ExportMesh<2> dual_cells(const TriMesh& mesh, const ExportMesh<2>& triangles) {
   DualMesh d = dual_mesh(mesh, triangles.grain, triangles.pairs);
-  ExportMesh e{.mesh = std::move(d.mesh), .grain = {}, .phase = {}, .phases = triangles.phases,
+  ExportMesh<2> e{.mesh = std::move(d.mesh), .grain = {}, .phase = {}, .phases = triangles.phases,
                .cell = triangles.cell, .periodic = triangles.periodic, .pairs = std::move(d.pairs)};
   for (int tri : d.triangle) {
     e.grain.push_back(triangles.grain[tri]);
@@ -35,30 +35,26 @@ ExportMesh dual_cells(const TriMesh& mesh, const ExportMesh& triangles) {
 
 }  // namespace
 
-ExportMesh grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
-  ExportMesh e = frame(t, m);
+ExportMesh<2> grain_export_mesh(const Tessellation& t, const GrainMesh& m) {
+  ExportMesh<2> e = frame(t, m);
   e.mesh = cell_mesh(m.mesh);
   return e;
 }
 
-ExportMesh polygon_cells(const ExportMesh& triangles) {
+ExportMesh<2> polygon_cells(const ExportMesh<2>& triangles) {
   const std::optional<TriMesh> mesh = as_triangles(triangles.mesh);
   if (!mesh) throw GeometryError("export: the dual needs a mesh of triangles");
   return dual_cells(*mesh, triangles);
 }
 
-ExportMesh export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::Cells cells) {
+ExportMesh<2> export_mesh(const Tessellation& t, const GrainMesh& m, FoamOptions::Cells cells) {
   // Polygons straight from the grain mesh's triangles, not through a copy of them as cells.
   return cells == FoamOptions::Cells::polygons ? dual_cells(m.mesh, frame(t, m)) : grain_export_mesh(t, m);
 }
 
-FoamCell foam_cell(const ExportMesh& m) { return {m.phases, {m.cell.width(), m.cell.height(), 0.0}, m.periodic}; }
-
-ExportMesh3 grain_export_mesh_3d(const Tessellation3& t, const GrainMesh3& m) {
-  return {.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases), .box = t.size(),
-          .periodic = t.periodic, .pairs = m.pairs};
+ExportMesh<3> grain_export_mesh(const Tessellation3& t, const GrainMesh3& m) {
+  return {.mesh = m.mesh, .grain = m.grain, .phase = m.phase, .phases = foam_phases(t.phases),
+          .cell = Box3{{}, t.size()}, .periodic = t.periodic, .pairs = m.pairs};
 }
-
-FoamCell foam_cell(const ExportMesh3& m) { return {m.phases, m.box, m.periodic}; }
 
 }  // namespace grainmesh

@@ -214,7 +214,7 @@ namespace {
 
 // The case files of a checked 2D case around its built polyMesh: each cell's centroid from
 // the cell's low corner, the fields, properties and dictionaries.
-void write_checked_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
+void write_checked_case(const std::filesystem::path& dir, const ExportMesh<2>& m, const PolyMesh& pm, const FoamOptions& o,
                         const std::filesystem::path& polymesh_from) {
   std::vector<Vec3> centroid(m.mesh.cells());
   for (std::size_t t = 0; t < centroid.size(); ++t) {
@@ -226,14 +226,14 @@ void write_checked_case(const std::filesystem::path& dir, const ExportMesh& m, c
 
 }  // namespace
 
-PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& o) {
+PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh<2>& m, const FoamOptions& o) {
   check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);
   const PolyMesh pm = build_polymesh(m, o);
   write_checked_case(dir, m, pm, o, {});
   return pm;
 }
 
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm, const FoamOptions& o,
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh<2>& m, const PolyMesh& pm, const FoamOptions& o,
                      const std::filesystem::path& polymesh_from) {
   check_case(foam_cell(m), m.grain, m.phase, m.mesh.cells(), o);  // each load case's own load
   write_checked_case(dir, m, pm, o, polymesh_from);

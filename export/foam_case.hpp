@@ -20,11 +20,11 @@ namespace grainmesh {
 // constant/mechanicalProperties and thermalProperties, system/controlDict, fvSchemes,
 // fvSolution, Allrun and an empty case.foam. Throws ConfigError for a phase without a
 // usable E or nu, IoError when a file cannot be written. Returns the mesh it wrote.
-PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const FoamOptions& options);
+PolyMesh write_foam_case(const std::filesystem::path& dir, const ExportMesh<2>& m, const FoamOptions& options);
 // The same on a polyMesh already built (build_polymesh(m, options): a load case's options
 // keep the mesh), its files copied from `polymesh_from` when given (a case of the same
 // mesh written before).
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh& m, const PolyMesh& pm,
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh<2>& m, const PolyMesh& pm,
                      const FoamOptions& options, const std::filesystem::path& polymesh_from = {});
 
 // What write_foam_case writes of a 2D or 3D case around its built polyMesh `pm`: 0/D (the

@@ -14,14 +14,14 @@ namespace grainmesh {
 namespace {
 
 // What a 3D case cannot carry, refused by name before anything is written.
-void check_case_3d(const ExportMesh3& m, const FoamOptions& o) {
+void check_case_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.plane_stress) throw ConfigError("export.plane_stress: a 3D case has no plane to hold; remove the key");
   check_case(foam_cell(m), m.grain, m.phase, m.mesh.tets.size(), o);
 }
 
 }  // namespace
 
-FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
+FoamMesh3 foam_mesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cells == FoamOptions::Cells::polygons) return build_dual_polymesh_3d(m, o);
   FoamMesh3 out{.mesh = build_polymesh_3d(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
   // A tetrahedron's own: OpenFOAM's pyramids give its centroid and volume.
@@ -34,14 +34,14 @@ FoamMesh3 foam_mesh_3d(const ExportMesh3& m, const FoamOptions& o) {
   return out;
 }
 
-FoamMesh3 write_foam_case(const std::filesystem::path& dir, const ExportMesh3& m, const FoamOptions& o) {
+FoamMesh3 write_foam_case(const std::filesystem::path& dir, const ExportMesh<3>& m, const FoamOptions& o) {
   check_case_3d(m, o);
   FoamMesh3 fm = foam_mesh_3d(m, o);
   write_foam_case(dir, m, fm, o);
   return fm;
 }
 
-void write_foam_case(const std::filesystem::path& dir, const ExportMesh3& m, const FoamMesh3& fm,
+void write_foam_case(const std::filesystem::path& dir, const ExportMesh<3>& m, const FoamMesh3& fm,
                         const FoamOptions& o, const std::filesystem::path& polymesh_from) {
   check_case_3d(m, o);
   write_case_files(dir, foam_cell(m), fm.phase, fm.centre, fm.mesh, o, polymesh_from);

@@ -65,7 +65,7 @@ void pair_cyclic_faces(const std::vector<SideFace>& low, std::vector<SideFace>& 
 
 // The boundary faces on the cell's sides (and `boundary` for the others), patch by patch:
 // symmetry planes, the loaded `right`, or cyclic pairs whose faces match one to one.
-void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std::vector<SideFace>, 5>& sides,
+void add_side_patches(const ExportMesh<2>& m, const FoamOptions& o, std::array<std::vector<SideFace>, 5>& sides,
                       PolyMesh& pm) {
   const CellMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());
@@ -128,7 +128,7 @@ void add_side_patches(const ExportMesh& m, const FoamOptions& o, std::array<std:
 }  // namespace
 
 
-PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& o) {
+PolyMesh build_polymesh(const ExportMesh<2>& m, const FoamOptions& o) {
   const CellMesh& mesh = m.mesh;
   const int n = static_cast<int>(mesh.points.size());
   PolyMesh pm;

@@ -12,6 +12,6 @@ namespace grainmesh {
 // Builds the polyMesh. Throws ConfigError naming a patch the load needs that has no face
 // (right, left, bottom, and top unless uniaxial), GeometryError when a cyclic side's faces
 // do not pair, or a boundary edge lies on no side while the mesh is to be cyclic.
-PolyMesh build_polymesh(const ExportMesh& m, const FoamOptions& options);
+PolyMesh build_polymesh(const ExportMesh<2>& m, const FoamOptions& options);
 
 }  // namespace grainmesh

@@ -28,17 +28,6 @@ Triangle sorted(Triangle t) {
   return t;
 }
 
-// The side of the box all three points lie on (0 left ... 5 front), -1 for none. Points
-// on a side carry its coordinate exactly (the 3D stages put them there).
-int side_of(const std::vector<Vec3>& p, const Triangle& f, Vec3 box) {
-  for (int a = 0; a < 3; ++a)
-    for (int high = 0; high < 2; ++high) {
-      const double at = high ? box[a] : 0.0;
-      if (p[f[0]][a] == at && p[f[1]][a] == at && p[f[2]][a] == at) return 2 * a + high;
-    }
-  return -1;
-}
-
 void add_face(PolyMesh& pm, const Triangle& f, int owner) {
   pm.face_start.push_back(static_cast<int>(pm.face_points.size()));
   pm.face_points.insert(pm.face_points.end(), f.begin(), f.end());
@@ -72,6 +61,15 @@ std::vector<BoundaryFace> image_faces(const std::vector<BoundaryFace>& low, cons
 
 }  // namespace
 
+int box_side_of(const std::vector<Vec3>& p, const std::array<int, 3>& f, const Box3& box) {
+  for (int a = 0; a < 3; ++a)
+    for (int high = 0; high < 2; ++high) {
+      const double at = high ? box.hi[a] : box.lo[a];
+      if (p[f[0]][a] == at && p[f[1]][a] == at && p[f[2]][a] == at) return 2 * a + high;
+    }
+  return -1;
+}
+
 PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
   PolyMesh::Patch p;
   p.name = kSideNames3[s];
@@ -90,7 +88,7 @@ PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
   return p;
 }
 
-PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
+PolyMesh build_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
   const auto& tets = m.mesh.tets;
   PolyMesh pm;
@@ -120,7 +118,7 @@ PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
       i += 2;
       continue;
     }
-    const int side = side_of(pm.points3d, faces[i].first, m.box);
+    const int side = box_side_of(pm.points3d, faces[i].first, m.cell);
     if (side < 0) throw GeometryError("export: a boundary face of tetrahedron " + std::to_string(t) + " lies on no side of the box");
     sides[side].push_back({outward(t, k), t});
     ++i;
@@ -140,7 +138,7 @@ PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], m.pairs.axis[a], a);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
-    PolyMesh::Patch p = side_patch_3d(s, m.box, o);
+    PolyMesh::Patch p = side_patch_3d(s, m.cell.size(), o);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
     for (const BoundaryFace& f : sides[s]) add_face(pm, f.points, f.owner);

@@ -3,6 +3,7 @@
 // their geometry as OpenFOAM computes it.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -26,6 +27,11 @@ struct FoamMesh3 {
   std::vector<int> corner_cell;   // #4T: the cell holding each tetrahedron's corner k (at 4 t + k)
 };
 
+// The side of `box` all three points of `f` lie on (0 left, 1 right, 2 bottom, 3 top,
+// 4 back, 5 front), -1 for none. Points on a side carry its coordinate exactly (the 3D
+// stages put them there).
+int box_side_of(const std::vector<Vec3>& p, const std::array<int, 3>& f, const Box3& box);
+
 // The patch of the box's side s (0 left ... 5 front) under `options`: cyclic (with its
 // partner and separation), or the mixed load's type: right a patch, the others symmetry
 // planes, top and front patches too when uniaxial.
@@ -39,6 +45,6 @@ PolyMesh::Patch side_patch_3d(int side, Vec3 box, const FoamOptions& options);
 // planes, top and front patches too when options.uniaxial. Zones by add_zones. Throws
 // ConfigError for export.cyclic on a mesh that is not periodic, GeometryError when a
 // boundary face lies on no side or a cyclic side's faces do not pair.
-PolyMesh build_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
+PolyMesh build_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
 
 }  // namespace grainmesh

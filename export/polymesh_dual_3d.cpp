@@ -205,7 +205,7 @@ MeshFaces mesh_faces(const std::vector<std::array<int, 4>>& T) {
 
 // The points on a phase interface: with tetrahedra of two phases around them, counting a
 // periodic point's images'.
-std::vector<char> interface_points(const ExportMesh3& m) {
+std::vector<char> interface_points(const ExportMesh<3>& m) {
   std::vector<int> around(m.mesh.points.size(), -1);  // -1: no phase yet, -2: two
   auto meet = [](int& a, int b) {
     if (a == -1) a = b;
@@ -251,7 +251,7 @@ struct Between {
 // grain, numbered in the order of their points, then of their first corner; each cell's
 // grain and phase into `out`, each corner's cell into out.corner_cell. Returns the
 // triangles between cells of one point: grain boundaries and the box's sides.
-std::vector<Between> dual_cells(const ExportMesh3& m, const MeshFaces& mf, FoamMesh3& out) {
+std::vector<Between> dual_cells(const ExportMesh<3>& m, const MeshFaces& mf, FoamMesh3& out) {
   const std::vector<std::array<int, 4>>& T = m.mesh.tets;
   const std::vector<Vec3>& P = m.mesh.points;
   const std::size_t corners = 4 * T.size();
@@ -271,12 +271,7 @@ std::vector<Between> dual_cells(const ExportMesh3& m, const MeshFaces& mf, FoamM
       i += 2;
       continue;
     }
-    int side = -1;
-    for (int a = 0; a < 3 && side < 0; ++a)
-      for (int high = 0; high < 2 && side < 0; ++high) {
-        const double at = high ? m.box[a] : 0.0;
-        if (std::all_of(faces[i].first.begin(), faces[i].first.end(), [&](int v) { return P[v][a] == at; })) side = 2 * a + high;
-      }
+    const int side = box_side_of(P, faces[i].first, m.cell);
     if (side < 0) throw GeometryError("export: a boundary face of tetrahedron " + std::to_string(t) + " lies on no side of the box");
     splits.push_back({t, k, -1 - side});
     ++i;
@@ -305,7 +300,7 @@ std::vector<Between> dual_cells(const ExportMesh3& m, const MeshFaces& mf, FoamM
 // The dual's faces: two pieces per tetrahedron edge (between its ends' cells), two per
 // corner of a triangle in `splits`, chained. Each node's phase (of a tetrahedron it lies
 // in) into `node_phase`.
-std::vector<DualFace> dual_faces(const ExportMesh3& m, const Nodes& nodes, const std::vector<int>& cell,
+std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, const std::vector<int>& cell,
                                  const std::vector<Between>& splits, std::vector<int>& node_phase) {
   const std::vector<std::array<int, 4>>& T = m.mesh.tets;
   std::vector<Piece> pieces;
@@ -387,7 +382,7 @@ std::vector<const DualFace*> image_faces(const std::vector<const DualFace*>& low
 
 }  // namespace
 
-FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
+FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
   MeshFaces mf = mesh_faces(m.mesh.tets);
   FoamMesh3 out;
@@ -429,7 +424,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& o) {
     for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], nodes, m.pairs.axis[a], a, images);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
-    PolyMesh::Patch p = side_patch_3d(s, m.box, o);
+    PolyMesh::Patch p = side_patch_3d(s, m.cell.size(), o);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
     for (const DualFace* f : sides[s]) add_face(f->nodes, f->owner);

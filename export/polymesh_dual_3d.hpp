@@ -24,6 +24,6 @@ namespace grainmesh {
 // zones by add_zones; cells in the order of their points. Throws as build_polymesh_3d,
 // and GeometryError where the dual's faces would not be simple (a grain boundary not
 // manifold at a point).
-FoamMesh3 build_dual_polymesh_3d(const ExportMesh3& m, const FoamOptions& options);
+FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
 
 }  // namespace grainmesh

@@ -31,7 +31,7 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
 // `stresses.CASE` of a solved state, each cell weighted by its area; `loaded` the loaded
 // component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero); `balanced`:
 // the means from the virial stresses (periodic).
-Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const ExportMesh& e, int loaded, bool balanced) {
+Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const ExportMesh<2>& e, int loaded, bool balanced) {
   return state_stresses_json(s, cell_areas(e.mesh), e.phase, phase_names(t), loaded, balanced);
 }
 
@@ -41,7 +41,7 @@ Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const Export
 // then the load.displacement of the xx case); a free expansion that breaks Levin's
 // relation (with the stiffness it was freed with, as solved) by more than 1 % is a warning.
 void add_thermal_answer(Answer& answer, const PeriodicHomogenised<3>& h, const ThermalResidual<3>& r,
-                        const Tessellation& t, const ExportMesh& e, const FoamOptions& foam,
+                        const Tessellation& t, const ExportMesh<2>& e, const FoamOptions& foam,
                         std::vector<std::string>& warnings) {
   Json& effective = answer.effective;
   effective["thermal_expansion"] = voigt_json<3>(r.expansion);
@@ -58,23 +58,15 @@ void add_thermal_answer(Answer& answer, const PeriodicHomogenised<3>& h, const T
 
 }  // namespace
 
-Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
+Answer homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warnings) {
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit] = in;
 
-  const Homogenised h = solve_and_homogenise(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
+  const MixedHomogenised<3> h = solve_mixed(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   Answer answer;
   answer.stresses["mixed"] = state_stresses(h, t, e, 0, false);
   if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", "mixed", h.cell_stress, t, e);
   Json& effective = answer.effective;
-  effective["boundary"] = "mixed";
-  effective["modulus"] = h.modulus;
-  effective["sigma_xx"] = h.sigma_xx;
-  effective["strain_xx"] = h.strain_xx;
-  effective.update(solve_json(h.run, dir));
-  effective["volume_average"] = {{"modulus", h.volume_average_modulus},
-                                 {"sigma_xx", h.volume_average[0]},
-                                 {"sigma_yy", h.volume_average[1]},
-                                 {"sigma_xy", h.volume_average[2]}};
+  add_mixed(h, dir, effective);
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}}, foam.convert_to_meters);
   write_field_pictures(dir, h.fields, h.cell_stress, e, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
@@ -89,8 +81,8 @@ Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings
   return answer;
 }
 
-Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, unit] = in;
+Answer homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings) {
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit] = in;
 
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
   const PeriodicHomogenised<3> h =
@@ -109,7 +101,6 @@ Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warni
   add_stiffness<3>(verdict, bounds, fractions, effective, warnings, "see docs/run.md, Homogenisation",
                    "a finite cell is not isotropic; see docs/run.md, Homogenisation");
   add_engineering(engineering_constants(verdict.stiffness), effective);
-  effective["volume_average"] = {{"stiffness", stiffness_json<3>(symmetric_part(h.volume_average_stiffness))}};
   std::vector<SolvedFields> solved;
   for (int k = 0; k < 3; ++k) solved.push_back({"_" + h.cases[k].load.name, &h.cases[k].fields, &h.cases[k].cell_stress});
   std::optional<ThermalResidual<3>> thermal;

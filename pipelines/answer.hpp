@@ -1,14 +1,17 @@
-// A solve's answer as report.json gives it: the case(s) solved and homogenised, the
-// effective properties with the bounds that hold for them (a broken bound a warning),
-// the phases' stress statistics, and the pictures and results.vtu of the solved fields.
+// A solve's answer as report.json gives it, for a plane or a solid cell (answer.cpp,
+// answer_3d.cpp): the case(s) solved and homogenised, the effective properties with the
+// bounds that hold for them (a broken bound a warning), the phases' stress statistics, and
+// the pictures and results.vtu of the solved fields.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "analysis/homogenise.hpp"
+#include "analysis/homogenise_3d.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/solve.hpp"
 #include "common/deadline.hpp"
@@ -19,6 +22,7 @@
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -34,29 +38,41 @@ struct Answer {
 // failed_checks, failures}, and a failed check a warning (check_mesh.hpp).
 void check_case_mesh(const std::filesystem::path& dir, const Deadline& deadline, Json& report, Warnings& warnings);
 
-// What the answers are computed from and written beside: the run's staging directory
-// `dir` (cases in it), its tessellation and exported mesh, the export's options,
-// the run's time limit and its pictures (none when picture_width is 0) with their unit.
+// What the answers of a plane (D = 2) or solid (D = 3) cell are computed from and written
+// beside: the run's staging directory `dir` (cases in it), its tessellation, the exported
+// mesh and the polyMesh its cases were written on, the export's options, the run's time
+// limit and its pictures (none when picture_width is 0; 2D: the field maps, all of them
+// with all_pictures; 3D: sections at z = section_z) with their length unit.
+template <int D>
 struct SolveInput {
   const std::filesystem::path& dir;
   const StagedOutput& staged;
-  const Tessellation& t;
-  const ExportMesh& e;
-  const PolyMesh& pm;
+  const std::conditional_t<D == 2, Tessellation, Tessellation3>& t;
+  const ExportMesh<D>& e;
+  const std::conditional_t<D == 2, PolyMesh, FoamMesh3>& pm;
   const FoamOptions& foam;
   const Deadline& deadline;
-  int picture_width;
-  bool all_pictures;
-  const std::string& unit;  // the pictures' length unit (length_unit_name of convert_to_meters)
+  int picture_width = 0;
+  bool all_pictures = false;  // 2D only
+  double section_z = 0.0;     // 3D only, mesh units
+  std::string unit{};         // the pictures' length unit (length_unit_name of convert_to_meters)
 };
 
-// The mixed (thesis) load's answer in report.json (case/), with the bounds that hold for
-// it; a broken bound is added to `warnings`.
-Answer homogenise_mixed(const SolveInput& in, std::vector<std::string>& warnings);
+// The mixed (thesis) load's answer in report.json (case/): effective.modulus (2D: in the
+// plane state; 3D: under uniaxial strain) with the bounds that hold for it (2D: Voigt,
+// Reuss and Hashin-Shtrikman; 3D: the Voigt and Reuss tensors' C11), the phases' stresses,
+// the pictures; a broken bound is added to `warnings`.
+Answer homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warnings);
+Answer homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warnings);
 
-// The periodic load cases' answer (case_NAME/): the stiffness tensor, its engineering
-// constants, the bounds, and with a thermal load the residual state; a broken bound or
-// Levin's relation missed is added to `warnings`.
-Answer homogenise_periodic(const SolveInput& in, std::vector<std::string>& warnings);
+// The periodic load cases' answer (case_NAME/): effective.stiffness (Cij, i <= j, each the
+// mean of Cij and Cji) with its symmetry error, engineering constants and bounds, the
+// phases' stresses per load case, the xx case's pictures. Under a temperature change
+// (foam.delta_T) also the thermal case (case_thermal/): the effective thermal expansion
+// with Levin's exact relation beside it (more than 1 % off a warning), the free state's
+// phase stresses (stresses.thermal: the residual stress; stresses.thermal_xx: cooled, then
+// pulled as the xx case) and its pictures. A broken bound is added to `warnings`.
+Answer homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings);
+Answer homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings);
 
 }  // namespace grainmesh

@@ -1,4 +1,4 @@
-#include "pipelines/answer_3d.hpp"
+#include "pipelines/answer.hpp"
 
 #include <optional>
 #include <tuple>
@@ -17,16 +17,16 @@ namespace grainmesh {
 
 namespace {
 
-std::vector<std::string> phase_names(const SolveInput3& in);
+std::vector<std::string> phase_names(const SolveInput<3>& in);
 
 // `stresses.CASE` of a solved state, each cell weighted by its volume; `loaded` the loaded
 // component's Voigt index (-1 none); `balanced`: the means from the virial stresses
 // (a periodic case's).
-Json state_stresses(const SolvedState<6>& s, const SolveInput3& in, int loaded, bool balanced) {
-  return state_stresses_json(s, in.fm.volume, in.fm.phase, phase_names(in), loaded, balanced);
+Json state_stresses(const SolvedState<6>& s, const SolveInput<3>& in, int loaded, bool balanced) {
+  return state_stresses_json(s, in.pm.volume, in.pm.phase, phase_names(in), loaded, balanced);
 }
 
-std::vector<std::string> phase_names(const SolveInput3& in) {
+std::vector<std::string> phase_names(const SolveInput<3>& in) {
   std::vector<std::string> names;
   for (const FoamPhase& p : in.e.phases) names.push_back(p.name);
   return names;
@@ -37,14 +37,14 @@ std::vector<std::string> phase_names(const SolveInput3& in) {
 // sigma_xx and von Mises in MPa, in stress_xx`suffix`.png and von_mises`suffix`.png; and
 // each phase's volume-weighted distribution of the cells' von Mises stress in
 // stress_histogram`suffix`.png.
-void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const std::string& load_case,
+void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, const std::string& load_case,
                           const std::string& suffix) {
   if (in.picture_width == 0) return;
   std::vector<double> cell_mises;
   for (std::size_t c = 0; c < fields.stress.size(); ++c) cell_mises.push_back(von_mises(openfoam_stress(fields.stress[c])));
   const std::vector<std::string> names = phase_names(in);
   write_stress_histogram(in.dir / ("stress_histogram" + suffix + ".png"), load_case,
-                         phase_histograms(cell_mises, in.fm.volume, in.fm.phase, static_cast<int>(names.size()),
+                         phase_histograms(cell_mises, in.pm.volume, in.pm.phase, static_cast<int>(names.size()),
                                           kHistogramBins),
                          names, "volume");
   const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
@@ -52,7 +52,7 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
   for (const int t : s.tet) {
     double sum_xx = 0.0, sum_mises = 0.0;
     for (int k = 0; k < 4; ++k) {
-      const double* c = fields.stress[static_cast<std::size_t>(in.fm.corner_cell[4 * static_cast<std::size_t>(t) + k])];
+      const double* c = fields.stress[static_cast<std::size_t>(in.pm.corner_cell[4 * static_cast<std::size_t>(t) + k])];
       sum_xx += c[0];
       sum_mises += von_mises(openfoam_stress(c));
     }
@@ -75,7 +75,7 @@ void write_state_pictures(const SolveInput3& in, const CaseFields& fields, const
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
 // Levin's relation with the stiffness the expansion was freed with (as solved).
-ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput3& in,
+ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput<3>& in,
                                          std::vector<std::string>& warnings) {
   const ThermalResidual<6> r = thermal_residual(h);
   answer.effective["thermal_expansion"] = voigt_json<6>(r.expansion);
@@ -92,7 +92,7 @@ ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenis
 
 // results.vtu (unless pictures are off) of the periodic cases: each mechanical case's
 // fields suffixed _NAME, the thermal residual's _thermal and, cooled then pulled, _thermal_xx.
-void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised<6>& h,
+void write_periodic_results_vtu(const SolveInput<3>& in, const PeriodicHomogenised<6>& h,
                                 const ThermalResidual<6>* thermal) {
   if (in.picture_width == 0) return;
   std::vector<std::pair<std::string, const CaseFields*>> cases;
@@ -102,27 +102,23 @@ void write_periodic_results_vtu(const SolveInput3& in, const PeriodicHomogenised
     cases.push_back({"_thermal", &thermal->free.fields});
     cases.push_back({"_thermal_xx", &thermal->loaded.fields});
   }
-  write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), cases, in.foam.convert_to_meters);
+  write_results_vtu_3d(in.dir / "results.vtu", in.pm, phase_names(in), cases, in.foam.convert_to_meters);
 }
 
 }  // namespace
 
-Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
-  const Mixed3 h = solve_mixed_3d(in.dir / "case", in.e, in.fm, in.foam, in.deadline, in.staged.failed_dir() / "case");
+Answer homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warnings) {
+  const MixedHomogenised<6> h = solve_mixed(in.dir / "case", in.e, in.pm, in.foam, in.deadline, in.staged.failed_dir() / "case");
   Answer answer;
   answer.stresses["mixed"] = state_stresses(h, in, 0, false);
   write_state_pictures(in, h.fields, "mixed", "");
-  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.fm, phase_names(in), {{"", &h.fields}}, in.foam.convert_to_meters);
+  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.pm, phase_names(in), {{"", &h.fields}}, in.foam.convert_to_meters);
   Json& effective = answer.effective;
-  effective["boundary"] = "mixed";
-  effective["modulus"] = h.modulus;
-  effective["sigma_xx"] = h.sigma_xx;
-  effective["strain_xx"] = h.strain_xx;
-  effective.update(solve_json(h.run, in.dir));
+  add_mixed(h, in.dir, effective);
   if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways
   // Uniaxial strain: between the Reuss and Voigt tensors' C11 for every microstructure.
   const TensorBounds<6> b = tensor_bounds<6>(
-      in.e.phases, phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size())));
+      in.e.phases, phase_volume_fractions(in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size())));
   effective["voigt"] = b.voigt[0][0];
   effective["reuss"] = b.reuss[0][0];
   add_modulus_verdict(judge_modulus(h.modulus, b.voigt[0][0], b.reuss[0][0]), effective, warnings,
@@ -130,13 +126,13 @@ Answer homogenise_mixed_3d(const SolveInput3& in, std::vector<std::string>& warn
   return answer;
 }
 
-Answer homogenise_periodic_3d(const SolveInput3& in, std::vector<std::string>& warnings) {
+Answer homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings) {
   const std::vector<LoadCase<6>> loads = periodic_load_cases(in.e, in.foam);
   const PeriodicHomogenised<6> h =
-      solve_periodic(load_case_dirs(loads, in.dir), in.e, in.fm, in.foam, solves_side_by_side(in.foam.processes),
+      solve_periodic(load_case_dirs(loads, in.dir), in.e, in.pm, in.foam, solves_side_by_side(in.foam.processes),
                      in.deadline, load_case_dirs(loads, in.staged.failed_dir()));
   const std::vector<double> fractions =
-      phase_volume_fractions(in.fm.volume, in.fm.phase, static_cast<int>(in.e.phases.size()));
+      phase_volume_fractions(in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size()));
   const TensorBounds<6> bounds = tensor_bounds<6>(in.e.phases, fractions);
   const StiffnessVerdict<6> verdict = judge_stiffness(h.stiffness, bounds);
   Answer answer;

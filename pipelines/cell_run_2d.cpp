@@ -96,8 +96,9 @@ class PlaneCellRun final : public CellRun {
   std::string solving() const override { return "solving with solidDisplacementFoam"; }
 
   Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
-    const SolveInput in{dir, staged, *t_, *e_, pm_, foam_, jobs_.tessellate.options.deadline, picture_width(),
-                        plan_.pictures == Pictures::all, unit_};
+    const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
+                           .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
+                           .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_};
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
@@ -144,7 +145,7 @@ class PlaneCellRun final : public CellRun {
   std::optional<Tessellation> t_;
   std::optional<GrainMesh> m_;
   MeshQuality q_;
-  std::optional<ExportMesh> e_;
+  std::optional<ExportMesh<2>> e_;
   PolyMesh pm_;
 };
 

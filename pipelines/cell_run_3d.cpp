@@ -5,7 +5,7 @@
 #include "common/format.hpp"
 #include "export/foam_case_3d.hpp"
 #include "export/foam_load.hpp"
-#include "pipelines/answer_3d.hpp"
+#include "pipelines/answer.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/mesh_3d_command.hpp"
@@ -40,7 +40,7 @@ class SolidCellRun final : public CellRun {
   }
 
   std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
-    e_ = grain_export_mesh_3d(*t_, *m_);
+    e_ = grain_export_mesh(*t_, *m_);
     foam_.binary = binary_case(plan_, e_->mesh.tets.size());
     return write_run_cases(dir, *e_, foam_, plan_.boundary, fm_);
   }
@@ -59,9 +59,11 @@ class SolidCellRun final : public CellRun {
   }
 
   Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
-    const SolveInput3 in{dir,  staged, *t_, *e_, fm_, foam_, jobs_.tessellate.options.deadline,
-                         pictures() ? mesh_job_.picture_width : 0, section_z_, unit_};
-    return plan_.boundary == Boundary::mixed ? homogenise_mixed_3d(in, warnings) : homogenise_periodic_3d(in, warnings);
+    const SolveInput<3> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = fm_, .foam = foam_,
+                           .deadline = jobs_.tessellate.options.deadline,
+                           .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
+                           .section_z = section_z_, .unit = unit_};
+    return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
   void print_summary(const std::filesystem::path& out, const Json& report) const override {
@@ -120,7 +122,7 @@ class SolidCellRun final : public CellRun {
   Mesh3Job mesh_job_;
   std::optional<Tessellation3> t_;
   std::optional<GrainMesh3> m_;
-  std::optional<ExportMesh3> e_;
+  std::optional<ExportMesh<3>> e_;
   FoamMesh3 fm_;
   double section_z_ = 0.0;
   Json mesh_fields_;

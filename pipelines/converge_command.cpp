@@ -25,8 +25,6 @@ namespace {
 // The quantities a level's report gives: the mixed modulus (and the biased area average
 // beside it), or the periodic tensor's components.
 std::vector<std::pair<std::string, double>> quantities(const Json& effective, int dimensions) {
-  if (effective.at("boundary") == "mixed" && !effective.contains("volume_average"))  // 3D: the force's alone
-    return {{"modulus", effective.at("modulus").get<double>()}};
   if (effective.at("boundary") == "mixed")
     return {{"modulus", effective.at("modulus").get<double>()},
             {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};

@@ -55,12 +55,12 @@ FoamOptions read_foam_options(const Config& c) {
   return o;
 }
 
-ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config& c) {
+ExportMesh<2> read_export_mesh(const std::filesystem::path& mesh_file, const Config& c) {
   VtuContents vtu = read_vtu(mesh_file);
   std::filesystem::path json_file = mesh_file;
   json_file.replace_extension(".json");
   const MeshDescription d = read_mesh_description(json_file);
-  ExportMesh m;
+  ExportMesh<2> m;
   m.mesh = std::move(vtu.mesh);
   m.cell = d.cell;
   m.periodic = d.periodic;
@@ -109,12 +109,12 @@ ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config
 void run_export_command(const std::filesystem::path& mesh_file, const Config& c, const std::filesystem::path& out) {
   claim_output(out, "export");
   const FoamOptions o = read_foam_options(c);
-  const ExportMesh read = read_export_mesh(mesh_file, c);
+  const ExportMesh<2> read = read_export_mesh(mesh_file, c);
   // A file of polygonal cells (an earlier export's mesh.vtu) is written as it is.
   const bool triangles = as_triangles(read.mesh).has_value();
   if (!triangles && o.cells == FoamOptions::Cells::triangles)
     c.fail("export.cells", "is triangles, but " + mesh_file.string() + " holds polygonal cells: set polygons to export them as they are");
-  const ExportMesh m = o.cells == FoamOptions::Cells::polygons && triangles ? polygon_cells(read) : read;
+  const ExportMesh<2> m = o.cells == FoamOptions::Cells::polygons && triangles ? polygon_cells(read) : read;
   Warnings warnings;
   for (const std::string& w : check_load(foam_cell(m), o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();

@@ -21,7 +21,7 @@ const std::vector<std::string>& export_config_keys();
 
 // Reads mesh.vtu and its mesh.json, applies the config (options, phase moduli) and
 // checks it. Throws IoError (files), GeometryError (their contents), ConfigError (keys).
-ExportMesh read_export_mesh(const std::filesystem::path& mesh_file, const Config& config);
+ExportMesh<2> read_export_mesh(const std::filesystem::path& mesh_file, const Config& config);
 FoamOptions read_foam_options(const Config& config);
 
 // The whole command: the case in a staging directory renamed into place, report.json last.

@@ -60,6 +60,19 @@ void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path
   }
   effective["load_cases"] = cases;
   effective["corrections"] = corrections;
+  effective["volume_average"] = {{"stiffness", stiffness_json<N>(symmetric_part(h.volume_average_stiffness))}};
+}
+
+template <std::size_t N>
+void add_mixed(const MixedHomogenised<N>& h, const std::filesystem::path& dir, Json& effective) {
+  effective["boundary"] = "mixed";
+  effective["modulus"] = h.modulus;
+  effective["sigma_xx"] = h.sigma_xx;
+  effective["strain_xx"] = h.strain_xx;
+  effective.update(solve_json(h.run, dir));
+  Json average{{"modulus", h.volume_average_modulus}};
+  for (std::size_t k = 0; k < N; ++k) average[std::string("sigma_") + voigt_names<N>()[k]] = h.volume_average[k];
+  effective["volume_average"] = average;
 }
 
 template <std::size_t N>
@@ -152,6 +165,8 @@ template Json state_stresses_json(const SolvedState<6>&, const std::vector<doubl
                                   const std::vector<std::string>&, int, bool);
 template void add_load_cases(const PeriodicHomogenised<3>&, const std::filesystem::path&, Json&);
 template void add_load_cases(const PeriodicHomogenised<6>&, const std::filesystem::path&, Json&);
+template void add_mixed(const MixedHomogenised<3>&, const std::filesystem::path&, Json&);
+template void add_mixed(const MixedHomogenised<6>&, const std::filesystem::path&, Json&);
 template void add_stiffness<3>(const StiffnessVerdict<3>&, const TensorBounds<3>&, const std::vector<double>&, Json&,
                                std::vector<std::string>&, const std::string&, const std::string&);
 template void add_stiffness<6>(const StiffnessVerdict<6>&, const TensorBounds<6>&, const std::vector<double>&, Json&,

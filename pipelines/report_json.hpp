@@ -41,10 +41,15 @@ Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& wei
                          const std::vector<std::string>& names, int loaded, bool balanced);
 
 // The solved periodic load cases in `effective`: load_cases [{name, strain, stress (Voigt
-// components, Pa), delta_T when heated, then its solve}], and corrections, the most any
-// case took.
+// components, Pa), delta_T when heated, then its solve}], corrections, the most any case
+// took, and volume_average {stiffness}: the stiffness from the cells' volume averages.
 template <std::size_t N>
 void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path& dir, Json& effective);
+
+// The solved mixed load in `effective`: boundary, modulus, sigma_xx, strain_xx, its solve,
+// and volume_average {modulus, sigma_xx, sigma_yy, ... (each Voigt component)}.
+template <std::size_t N>
+void add_mixed(const MixedHomogenised<N>& h, const std::filesystem::path& dir, Json& effective);
 
 // A distribution: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d);

@@ -8,7 +8,7 @@
 namespace grainmesh {
 
 void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fields,
-                          const std::vector<StressState>& sigma, const ExportMesh& m, int picture_width, bool all,
+                          const std::vector<StressState>& sigma, const ExportMesh<2>& m, int picture_width, bool all,
                           const std::string& unit) {
   if (picture_width == 0) return;
   std::vector<double> sxx, syy, sxy, d = displacement_length(fields);
@@ -29,7 +29,7 @@ void write_field_pictures(const std::filesystem::path& dir, const CaseFields& fi
 }
 
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
-                            const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh& m) {
+                            const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh<2>& m) {
   const int phases = static_cast<int>(t.phases.size());
   write_stress_histogram(file, load_case, von_mises_histograms(cell_stress, m.mesh, m.phase, phases, kHistogramBins),
                          phase_names(t), "area");

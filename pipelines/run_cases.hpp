@@ -14,7 +14,7 @@
 namespace grainmesh {
 
 // Writes the cases of exported mesh `e` into `dir`; returns their directory names, and in
-// `mesh` the mesh they were written on. `ExportedMesh` is ExportMesh or ExportMesh3
+// `mesh` the mesh they were written on. `ExportedMesh` is ExportMesh<2> or ExportMesh<3>
 // (write_foam_case and periodic_load_cases of its dimension).
 template <class ExportedMesh, class CaseMesh>
 std::vector<std::string> write_run_cases(const std::filesystem::path& dir, const ExportedMesh& e,

@@ -3,7 +3,7 @@
 // Writes OUT/tessellation.json, the tessellation's and the mesh's files and pictures, the
 // OpenFOAM cases (the mixed load's case/, or the periodic load cases' case_NAME/),
 // config.ini (the resolved config, which repeats the run exactly) and report.json, last;
-// with --solve the cases are solved and homogenised too (answer.hpp, answer_3d.hpp).
+// with --solve the cases are solved and homogenised too (answer.hpp).
 #pragma once
 
 #include <filesystem>

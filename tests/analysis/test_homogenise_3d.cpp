@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Writes the six load cases of `e` under `o` into `dir` and solves them, two at a time.
-PeriodicHomogenised<6> solve_six(const ExportMesh3& e, const FoamOptions& o, const fs::path& dir, FoamMesh3& fm) {
+PeriodicHomogenised<6> solve_six(const ExportMesh<3>& e, const FoamOptions& o, const fs::path& dir, FoamMesh3& fm) {
   std::vector<fs::path> dirs;
   for (const LoadCase<6>& c : periodic_load_cases(e, o)) {
     dirs.push_back(dir / ("case_" + c.name));
@@ -63,7 +63,7 @@ TEST_CASE("3D homogenisation: one material, six periodic load cases solved, bala
   to.phases = {Phase{"WC", 0.0, true, carbide.youngs_modulus, carbide.poisson_ratio, {}}};
   Rng rng(5);
   const Tessellation3 t = tessellate_3d(to, rng);
-  const ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)}));
+  const ExportMesh<3> e = grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)}));
   const Stiffness<6> exact = isotropic_stiffness<6>(carbide);
   for (const auto cells : {FoamOptions::Cells::triangles, FoamOptions::Cells::polygons}) {
     const bool dual = cells == FoamOptions::Cells::polygons;
@@ -119,7 +119,7 @@ Laminate3 laminate_cell(double ratio, FoamOptions::Cells cells = FoamOptions::Ce
   to.phases = {Phase{"hard", 0.0, true, 600e9, 0.22, {}}};
   Rng rng(1);
   const Tessellation3 t = tessellate_3d(to, rng);
-  ExportMesh3 e = grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = 0.04}));
+  ExportMesh<3> e = grain_export_mesh(t, mesh_tessellation_3d(t, {.size = 0.04}));
   const test::Material hard{600e9, 0.22}, soft{600e9 / ratio, 0.3};
   e.phases = {FoamPhase{"hard", hard.E, hard.nu}, FoamPhase{"soft", soft.E, soft.nu}};
   // Soft: three neighbouring slabs clear of the box's sides (where the window cuts one).
@@ -226,8 +226,8 @@ TEST_CASE("3D homogenisation on the dual: a 100-grain WC-Co cell, symmetric, bet
   constexpr double kTetsPerGrain = 800;
   constexpr double kShearExcess = 0.005;
 #endif
-  const ExportMesh3 e =
-      grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, kTetsPerGrain)}));
+  const ExportMesh<3> e =
+      grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, kTetsPerGrain)}));
   FoamOptions o{.displacement = 1e-3 * t.width};
   o.cells = FoamOptions::Cells::polygons;
   test::ScratchDir dir("wcco3d_dual");

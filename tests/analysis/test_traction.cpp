@@ -33,7 +33,7 @@ TEST_CASE("the discrete traction balances on every cell of a solved periodic two
   Rng rng(3);
   const Tessellation t = tessellate(to, rng);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.1, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   // A mean strain of 1e-3 and, in the fourth case, cooling by 500 K.
   const FoamOptions periodic{.cyclic = true, .displacement = 1e-3 * to.width, .delta_T = -500.0};
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, periodic);

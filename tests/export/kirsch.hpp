@@ -26,14 +26,14 @@ inline double kirsch_sigma_xx(Vec2 p) {
 // by 0.15 h0 per h0 up to 16 h0), as one steel phase in triangles. No point is fixed, as
 // in OpenFOAM's tutorial: the mesher finds the corners where the hole meets the symmetry
 // lines at the h0 used here (not at every h0: at 0.018343 it misses the top one).
-inline ExportMesh plate_with_hole(double h0 = 0.025) {
+inline ExportMesh<2> plate_with_hole(double h0 = 0.025) {
   const std::string h = std::to_string(h0);
   const Config c = Config::from_text(
       "[domain]\nshape = difference(polygon(0 0, 10 0, 10 10, 0 10), circle(0, 0, 0.5))\n"
       "[size]\nh0 = " + h + "\nfunction = min(1 + 0.15*(sqrt(x^2+y^2) - 0.5)/" + h + ", 16)\n",
       "plate_hole.ini");
   const DistMeshResult r = mesh_domain(read_domain_job(c));
-  ExportMesh e;
+  ExportMesh<2> e;
   e.mesh = cell_mesh(r.mesh);
   e.phase.assign(r.mesh.triangles.size(), 0);
   e.grain = e.phase;

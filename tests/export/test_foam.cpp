@@ -62,7 +62,7 @@ Tessellation microstructure(bool periodic, bool binder = false) {
   return tessellate(o, rng);
 }
 
-void check_mesh_ok(const fs::path& case_dir, const ExportMesh& e) { test::check_mesh_ok(case_dir, e.phases, e.phase); }
+void check_mesh_ok(const fs::path& case_dir, const ExportMesh<2>& e) { test::check_mesh_ok(case_dir, e.phases, e.phase); }
 
 // The number after `label` in checkMesh's log (NaN when absent).
 double logged(const std::string& log, const std::string& label) {
@@ -75,7 +75,7 @@ double logged(const std::string& log, const std::string& label) {
 TEST_CASE("measure_quality's non-orthogonality and skewness are checkMesh's", "[export][openfoam]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   test::ScratchDir dir("foam_quality");
   write_foam_case(dir.path(), e, {});
   const std::string log = test::run_openfoam(dir.path(), "checkMesh").out;
@@ -94,7 +94,7 @@ TEST_CASE("checkMesh accepts a periodic two-phase microstructure with patches an
           "[export][openfoam]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   for (bool cyclic : {false, true})
     for (bool binary : {false, true}) {
       INFO("cyclic " << cyclic << " binary " << binary);
@@ -110,7 +110,7 @@ TEST_CASE("checkMesh accepts polygonal cells: a periodic two-phase microstructur
           "[export][openfoam][dual]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = export_mesh(t, m, FoamOptions::Cells::polygons);
+  const ExportMesh<2> e = export_mesh(t, m, FoamOptions::Cells::polygons);
   for (bool cyclic : {false, true}) {
     INFO("cyclic " << cyclic);
     test::ScratchDir dir("foam_polygons");
@@ -122,7 +122,7 @@ TEST_CASE("checkMesh accepts polygonal cells: a periodic two-phase microstructur
 TEST_CASE("checkMesh accepts polygonal cells of a binder cell and of the fibre and plate-with-hole domains",
           "[export][openfoam][dual]") {
   const Tessellation t = microstructure(true, true);
-  const ExportMesh binder = export_mesh(t, mesh_tessellation(t, {.size = 0.05, .phase_size = {}}), FoamOptions::Cells::polygons);
+  const ExportMesh<2> binder = export_mesh(t, mesh_tessellation(t, {.size = 0.05, .phase_size = {}}), FoamOptions::Cells::polygons);
   for (bool cyclic : {false, true}) {
     INFO("binder, cyclic " << cyclic);
     test::ScratchDir dir("foam_binder_polygons");
@@ -132,14 +132,14 @@ TEST_CASE("checkMesh accepts polygonal cells of a binder cell and of the fibre a
   for (const char* name : {"fibres_6", "plate_with_hole"}) {
     INFO(name);
     const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(test::example(name))));
-    ExportMesh e;
+    ExportMesh<2> e;
     e.mesh = cell_mesh(r.mesh);
     e.phase = r.phase;
     e.grain = r.phase;  // a domain mesh: each side of the interface one grain
     e.phases = {{"matrix", 3e9, 0.35}};
     if (std::count(e.phase.begin(), e.phase.end(), 1) > 0) e.phases.push_back({"fibre", 70e9, 0.22});
     for (const Vec2 p : r.mesh.points) e.cell.extend(p);
-    const ExportMesh poly = polygon_cells(e);
+    const ExportMesh<2> poly = polygon_cells(e);
     CHECK(poly.mesh.cells() < 0.6 * static_cast<double>(r.mesh.triangles.size()));
     test::ScratchDir dir("domain_polygons");
     write_foam_case(dir.path(), poly, {.convert_to_meters = 1e-3, .uniaxial = true});
@@ -149,7 +149,7 @@ TEST_CASE("checkMesh accepts polygonal cells of a binder cell and of the fibre a
 
 TEST_CASE("checkMesh accepts the thesis' 6-fibre cell, its two regions as phase zones", "[export][openfoam]") {
   const DistMeshResult r = mesh_domain(read_domain_job(Config::from_file(test::example("fibres_6"))));
-  ExportMesh e;
+  ExportMesh<2> e;
   e.mesh = cell_mesh(r.mesh);
   e.phase = r.phase;  // 1 inside the fibres
   e.grain = r.phase;  // a domain mesh: each side of the interface one grain
@@ -246,9 +246,9 @@ TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across a
       INFO((cells == FoamOptions::Cells::polygons ? "polygons" : "triangles"));
       test::ScratchDir dir("laminate");
       const FoamOptions o{};  // right moved by 0.001, symmetry elsewhere, plane strain
-      const ExportMesh e = export_mesh(t, m, cells);
+      const ExportMesh<2> e = export_mesh(t, m, cells);
       const PolyMesh pm = write_foam_case(dir.path(), e, o);
-      const Homogenised h = solve_and_homogenise(dir.path(), e, pm, o);
+      const MixedHomogenised<3> h = solve_mixed(dir.path(), e, pm, o);
       CHECK(h.strain_xx == o.displacement / t.width);  // the mean of d(ux)/dx, exactly
       CHECK(h.modulus == Approx(is_across ? across : along).epsilon(0.01));
     }
@@ -257,16 +257,16 @@ TEST_CASE("a two-layer laminate has the analytical plane-strain modulus across a
 
 TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of the hole", "[export][openfoam][physics]") {
   // Symmetry on the left and bottom, the traction pulling on the right, the top free.
-  const ExportMesh triangles = test::plate_with_hole();
+  const ExportMesh<2> triangles = test::plate_with_hole();
   const double R = test::kHoleRadius, T = test::kPlateTraction;
   for (const bool polygons : {false, true}) {
     INFO((polygons ? "polygons" : "triangles"));
-    const ExportMesh e = polygons ? polygon_cells(triangles) : triangles;
+    const ExportMesh<2> e = polygons ? polygon_cells(triangles) : triangles;
     test::ScratchDir dir("plate");
     const FoamOptions o{.convert_to_meters = 1.0, .traction = T, .uniaxial = true};
     const PolyMesh pm = write_foam_case(dir.path(), e, o);
     REQUIRE(test::run_openfoam(dir.path(), "checkMesh").out.find("Mesh OK.") != std::string::npos);
-    const Homogenised h = solve_and_homogenise(dir.path(), e, pm, o);
+    const MixedHomogenised<3> h = solve_mixed(dir.path(), e, pm, o);
     const std::vector<double> sxx = read_sigma_xx(h.run.result_dir / kStressField, e.mesh.cells());
     // The cells nearest the top of the hole, where sigma_xx peaks at 3 T.
     std::vector<std::pair<double, int>> near;
@@ -285,15 +285,15 @@ TEST_CASE("a plate with a hole under tension has Kirsch's stress at the top of t
 TEST_CASE("cyclic cases: the displacement jump across left/right loads the periodic cell", "[export][openfoam][physics]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   const FoamOptions cyclic{.cyclic = true};
 
   // Two phases: periodic and symmetric boundaries give nearly the same mean stress.
   test::ScratchDir periodic("cyclic"), patches("patches");
   const PolyMesh cyclic_mesh = write_foam_case(periodic.path(), e, cyclic);
   const PolyMesh patch_mesh = write_foam_case(patches.path(), e, {});
-  const Homogenised with_cyclic = solve_and_homogenise(periodic.path(), e, cyclic_mesh, cyclic);
-  const Homogenised with_patches = solve_and_homogenise(patches.path(), e, patch_mesh, {});
+  const MixedHomogenised<3> with_cyclic = solve_mixed(periodic.path(), e, cyclic_mesh, cyclic);
+  const MixedHomogenised<3> with_patches = solve_mixed(patches.path(), e, patch_mesh, {});
   CHECK(with_cyclic.sigma_xx == Approx(with_patches.sigma_xx).epsilon(0.02));
   CHECK_THROWS_AS(write_foam_case(periodic.path() / "x", e, {.cyclic = true, .uniaxial = true}), ConfigError);
 }
@@ -301,7 +301,7 @@ TEST_CASE("cyclic cases: the displacement jump across left/right loads the perio
 TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[export]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  ExportMesh e = grain_export_mesh(t, m);
+  ExportMesh<2> e = grain_export_mesh(t, m);
   CHECK(e.pairs == m.pairs);  // carried from the mesh stage, not made again
   const PolyMesh pm = build_polymesh(e, {.cyclic = true});
   // Face k of left is the image of face k of right: its points moved by W; so is the
@@ -335,12 +335,12 @@ TEST_CASE("cyclic faces are paired through the mesh's periodic node pairs", "[ex
 TEST_CASE("the export refuses a mesh without one grain and one phase per triangle", "[export]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   REQUIRE(e.grain == m.grain);
   REQUIRE(e.phase == m.phase);
   test::ScratchDir dir("foam_labels");
   for (bool grain : {true, false}) {
-    ExportMesh short_labels = e;
+    ExportMesh<2> short_labels = e;
     (grain ? short_labels.grain : short_labels.phase).pop_back();
     CHECK_THROWS_WITH(write_foam_case(dir.path() / "x", short_labels, {}),
                       Catch::Contains("the mesh needs a grain and a phase per cell"));
@@ -353,7 +353,7 @@ TEST_CASE("the displacement starts from the field a uniform cell takes under the
           "[export]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   // The default load (right moved in x, symmetry elsewhere) and a periodic mixed strain.
   const FoamOptions mixed{};
   const FoamOptions cyclic{.cyclic = true, .strain = {1e-3, -4e-4, 0.0, 0.0, 0.0, 2.5e-4}};
@@ -382,7 +382,7 @@ TEST_CASE("a thermal case carries the temperature change and each cell's alpha, 
           "[export][thermal]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.15, .phase_size = {}});
-  ExportMesh e = grain_export_mesh(t, m);
+  ExportMesh<2> e = grain_export_mesh(t, m);
   e.phases[0].alpha = 5e-6;
   e.phases[1].alpha = 14e-6;
   test::ScratchDir dir("thermal-case");
@@ -413,7 +413,7 @@ TEST_CASE("a case that stops itself before its effective stress has settled is c
           "[export][openfoam]") {
   const Tessellation t = microstructure(true);
   const GrainMesh m = mesh_tessellation(t, {.size = 0.08, .phase_size = {}});
-  const ExportMesh e = grain_export_mesh(t, m);
+  const ExportMesh<2> e = grain_export_mesh(t, m);
   test::ScratchDir loose("loose"), as_written("as-written");
   const PolyMesh pm = write_foam_case(loose.path(), e, {});
   write_foam_case(as_written.path(), e, {});
@@ -426,8 +426,8 @@ TEST_CASE("a case that stops itself before its effective stress has settled is c
   REQUIRE(std::regex_search(text, found, stop_value));
   CHECK(std::stod(found[1]) == kSolverTolerance);
   write_text_file(control, std::regex_replace(text, stop_value, "value   0.01;"));
-  const Homogenised continued = solve_and_homogenise(loose.path(), e, pm, {});
-  const Homogenised straight = solve_and_homogenise(as_written.path(), e, pm, {});
+  const MixedHomogenised<3> continued = solve_mixed(loose.path(), e, pm, {});
+  const MixedHomogenised<3> straight = solve_mixed(as_written.path(), e, pm, {});
   CHECK(fs::exists(loose / "log.solidDisplacementFoam.1"));  // the first run's log, kept
   CHECK(!fs::exists(as_written / "log.solidDisplacementFoam.1"));
   CHECK(continued.run.stress_change <= kStressTolerance);

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-ExportMesh3 cell_3d(bool periodic) {
+ExportMesh<3> cell_3d(bool periodic) {
   Tessellation3Options o;
   o.grains = 20;
   o.periodic = periodic;
@@ -33,7 +33,7 @@ ExportMesh3 cell_3d(bool periodic) {
   o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
   Rng rng(3);
   const Tessellation3 t = tessellate_3d(o, rng);
-  return grain_export_mesh_3d(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
+  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
 }
 
 // The polyMesh in DIR/constant/polyMesh with the least of a case checkMesh reads.
@@ -64,7 +64,7 @@ int side_faces(const PolyMesh& pm, const std::string& side) {
 TEST_CASE("3D polyMesh: checkMesh passes a periodic two-phase cell with six patches and with three cyclic pairs",
           "[export][openfoam][mesh3d]") {
   test::ScratchDir dir("foam3d");
-  const ExportMesh3 e = cell_3d(true);
+  const ExportMesh<3> e = cell_3d(true);
   for (const bool cyclic : {false, true}) {
     CAPTURE(cyclic);
     FoamOptions o;
@@ -88,8 +88,8 @@ TEST_CASE("3D polyMesh: checkMesh passes a periodic two-phase cell with six patc
 TEST_CASE("3D polyMesh of the dual: checkMesh passes the polyhedra split at grain boundaries, with patches and cyclic",
           "[export][openfoam][mesh3d][dual3d]") {
   test::ScratchDir dir("foam3d_dual");
-  const ExportMesh3 e = cell_3d(true);
-  double box_volume = e.box.x * e.box.y * e.box.z;
+  const ExportMesh<3> e = cell_3d(true);
+  double box_volume = e.cell.size().x * e.cell.size().y * e.cell.size().z;
   for (const bool cyclic : {false, true}) {
     CAPTURE(cyclic);
     FoamOptions o;
@@ -138,7 +138,7 @@ TEST_CASE("3D case: plane stress and a temperature change on a cell that is not 
           "written",
           "[export][mesh3d]") {
   test::ScratchDir dir("foam3d-refused");
-  const ExportMesh3 e = cell_3d(true);
+  const ExportMesh<3> e = cell_3d(true);
   FoamOptions plane;
   plane.plane_stress = true;
   CHECK_THROWS_WITH(write_foam_case(dir.path(), e, plane), Catch::Contains("export.plane_stress"));
@@ -155,7 +155,7 @@ TEST_CASE("3D case: plane stress and a temperature change on a cell that is not 
 TEST_CASE("3D polyMesh as VTK polyhedra: read back, every cell's faces turned outward, the box filled",
           "[export][mesh3d][vtu]") {
   test::ScratchDir dir("foam3d-vtu");
-  const ExportMesh3 e = cell_3d(true);
+  const ExportMesh<3> e = cell_3d(true);
   for (const FoamOptions::Cells cells : {FoamOptions::Cells::triangles, FoamOptions::Cells::polygons}) {
     INFO((cells == FoamOptions::Cells::polygons ? "dual polyhedra" : "tetrahedra"));
     FoamOptions o;
@@ -173,7 +173,7 @@ TEST_CASE("3D polyMesh as VTK polyhedra: read back, every cell's faces turned ou
     }
     CHECK(least > 0.0);
     CHECK(worst < (cells == FoamOptions::Cells::polygons ? 0.05 : 1e-9));
-    CHECK(total == Approx(e.box.x * e.box.y * e.box.z).epsilon(1e-12));
+    CHECK(total == Approx(e.cell.size().x * e.cell.size().y * e.cell.size().z).epsilon(1e-12));
     REQUIRE(back.ints("phase") != nullptr);
     CHECK(*back.ints("phase") == fm.phase);
   }

@@ -81,6 +81,9 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   const double mean_xx = s["WC"]["volume_fraction"].get<double>() * s["WC"]["mean"]["xx"].get<double>() +
                          s["Co"]["volume_fraction"].get<double>() * s["Co"]["mean"]["xx"].get<double>();
   CHECK(mean_xx == Approx(eff["stiffness"]["C11"].get<double>() * eff["load_cases"][0]["strain"]["xx"].get<double>()).epsilon(1e-2));
+  // The stiffness from the volume average of the cells' own stresses: biased next to the
+  // interfaces, within 1 % (measured C11 0.4 % above).
+  CHECK(eff["volume_average"]["stiffness"]["C11"].get<double>() == Approx(eff["stiffness"]["C11"].get<double>()).epsilon(1e-2));
 }
 
 TEST_CASE("grainmesh run --solve on a 3D cell under the mixed load, serial and on two MPI processes",
@@ -104,6 +107,12 @@ TEST_CASE("grainmesh run --solve on a 3D cell under the mixed load, serial and o
   const double E = 700e9, nu = 0.24, strain = one_material["effective"]["strain_xx"].get<double>();
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   CHECK(one_material["effective"]["modulus"].get<double>() == Approx(lambda + 2 * mu).epsilon(1e-9));
+  // The volume average of the cells' stresses: the same uniform state, component by component.
+  const auto& average = one_material["effective"]["volume_average"];
+  CHECK(average["modulus"].get<double>() == Approx(lambda + 2 * mu).epsilon(1e-9));
+  CHECK(average["sigma_yy"].get<double>() == Approx(lambda * strain).epsilon(1e-9));
+  CHECK(average["sigma_zz"].get<double>() == Approx(lambda * strain).epsilon(1e-9));
+  for (const char* shear : {"sigma_yz", "sigma_xz", "sigma_xy"}) CHECK(std::abs(average[shear].get<double>()) < 1e-9 * mu * strain);
   for (const char* phase : {"WC", "Co"}) {
     CAPTURE(phase);
     const auto& s = one_material["stresses"]["mixed"][phase];
