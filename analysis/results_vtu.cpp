@@ -36,11 +36,10 @@ void write_results_vtu(const std::filesystem::path& file, const ExportMesh<2>& m
   write_vtu(file, m.mesh, fields, {{"phase_names", phase_names}, {"length_unit", {length_unit_name(metres_per_unit)}}});
 }
 
-void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
-                          const std::vector<std::string>& phase_names,
-                          const std::vector<std::pair<std::string, const CaseFields*>>& cases, double metres_per_unit) {
+void write_results_vtu(const std::filesystem::path& file, const FoamMesh3& m, const std::vector<std::string>& phase_names,
+                       const std::vector<SolvedFields>& cases, double metres_per_unit) {
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
-  for (const auto& [suffix, f] : cases) {
+  for (const auto& [suffix, f, unused] : cases) {
     std::vector<double> stress, mises;
     for (std::size_t c = 0; c < f->stress.size(); ++c) {
       const double* s = f->stress[c];  // OpenFOAM's xx xy xz yy yz zz into VTK's xx yy zz xy yz xz

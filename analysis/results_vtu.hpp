@@ -14,7 +14,8 @@
 namespace grainmesh {
 
 // A solved case's displacement and cell stresses, its arrays named with `suffix` (empty
-// for the mixed load's one case, "_xx", "_yy", "_xy" for the periodic ones).
+// for the mixed load's one case, "_xx", "_yy", ... for the periodic ones); `stress` the
+// 2D cells' recovered stresses (in 3D OpenFOAM's own are written).
 struct SolvedFields {
   std::string suffix;
   const CaseFields* fields = nullptr;
@@ -33,9 +34,9 @@ void write_results_vtu(const std::filesystem::path& file, const ExportMesh<2>& m
                        const std::vector<SolvedFields>& cases, double metres_per_unit);
 
 // The same over a 3D case's cells (VTK polyhedra): grain, phase, and per case (`suffix`
-// and its fields, the whole stress) displacement, stress and von_mises.
-void write_results_vtu_3d(const std::filesystem::path& file, const FoamMesh3& m,
-                          const std::vector<std::string>& phase_names,
-                          const std::vector<std::pair<std::string, const CaseFields*>>& cases, double metres_per_unit);
+// and its fields; the stress OpenFOAM's whole tensor, `stress` unused) displacement,
+// stress and von_mises.
+void write_results_vtu(const std::filesystem::path& file, const FoamMesh3& m, const std::vector<std::string>& phase_names,
+                       const std::vector<SolvedFields>& cases, double metres_per_unit);
 
 }  // namespace grainmesh

@@ -1,6 +1,6 @@
 // OpenFOAM output: a complete case that solidDisplacementFoam (OpenFOAM v1912) runs as it
 // is, two-phase linear elasticity on the polyMesh (polymesh.hpp), its fields, properties
-// and dictionaries (foam_solver.hpp); for 2D meshes here, for 3D in foam_3d.hpp.
+// and dictionaries (foam_solver.hpp); for 2D meshes here, for 3D in foam_case_3d.hpp.
 #pragma once
 
 #include <cstddef>

@@ -21,9 +21,9 @@ void check_case_3d(const ExportMesh<3>& m, const FoamOptions& o) {
 
 }  // namespace
 
-FoamMesh3 foam_mesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
+FoamMesh3 foam_mesh(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cells == FoamOptions::Cells::polygons) return build_dual_polymesh_3d(m, o);
-  FoamMesh3 out{.mesh = build_polymesh_3d(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
+  FoamMesh3 out{.mesh = build_polymesh(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
   // A tetrahedron's own: OpenFOAM's pyramids give its centroid and volume.
   for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) out.corner_cell.insert(out.corner_cell.end(), 4, static_cast<int>(t));
   for (const std::array<int, 4>& v : m.mesh.tets) {
@@ -36,7 +36,7 @@ FoamMesh3 foam_mesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
 
 FoamMesh3 write_foam_case(const std::filesystem::path& dir, const ExportMesh<3>& m, const FoamOptions& o) {
   check_case_3d(m, o);
-  FoamMesh3 fm = foam_mesh_3d(m, o);
+  FoamMesh3 fm = foam_mesh(m, o);
   write_foam_case(dir, m, fm, o);
   return fm;
 }

@@ -11,9 +11,9 @@
 
 namespace grainmesh {
 
-// The mesh a 3D case is written on: the tetrahedra (build_polymesh_3d), or with
+// The mesh a 3D case is written on: the tetrahedra (build_polymesh), or with
 // options.cells = polygons their dual's polyhedra (build_dual_polymesh_3d).
-FoamMesh3 foam_mesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
+FoamMesh3 foam_mesh(const ExportMesh<3>& m, const FoamOptions& options);
 
 // Writes the complete 3D case into `dir` as write_foam_case does a 2D one (foam_case.hpp): the polyMesh,
 // 0/D (under the mixed load, or a cyclic case's mean strain: all six components), 0/E,
@@ -21,9 +21,9 @@ FoamMesh3 foam_mesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
 // no), the system dictionaries (the force through right, and top and front when cyclic,
 // logged), Allrun, case.foam. Throws ConfigError for export.plane_stress and as
 // check_case (a temperature change only on a cyclic case), GeometryError as
-// foam_mesh_3d. Returns the mesh it wrote.
+// foam_mesh. Returns the mesh it wrote.
 FoamMesh3 write_foam_case(const std::filesystem::path& dir, const ExportMesh<3>& m, const FoamOptions& options);
-// The same on a mesh already built (foam_mesh_3d(m, options): a load case's options keep
+// The same on a mesh already built (foam_mesh(m, options): a load case's options keep
 // the mesh), its polyMesh's files copied from `polymesh_from` when given.
 void write_foam_case(const std::filesystem::path& dir, const ExportMesh<3>& m, const FoamMesh3& mesh,
                         const FoamOptions& options, const std::filesystem::path& polymesh_from = {});

@@ -70,7 +70,7 @@ int box_side_of(const std::vector<Vec3>& p, const std::array<int, 3>& f, const B
   return -1;
 }
 
-PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
+PolyMesh::Patch side_patch(int s, Vec3 box, const FoamOptions& o) {
   PolyMesh::Patch p;
   p.name = kSideNames3[s];
   const int axis = s / 2;
@@ -88,7 +88,7 @@ PolyMesh::Patch side_patch_3d(int s, Vec3 box, const FoamOptions& o) {
   return p;
 }
 
-PolyMesh build_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
+PolyMesh build_polymesh(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
   const auto& tets = m.mesh.tets;
   PolyMesh pm;
@@ -138,7 +138,7 @@ PolyMesh build_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
     for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], m.pairs.axis[a], a);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
-    PolyMesh::Patch p = side_patch_3d(s, m.cell.size(), o);
+    PolyMesh::Patch p = side_patch(s, m.cell.size(), o);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
     for (const BoundaryFace& f : sides[s]) add_face(pm, f.points, f.owner);

@@ -35,7 +35,7 @@ int box_side_of(const std::vector<Vec3>& p, const std::array<int, 3>& f, const B
 // The patch of the box's side s (0 left ... 5 front) under `options`: cyclic (with its
 // partner and separation), or the mixed load's type: right a patch, the others symmetry
 // planes, top and front patches too when uniaxial.
-PolyMesh::Patch side_patch_3d(int side, Vec3 box, const FoamOptions& options);
+PolyMesh::Patch side_patch(int side, Vec3 box, const FoamOptions& options);
 
 // Builds the polyMesh: internal faces in upper-triangular order, then the sides' faces
 // patch by patch (left, right, bottom, top, back, front). With options.cyclic, the three
@@ -45,6 +45,6 @@ PolyMesh::Patch side_patch_3d(int side, Vec3 box, const FoamOptions& options);
 // planes, top and front patches too when options.uniaxial. Zones by add_zones. Throws
 // ConfigError for export.cyclic on a mesh that is not periodic, GeometryError when a
 // boundary face lies on no side or a cyclic side's faces do not pair.
-PolyMesh build_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
+PolyMesh build_polymesh(const ExportMesh<3>& m, const FoamOptions& options);
 
 }  // namespace grainmesh

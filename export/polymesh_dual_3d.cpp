@@ -424,7 +424,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
     for (int a = 0; a < 3; ++a) sides[2 * a + 1] = image_faces(sides[2 * a], sides[2 * a + 1], nodes, m.pairs.axis[a], a, images);
   for (int s = 0; s < 6; ++s) {
     if (sides[s].empty()) throw GeometryError(std::string("export: no face lies on the box's ") + kSideNames3[s] + " side");
-    PolyMesh::Patch p = side_patch_3d(s, m.cell.size(), o);
+    PolyMesh::Patch p = side_patch(s, m.cell.size(), o);
     p.start = pm.faces();
     p.size = static_cast<int>(sides[s].size());
     for (const DualFace* f : sides[s]) add_face(f->nodes, f->owner);

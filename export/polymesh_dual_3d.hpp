@@ -20,8 +20,8 @@ namespace grainmesh {
 // triangle, plane, so each grain keeps its volume exactly), as does a face on a side of
 // the box; each is one polygon (its ring of corners, and the point or edge point it fans
 // from when the ring is open). Internal faces in OpenFOAM's order, boundary faces patch
-// by patch as build_polymesh_3d (cyclic sides' faces the images of their partners'),
-// zones by add_zones; cells in the order of their points. Throws as build_polymesh_3d,
+// by patch as build_polymesh (cyclic sides' faces the images of their partners'),
+// zones by add_zones; cells in the order of their points. Throws as build_polymesh,
 // and GeometryError where the dual's faces would not be simple (a grain boundary not
 // manifold at a point).
 FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);

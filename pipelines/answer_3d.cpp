@@ -95,14 +95,14 @@ ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenis
 void write_periodic_results_vtu(const SolveInput<3>& in, const PeriodicHomogenised<6>& h,
                                 const ThermalResidual<6>* thermal) {
   if (in.picture_width == 0) return;
-  std::vector<std::pair<std::string, const CaseFields*>> cases;
+  std::vector<SolvedFields> cases;
   for (const LoadCaseResult<6>& r : h.cases)
-    if (r.load.delta_T == 0.0) cases.push_back({"_" + r.load.name, &r.fields});
+    if (r.load.delta_T == 0.0) cases.push_back({"_" + r.load.name, &r.fields, nullptr});
   if (thermal != nullptr) {
-    cases.push_back({"_thermal", &thermal->free.fields});
-    cases.push_back({"_thermal_xx", &thermal->loaded.fields});
+    cases.push_back({"_thermal", &thermal->free.fields, nullptr});
+    cases.push_back({"_thermal_xx", &thermal->loaded.fields, nullptr});
   }
-  write_results_vtu_3d(in.dir / "results.vtu", in.pm, phase_names(in), cases, in.foam.convert_to_meters);
+  write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in), cases, in.foam.convert_to_meters);
 }
 
 }  // namespace
@@ -112,7 +112,7 @@ Answer homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warni
   Answer answer;
   answer.stresses["mixed"] = state_stresses(h, in, 0, false);
   write_state_pictures(in, h.fields, "mixed", "");
-  if (in.picture_width > 0) write_results_vtu_3d(in.dir / "results.vtu", in.pm, phase_names(in), {{"", &h.fields}}, in.foam.convert_to_meters);
+  if (in.picture_width > 0) write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in), {{"", &h.fields, nullptr}}, in.foam.convert_to_meters);
   Json& effective = answer.effective;
   add_mixed(h, in.dir, effective);
   if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways

@@ -70,7 +70,7 @@ TEST_CASE("3D polyMesh: checkMesh passes a periodic two-phase cell with six patc
     FoamOptions o;
     o.cyclic = cyclic;
     o.grain_zones = true;
-    const PolyMesh pm = build_polymesh_3d(e, o);
+    const PolyMesh pm = build_polymesh(e, o);
     // Every tetrahedron's four faces: internal ones twice.
     REQUIRE(pm.cells == static_cast<int>(e.mesh.tets.size()));
     REQUIRE(2 * pm.internal_faces() + (pm.faces() - pm.internal_faces()) == 4 * pm.cells);
@@ -96,7 +96,7 @@ TEST_CASE("3D polyMesh of the dual: checkMesh passes the polyhedra split at grai
     o.cyclic = cyclic;
     o.grain_zones = true;
     o.cells = FoamOptions::Cells::polygons;
-    const FoamMesh3 d = foam_mesh_3d(e, o);
+    const FoamMesh3 d = foam_mesh(e, o);
     const PolyMesh& pm = d.mesh;
     // A cell per point and grain around it: at least one per point, more on grain
     // boundaries; every cell's volume positive, all of them the box's, and each grain's
@@ -128,9 +128,9 @@ TEST_CASE("3D polyMesh of the dual: checkMesh passes the polyhedra split at grai
 TEST_CASE("3D polyMesh: cyclic pairs need a periodic mesh", "[export][mesh3d]") {
   FoamOptions o;
   o.cyclic = true;
-  CHECK_THROWS_WITH(build_polymesh_3d(cell_3d(false), o), Catch::Contains("export.cyclic: the mesh is not periodic"));
+  CHECK_THROWS_WITH(build_polymesh(cell_3d(false), o), Catch::Contains("export.cyclic: the mesh is not periodic"));
   o.cyclic = false;
-  const PolyMesh pm = build_polymesh_3d(cell_3d(false), o);
+  const PolyMesh pm = build_polymesh(cell_3d(false), o);
   CHECK(pm.patches.size() == 6);
 }
 
@@ -161,7 +161,7 @@ TEST_CASE("3D polyMesh as VTK polyhedra: read back, every cell's faces turned ou
     FoamOptions o;
     o.cyclic = true;
     o.cells = cells;
-    const FoamMesh3 fm = foam_mesh_3d(e, o);
+    const FoamMesh3 fm = foam_mesh(e, o);
     write_vtu(dir / "cells.vtu", fm.mesh, {{"phase", fm.phase}});
     const VtuContents back = read_vtu(dir / "cells.vtu");
     REQUIRE(back.solid_volumes.size() == static_cast<std::size_t>(fm.mesh.cells));
