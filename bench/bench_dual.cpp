@@ -32,9 +32,9 @@
 #include "pipelines/config_keys.hpp"
 #include "pipelines/export_command.hpp"
 #include "pipelines/laminate.hpp"
-#include "pipelines/mesh_command.hpp"
+#include "pipelines/mesh_job.hpp"
 #include "pipelines/run_command.hpp"
-#include "pipelines/tessellate_command.hpp"
+#include "pipelines/tessellate_job.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -86,7 +86,7 @@ Json measure(const Family& f, Cells cells, int per_grain) {
   const Config config = f.config.empty() ? Config::from_text(default_run_config(), "default config", set)
                                          : Config::from_text(f.config, f.name, set);
   const Config tess_config = config.subset(tessellate_config_keys());
-  const Tessellation t = run_tessellate_job(read_tessellate_job(tess_config));
+  const Tessellation t = run_tessellate_job(read_tessellate_job<2>(tess_config));
   const GrainMesh m = mesh_tessellation(t, read_mesh_job(config.subset(mesh_config_keys()), t).options);
   FoamOptions o = read_foam_options(config.subset(export_config_keys()));
   o.cells = cells;

@@ -21,9 +21,9 @@
 #include "pipelines/config.hpp"
 #include "pipelines/config_keys.hpp"
 #include "pipelines/export_command.hpp"
-#include "pipelines/mesh_command.hpp"
+#include "pipelines/mesh_job.hpp"
 #include "pipelines/run_command.hpp"
-#include "pipelines/tessellate_command.hpp"
+#include "pipelines/tessellate_job.hpp"
 
 using namespace grainmesh;
 
@@ -38,8 +38,7 @@ struct Case {
 Json solve_case(const Case& c, const std::filesystem::path& dir) {
   const Config config = Config::from_text(default_run_config(), "default config", c.set);
   const Config tess_config = config.subset(tessellate_config_keys());
-  const TessellateJob job = read_tessellate_job(tess_config);
-  const Tessellation t = run_tessellate_job(job);
+  const Tessellation t = run_tessellate_job(read_tessellate_job<2>(tess_config));
   const GrainMesh m = mesh_tessellation(t, read_mesh_job(config.subset(mesh_config_keys()), t).options);
   const ExportMesh<2> e = grain_export_mesh(t, m);
   const FoamOptions o = read_foam_options(config.subset(export_config_keys()));

@@ -32,7 +32,7 @@ std::vector<double> achieved_fractions(const Tessellation& t) {
 // component (0 xx, 1 yy, 2 xy; -1 none: the thermal residual's mean is zero); `balanced`:
 // the means from the virial stresses (periodic).
 Json state_stresses(const SolvedState<3>& s, const Tessellation& t, const ExportMesh<2>& e, int loaded, bool balanced) {
-  return state_stresses_json(s, cell_areas(e.mesh), e.phase, phase_names(t), loaded, balanced);
+  return state_stresses_json(s, cell_areas(e.mesh), e.phase, phase_names(t.phases), loaded, balanced);
 }
 
 // What a thermal load adds to the answer: effective.thermal_expansion {xx, yy, xy}
@@ -67,7 +67,7 @@ Answer homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warni
   if (picture_width > 0) write_stress_histogram(dir / "stress_histogram.png", "mixed", h.cell_stress, t, e);
   Json& effective = answer.effective;
   add_mixed(h, dir, effective);
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), {{"", &h.fields, &h.cell_stress}}, foam.convert_to_meters);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t.phases), {{"", &h.fields, &h.cell_stress}}, foam.convert_to_meters);
   write_field_pictures(dir, h.fields, h.cell_stress, e, picture_width, all_pictures, unit);
   if (foam.uniaxial) return answer;  // the bounds are for the default load (mean eps_yy zero)
   const ElasticBounds b = elastic_bounds(e.phases, achieved_fractions(t), foam.plane_stress);
@@ -113,7 +113,7 @@ Answer homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& wa
       write_stress_histogram(dir / "stress_histogram_thermal.png", "thermal", thermal->free.cell_stress, t, e);
   }
   add_load_cases(h, dir, effective);
-  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t), solved, foam.convert_to_meters);
+  if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t.phases), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
   return answer;
 }

@@ -75,7 +75,7 @@ void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, con
 // state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
 // stresses.thermal_xx) and its section pictures.
 // Levin's relation with the stiffness the expansion was freed with (as solved).
-ThermalResidual<6> add_thermal_answer_3d(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput<3>& in,
+ThermalResidual<6> add_thermal_answer(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput<3>& in,
                                          std::vector<std::string>& warnings) {
   const ThermalResidual<6> r = thermal_residual(h);
   answer.effective["thermal_expansion"] = voigt_json<6>(r.expansion);
@@ -143,7 +143,7 @@ Answer homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& wa
                    "order in the mesh size; see docs/3d.md, 3D cases and solves");
   add_engineering(engineering_constants(verdict.stiffness), effective);
   std::optional<ThermalResidual<6>> thermal;
-  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer_3d(answer, h, in, warnings);
+  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer(answer, h, in, warnings);
   add_load_cases(h, in.dir, effective);
   // The thermal case at its fixed strain is no state of its own: its free state is above.
   for (std::size_t k = 0; k < 6; ++k) {

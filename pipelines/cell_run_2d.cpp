@@ -6,15 +6,12 @@
 #include "export/foam_case.hpp"
 #include "export/foam_load.hpp"
 #include "export/polymesh.hpp"
-#include "grains/conformity.hpp"
-#include "mesh/quality.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/run_cases.hpp"
-#include "pipelines/mesh_command.hpp"
+#include "pipelines/mesh_outputs.hpp"
 #include "pipelines/result_pictures.hpp"
-#include "pipelines/tessellate_command.hpp"
-#include "tessellate/tessellation_json.hpp"
+#include "pipelines/tessellation_outputs.hpp"
 #include "view/picture.hpp"
 
 namespace grainmesh {
@@ -28,9 +25,7 @@ class PlaneCellRun final : public CellRun {
 
   void tessellate(Warnings& warnings) override {
     t_ = run_tessellate_job(jobs_.tessellate);
-    const TessellationStats& s = t_->stats;
-    check_phases_have_grains(t_->phases, s.phases, s.grains, jobs_.tessellate.origin, jobs_.tessellate.options.matrix_phase);
-    for (const std::string& w : phase_fraction_warnings(t_->phases, s.phases, s.grains)) warnings.add(w);
+    check_phases(*t_, jobs_.tessellate, warnings);
   }
 
   void mesh(const StageLine& stage, Warnings& warnings) override {
@@ -41,38 +36,18 @@ class PlaneCellRun final : public CellRun {
       mesh_job_.options.progress = [&](int done, int total) {
         stage.show("meshing: " + std::to_string(done) + " / " + std::to_string(total) + " regions", done == total);
       };
-    m_ = mesh_tessellation(*t_, mesh_job_.options);
+    m_ = run_mesh_job(*t_, mesh_job_, warnings);
     mesh_job_.options.progress = nullptr;
-    check_conformity(*t_, *m_);
-    q_ = measure_quality(m_->mesh);
-    for (const std::string& w : mesh_warnings(*m_, q_, mesh_job_.options)) warnings.add(w);
   }
 
-  Json write_geometry(const std::filesystem::path& dir, Warnings&) override {
-    const Tessellation& t = *t_;
-    const GrainMesh& m = *m_;
-    write_text_file(dir / "tessellation.json", tessellation_to_json(t));
-    if (plan_.pictures != Pictures::none)
-      write_tessellation_png(dir / "tessellation.png", t,
-                             tessellation_picture(t, jobs_.tessellate.picture_width, unit_));
-    write_mesh_files(dir, t, m, picture_width(), plan_.pictures == Pictures::all, unit_);
-    return {{"dimensions", 2},
-            {"seed", jobs_.tessellate.seed},
-            {"width", t.width},
-            {"height", t.height},
-            {"periodic", t.periodic},
-            {"grains", t.stats.grains},
-            {"phases", phases_json(t)},
-            {"statistics", descriptors_json(t)},
-            {"mesh",
-             {{"points", m.mesh.points.size()},
-              {"cells", m.mesh.triangles.size()},
-              {"q_min", q_.q_min},
-              {"q_mean", q_.q_mean},
-              {"min_angle_deg", q_.min_angle_deg},
-              {"max_non_orthogonality_deg", q_.max_non_orthogonality_deg},
-              {"cells_per_grain_mean", static_cast<double>(m.mesh.triangles.size()) / t.stats.grains},
-              {"unconverged_regions", m.unconverged_regions}}}};
+  Json write_geometry(const std::filesystem::path& dir, Warnings& warnings) override {
+    // No tessellation.vtp: mesh.vtu shows the grains.
+    const Drawing drawing{.pictures = plan_.pictures != Pictures::none, .detail = plan_.pictures == Pictures::all,
+                          .unit = unit_};
+    Json fields = write_tessellation_files(dir, *t_, jobs_.tessellate, drawing, warnings);
+    fields.update(write_mesh_files(dir, *t_, *m_, mesh_job_, drawing, warnings));
+    mesh_fields_ = fields["mesh"];
+    return fields;
   }
 
   std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
@@ -81,7 +56,7 @@ class PlaneCellRun final : public CellRun {
       // The solved cells, as mesh_detail.png shows the triangles.
       write_mesh_png(dir / "cells_detail.png", e_->mesh,
                      {.width_px = picture_width(), .fill_by = e_->phase, .outline_by = e_->grain,
-                      .view = detail_view(*t_), .legend = phase_names(*t_), .scale_bar = true, .length_unit = unit_});
+                      .view = detail_view(*t_), .legend = phase_names(t_->phases), .scale_bar = true, .length_unit = unit_});
     foam_.binary = binary_case(plan_, e_->mesh.cells());
     return write_run_cases(dir, *e_, foam_, plan_.boundary, pm_);
   }
@@ -109,7 +84,8 @@ class PlaneCellRun final : public CellRun {
       written += (written.empty() ? "" : ", ") + name + (std::filesystem::is_directory(out / name) ? "/" : "");
     std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{%s}\n  each case's "
                 "Allrun runs checkMesh and solidDisplacementFoam\n",
-                t_->stats.grains, m_->mesh.triangles.size(), q_.q_min, q_.q_mean,
+                t_->stats.grains, m_->mesh.triangles.size(), mesh_fields_["q_min"].get<double>(),
+                mesh_fields_["q_mean"].get<double>(),
                 report["seconds"]["total"].get<double>(), out.string().c_str(), written.c_str());
     if (!plan_.solve) return;
     const Json& eff = report["effective"];
@@ -141,12 +117,12 @@ class PlaneCellRun final : public CellRun {
   const CellJobs<2>& jobs_;
   FoamOptions foam_;  // the plan's, the case's format decided by its size
   std::string unit_;  // the pictures' scale bars
-  MeshJob mesh_job_;
+  MeshJob<2> mesh_job_;
   std::optional<Tessellation> t_;
   std::optional<GrainMesh> m_;
-  MeshQuality q_;
   std::optional<ExportMesh<2>> e_;
   PolyMesh pm_;
+  Json mesh_fields_;  // report.json's mesh
 };
 
 }  // namespace

@@ -8,9 +8,9 @@
 #include "pipelines/answer.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
-#include "pipelines/mesh_3d_command.hpp"
+#include "pipelines/mesh_outputs.hpp"
 #include "pipelines/run_cases.hpp"
-#include "pipelines/tessellate_3d_command.hpp"
+#include "pipelines/tessellation_outputs.hpp"
 #include "view/picture.hpp"
 
 namespace grainmesh {
@@ -22,18 +22,23 @@ class SolidCellRun final : public CellRun {
   SolidCellRun(const RunPlan& plan, const CellJobs<3>& jobs)
       : plan_(plan), jobs_(jobs), foam_(plan.foam), unit_(length_unit_name(plan.foam.convert_to_meters)) {}
 
-  void tessellate(Warnings& warnings) override { t_ = run_tessellate_job(jobs_.tessellate, warnings); }
+  void tessellate(Warnings& warnings) override {
+    t_ = run_tessellate_job(jobs_.tessellate);
+    check_phases(*t_, jobs_.tessellate, warnings);
+  }
 
-  void mesh(const StageLine& stage, Warnings&) override {
+  void mesh(const StageLine& stage, Warnings& warnings) override {
     mesh_job_ = resolve_mesh_job(jobs_.mesh, *t_);
     mesh_job_.options.deadline = jobs_.tessellate.options.deadline;  // one guard for the whole run
     stage.show("meshing " + std::to_string(t_->regions.size()) + " regions");
-    m_ = run_mesh_3d_job(*t_, mesh_job_);
+    m_ = run_mesh_job(*t_, mesh_job_, warnings);
   }
 
   Json write_geometry(const std::filesystem::path& dir, Warnings& warnings) override {
-    Json fields = write_tessellation_3d_files(dir, *t_, jobs_.tessellate, pictures(), unit_, warnings);
-    fields.update(write_mesh_3d_files(dir, *t_, *m_, mesh_job_, warnings, pictures(), unit_));  // grains, section_z: the same
+    const Drawing drawing{.pictures = pictures(), .detail = false, .unit = unit_};
+    Json fields = write_tessellation_files(dir, *t_, jobs_.tessellate, drawing, warnings);
+    write_tessellation_viewer(dir, *t_);  // the grains as polyhedra: the sections show only a plane
+    fields.update(write_mesh_files(dir, *t_, *m_, mesh_job_, drawing, warnings));  // section_z: the same
     section_z_ = fields["section_z"].get<double>();
     mesh_fields_ = fields["mesh"];
     return fields;
@@ -67,8 +72,8 @@ class SolidCellRun final : public CellRun {
   }
 
   void print_summary(const std::filesystem::path& out, const Json& report) const override {
-    print_tessellation_3d_summary(*t_, report["seconds"]["tessellate"].get<double>());
-    print_mesh_3d_summary(mesh_fields_, m_->seconds);
+    print_tessellation_summary(*t_, report["seconds"]["tessellate"].get<double>());
+    print_mesh_summary(*m_, mesh_fields_);
     const char* cases = plan_.boundary == Boundary::mixed ? "case/"
                         : foam_.delta_T == 0.0            ? "case_xx/ ... case_xy/ (six load cases)"
                                                           : "case_xx/ ... case_xy/, case_thermal/ (seven load cases)";
@@ -119,7 +124,7 @@ class SolidCellRun final : public CellRun {
   const CellJobs<3>& jobs_;
   FoamOptions foam_;  // the plan's, the case's format decided by its size
   std::string unit_;  // the pictures' scale bars
-  Mesh3Job mesh_job_;
+  MeshJob<3> mesh_job_;
   std::optional<Tessellation3> t_;
   std::optional<GrainMesh3> m_;
   std::optional<ExportMesh<3>> e_;

@@ -4,7 +4,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/quality.hpp"
-#include "pipelines/mesh_command.hpp"
+#include "pipelines/mesh_outputs.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "view/mesh_description.hpp"

@@ -47,11 +47,12 @@ void read_shared_keys(const Config& c, Job& job, const std::string& per_grain_ke
 
 }  // namespace
 
-MeshJob read_mesh_job(const Config& c) {
+template <>
+MeshJob<2> read_mesh_job<2>(const Config& c) {
   c.check_keys(mesh_config_keys());
   for (const char* key : {"mesh.tets_per_grain", "output.section"})
     if (c.has(key)) c.fail(key, "only for 3D tessellations (tessellation.json version 2)");
-  MeshJob job;
+  MeshJob<2> job;
   read_shared_keys(c, job, "mesh.triangles_per_grain", 100.0, 2.0);
   GrainMeshOptions& o = job.options;
   // mesh.grading is the run config's name of mesh.gradient.
@@ -76,7 +77,7 @@ MeshJob read_mesh_job(const Config& c) {
   return job;
 }
 
-MeshJob resolve_mesh_job(MeshJob job, const Tessellation& t) {
+MeshJob<2> resolve_mesh_job(MeshJob<2> job, const Tessellation& t) {
   GrainMeshOptions& o = job.options;
   if (job.per_grain) {
     // Equilateral triangles of side h have area h^2 sqrt(3) / 4.
@@ -111,15 +112,15 @@ MeshJob resolve_mesh_job(MeshJob job, const Tessellation& t) {
   return job;
 }
 
-MeshJob read_mesh_job(const Config& config, const Tessellation& t) { return resolve_mesh_job(read_mesh_job(config), t); }
 
-Mesh3Job read_mesh_3d_job(const Config& c) {
+template <>
+MeshJob<3> read_mesh_job<3>(const Config& c) {
   for (const char* key : {"mesh.triangles_per_grain", "mesh.boundary_size", "mesh.junction_size", "mesh.gradient",
                           "mesh.grading", "mesh.seed", "mesh.max_iterations"})
     if (c.has(key)) c.fail(key, "not available for 3D meshes (mesh.size or mesh.tets_per_grain, mesh.threads)");
   for (const std::string& name : c.names_in("phase"))
     if (c.has("phase." + name + ".size")) c.fail("phase." + name + ".size", "not available for 3D meshes yet");
-  Mesh3Job job;
+  MeshJob<3> job;
   read_shared_keys(c, job, "mesh.tets_per_grain", 500.0, 10.0);
   job.section = c.number("output.section", job.section);
   if (!(job.section > 0.0 && job.section < 1.0))
@@ -127,7 +128,7 @@ Mesh3Job read_mesh_3d_job(const Config& c) {
   return job;
 }
 
-Mesh3Job resolve_mesh_job(Mesh3Job job, const Tessellation3& t) {
+MeshJob<3> resolve_mesh_job(MeshJob<3> job, const Tessellation3& t) {
   GrainMesh3Options& o = job.options;
   if (job.per_grain) o.size = size_for_tets_per_grain(t, *job.per_grain);
   const double tets = t.width * t.height * t.depth / regular_tet_volume(o.size);
@@ -136,5 +137,8 @@ Mesh3Job resolve_mesh_job(Mesh3Job job, const Tessellation3& t) {
                     "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");
   return job;
 }
+
+MeshJob<2> read_mesh_job(const Config& config, const Tessellation& t) { return resolve_mesh_job(read_mesh_job<2>(config), t); }
+MeshJob<3> read_mesh_job(const Config& config, const Tessellation3& t) { return resolve_mesh_job(read_mesh_job<3>(config), t); }
 
 }  // namespace grainmesh

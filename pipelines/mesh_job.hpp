@@ -17,43 +17,55 @@
 
 namespace grainmesh {
 
-// The mesh keys, read; the size per grain and per phase resolved against a tessellation
-// by resolve_mesh_job.
-struct MeshJob {
+// A cell's mesh job, per dimension D (2: plane, 3: solid): the mesh keys, read; the size
+// per grain (and, in 2D, per phase) resolved against a tessellation by resolve_mesh_job.
+template <int D>
+struct MeshJob;
+
+template <>
+struct MeshJob<2> {
   GrainMeshOptions options;
   int picture_width = 1200;  // pixels
   std::optional<double> per_grain;                          // mesh.triangles_per_grain, when no size is given
   std::string size_key;                                     // mesh.size or mesh.h, when given
   std::vector<std::pair<std::string, double>> phase_sizes;  // phase.NAME.size, by name
   ConfigOrigin origin;                                      // names the key at fault in resolve_mesh_job's errors
+
+  const Deadline& deadline() const { return options.distmesh.deadline; }
 };
 
-// Reads and checks the mesh keys (all that can be checked without the tessellation).
-// Throws ConfigError naming the key.
-MeshJob read_mesh_job(const Config& config);
-// The job for tessellation `t`: options.size from mesh.triangles_per_grain and the grains'
-// mean area, options.phase_size by the tessellation's phases; refuses (ConfigError naming
-// the key) an unknown phase and a size that asks for more than 2 kMaxMeshPoints triangles.
-MeshJob resolve_mesh_job(MeshJob job, const Tessellation& t);
-// Both at once (the mesh command's and the tests' way).
-MeshJob read_mesh_job(const Config& config, const Tessellation& t);
-
-// The mesh keys of a 3D cell, read; the size per grain resolved against a tessellation by
-// resolve_mesh_job.
-struct Mesh3Job {
+template <>
+struct MeshJob<3> {
   GrainMesh3Options options;
   int picture_width = 1200;  // pixels
   double section = 0.5;      // mesh.png: the section's height, a fraction of the depth
   std::optional<double> per_grain;  // mesh.tets_per_grain, when no size is given
   std::string size_key;             // mesh.size or mesh.h, when given
   ConfigOrigin origin;              // names the key at fault in resolve_mesh_job's errors
+
+  const Deadline& deadline() const { return options.deadline; }
 };
 
-// Reads and checks the mesh keys for a 3D tessellation: mesh.size (or mesh.h) or
-// mesh.tets_per_grain (default 500), mesh.threads; the 2D-only keys refused by name.
-Mesh3Job read_mesh_3d_job(const Config& config);
-// The job for tessellation `t`: options.size from mesh.tets_per_grain; refuses (ConfigError
-// naming the key) a size that asks for more than 2e7 tetrahedra.
-Mesh3Job resolve_mesh_job(Mesh3Job job, const Tessellation3& t);
+// Reads and checks the mesh keys (all that can be checked without the tessellation): the
+// size (mesh.size or mesh.h) or elements per grain (mesh.triangles_per_grain, default
+// 100; mesh.tets_per_grain, default 500), mesh.threads; in 3D the 2D-only keys refused by
+// name. Throws ConfigError naming the key.
+template <int D>
+MeshJob<D> read_mesh_job(const Config& config);
+template <>
+MeshJob<2> read_mesh_job<2>(const Config& config);
+template <>
+MeshJob<3> read_mesh_job<3>(const Config& config);
+
+// The job for tessellation `t`: options.size from the elements per grain; in 2D
+// options.phase_size by the tessellation's phases. Refuses (ConfigError naming the key) an
+// unknown phase and a size that asks for more than 2 kMaxMeshPoints triangles or 2e7
+// tetrahedra.
+MeshJob<2> resolve_mesh_job(MeshJob<2> job, const Tessellation& t);
+MeshJob<3> resolve_mesh_job(MeshJob<3> job, const Tessellation3& t);
+
+// Both at once (the mesh command's and the tests' way).
+MeshJob<2> read_mesh_job(const Config& config, const Tessellation& t);
+MeshJob<3> read_mesh_job(const Config& config, const Tessellation3& t);
 
 }  // namespace grainmesh

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/text_file.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/output_dir.hpp"
@@ -62,6 +63,22 @@ Json write_report(const StagedOutput& out, Json report, const Warnings& warnings
 void add_time_limit(Json& report, const Deadline& deadline) {
   const double limit = deadline.limit_seconds();
   report["time_limit_seconds"] = std::isfinite(limit) ? Json(limit) : Json("none");
+}
+
+Json finish_stage(StagedOutput& staged, Json report, const Deadline& deadline, const Warnings& warnings) {
+  add_time_limit(report, deadline);
+  report["peak_memory_mib"] = peak_memory_mib();
+  Json written = write_report(staged, std::move(report), warnings);
+  staged.commit();
+  return written;
+}
+
+void print_written(const std::filesystem::path& out, const Json& report) {
+  std::string written;
+  for (const std::string& name : entry_names(out)) written += (written.empty() ? "" : ", ") + name;
+  const std::string section =
+      report.contains("section_z") ? " (section z = " + to_text(report["section_z"].get<double>()) + ")" : "";
+  std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), written.c_str(), section.c_str());
 }
 
 }  // namespace grainmesh

@@ -51,4 +51,10 @@ class Warnings {
 // Returns the report as written.
 Json write_report(const StagedOutput& out, Json report, const Warnings& warnings = {});
 
+// How a stage command (tessellate, mesh) ends: `report` with its time limit and the peak
+// memory written last into `staged`, the output committed; returns the report as written.
+Json finish_stage(StagedOutput& staged, Json report, const Deadline& deadline, const Warnings& warnings);
+// "  wrote OUT/{entries}" on stdout, with the pictures' section height when `report` has one.
+void print_written(const std::filesystem::path& out, const Json& report);
+
 }  // namespace grainmesh

@@ -32,7 +32,7 @@ void write_stress_histogram(const std::filesystem::path& file, const std::string
                             const std::vector<StressState>& cell_stress, const Tessellation& t, const ExportMesh<2>& m) {
   const int phases = static_cast<int>(t.phases.size());
   write_stress_histogram(file, load_case, von_mises_histograms(cell_stress, m.mesh, m.phase, phases, kHistogramBins),
-                         phase_names(t), "area");
+                         phase_names(t.phases), "area");
 }
 
 void write_stress_histogram(const std::filesystem::path& file, const std::string& load_case,
@@ -48,9 +48,9 @@ void write_stress_histogram(const std::filesystem::path& file, const std::string
 }
 
 
-std::vector<std::string> phase_names(const Tessellation& t) {
+std::vector<std::string> phase_names(const std::vector<Phase>& phases) {
   std::vector<std::string> names;
-  for (const Phase& p : t.phases) names.push_back(p.name);
+  for (const Phase& p : phases) names.push_back(p.name);
   return names;
 }
 

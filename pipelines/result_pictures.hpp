@@ -31,6 +31,7 @@ void write_stress_histogram(const std::filesystem::path& file, const std::string
                             std::vector<std::vector<Vec2>> histograms, const std::vector<std::string>& phase_names,
                             const std::string& of_what);
 
-std::vector<std::string> phase_names(const Tessellation& t);
+// The phases' names, in their order (the legends' and the VTU files' phase_names).
+std::vector<std::string> phase_names(const std::vector<Phase>& phases);
 
 }  // namespace grainmesh

@@ -144,12 +144,12 @@ RunPlan read_run_plan(const Config& c, bool solve) {
     c.fail("load.traction", "--solve homogenises under an imposed displacement; remove load.traction");
   const Config tess_config = c.subset(tessellate_config_keys()), mesh_config = c.subset(mesh_config_keys());
   if (dimensions == 3) {
-    const auto& jobs = s.cell.emplace<CellJobs<3>>(CellJobs<3>{read_tessellate_3d_job(tess_config), read_mesh_3d_job(mesh_config)});
+    const auto& jobs = s.cell.emplace<CellJobs<3>>(CellJobs<3>{read_tessellate_job<3>(tess_config), read_mesh_job<3>(mesh_config)});
     const Tessellation3Options& o = jobs.tessellate.options;
     s.warnings = check_load(FoamCell{foam_phases(o.phases), {o.width, o.height, o.depth}, o.periodic}, s.foam);
     s.resolved_ini = config_ini(c);
   } else {
-    const auto& jobs = s.cell.emplace<CellJobs<2>>(CellJobs<2>{read_tessellate_job(tess_config), read_mesh_job(mesh_config)});
+    const auto& jobs = s.cell.emplace<CellJobs<2>>(CellJobs<2>{read_tessellate_job<2>(tess_config), read_mesh_job<2>(mesh_config)});
     const TessellationOptions& o = jobs.tessellate.options;
     s.warnings = check_load(FoamCell{foam_phases(o.phases), {o.width, o.height, 0.0}, o.periodic}, s.foam);
     s.resolved_ini = config_ini(c, {plane_state_note(s.foam)});

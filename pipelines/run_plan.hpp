@@ -22,18 +22,11 @@ namespace grainmesh {
 // displacement.png), the default. true and false are all and none.
 enum class Pictures { none, basic, all };
 
-// The jobs of a cell's tessellation and mesh, per dimension (their keys' meaning differs).
-template <int N>
-struct CellJobs;
-template <>
-struct CellJobs<2> {
-  TessellateJob tessellate;
-  MeshJob mesh;
-};
-template <>
-struct CellJobs<3> {
-  Tessellate3Job tessellate;
-  Mesh3Job mesh;
+// The jobs of a D-dimensional cell's tessellation and mesh.
+template <int D>
+struct CellJobs {
+  TessellateJob<D> tessellate;
+  MeshJob<D> mesh;
 };
 
 struct RunPlan {

@@ -57,7 +57,7 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 }
 
 // A contiguity target missed: refused, with the range the trades reach.
-void check_contiguity(const Tessellation& t, const TessellateJob& job) {
+void check_contiguity(const Tessellation& t, const TessellateJob<2>& job) {
   const TessellationOptions& o = job.options;
   if (!o.contiguity) return;
   const double reached = t.stats.phases[o.contiguity_phase].contiguity;
@@ -115,13 +115,14 @@ void read_shared_keys(const Config& c, Job& job) {
 
 }  // namespace
 
-TessellateJob read_tessellate_job(const Config& c) {
+template <>
+TessellateJob<2> read_tessellate_job<2>(const Config& c) {
   c.check_keys(tessellate_config_keys());
   if (cell_dimensions(c) == 3)
     c.fail("domain.depth", "3D cells go through grainmesh tessellate, mesh, run, sweep and converge; export takes "
                            "2D meshes (leave domain.depth out)");
   if (c.has("output.section")) c.fail("output.section", "only for 3D cells (with domain.depth)");
-  TessellateJob job;
+  TessellateJob<2> job;
   read_shared_keys(c, job);
   TessellationOptions& o = job.options;
   const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
@@ -133,10 +134,11 @@ TessellateJob read_tessellate_job(const Config& c) {
   return job;
 }
 
-Tessellate3Job read_tessellate_3d_job(const Config& c) {
+template <>
+TessellateJob<3> read_tessellate_job<3>(const Config& c) {
   c.check_keys(tessellate_config_keys());
   refuse_2d_only(c);
-  Tessellate3Job job;
+  TessellateJob<3> job;
   read_shared_keys(c, job);
   job.section = c.number("output.section", job.section);
   if (!(job.section > 0.0 && job.section < 1.0))
@@ -144,7 +146,7 @@ Tessellate3Job read_tessellate_3d_job(const Config& c) {
   return job;
 }
 
-Tessellation run_tessellate_job(const TessellateJob& job) {
+Tessellation run_tessellate_job(const TessellateJob<2>& job) {
   Rng rng(job.seed);
   Tessellation t;
   try {
@@ -159,7 +161,7 @@ Tessellation run_tessellate_job(const TessellateJob& job) {
   return t;
 }
 
-Tessellation3 run_tessellate_job(const Tessellate3Job& job, Warnings& warnings) {
+Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
   Rng rng(job.seed);
   Tessellation3 t;
   try {
@@ -171,9 +173,17 @@ Tessellation3 run_tessellate_job(const Tessellate3Job& job, Warnings& warnings) 
                         (job.options.seeds.empty() ? "tessellation.seed" : "placing of tessellation.seeds") +
                         " or tessellation.lloyd_iterations avoids it");
   }
+  return t;
+}
+
+void check_phases(const Tessellation& t, const TessellateJob<2>& job, Warnings& warnings) {
+  check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin, job.options.matrix_phase);
+  for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
+}
+
+void check_phases(const Tessellation3& t, const TessellateJob<3>& job, Warnings& warnings) {
   check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin);
   for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
-  return t;
 }
 
 }  // namespace grainmesh

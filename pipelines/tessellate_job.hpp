@@ -16,14 +16,20 @@
 
 namespace grainmesh {
 
-struct TessellateJob {
+// A cell's tessellation job, per dimension D (2: plane, 3: solid).
+template <int D>
+struct TessellateJob;
+
+template <>
+struct TessellateJob<2> {
   TessellationOptions options;
   std::uint64_t seed = 1;
   int picture_width = 1200;  // pixels
   ConfigOrigin origin;       // names the key at fault in errors found while tessellating
 };
 
-struct Tessellate3Job {
+template <>
+struct TessellateJob<3> {
   Tessellation3Options options;
   std::uint64_t seed = 1;
   int picture_width = 1200;  // pixels
@@ -31,16 +37,25 @@ struct Tessellate3Job {
   ConfigOrigin origin;       // names the key at fault in errors found while tessellating
 };
 
-// Reads and checks a tessellation config. Throws ConfigError naming the key.
-TessellateJob read_tessellate_job(const Config& config);
-// The same for a 3D cell (domain.depth set; the 2D-only keys refused by name).
-Tessellate3Job read_tessellate_3d_job(const Config& config);
+// Reads and checks a tessellation config of a D-dimensional cell (3: domain.depth set,
+// the 2D-only keys refused by name). Throws ConfigError naming the key.
+template <int D>
+TessellateJob<D> read_tessellate_job(const Config& config);
+template <>
+TessellateJob<2> read_tessellate_job<2>(const Config& config);
+template <>
+TessellateJob<3> read_tessellate_job<3>(const Config& config);
 
-// Tessellates with randomness from the job's seed alone; a contiguity target out of reach
-// refused (ConfigError naming the key).
-Tessellation run_tessellate_job(const TessellateJob& job);
-// Tessellates a 3D cell (randomness from job.seed only). A phase with no grain fails
-// naming its fraction key; a fraction missed by more than 0.01 becomes a warning.
-Tessellation3 run_tessellate_job(const Tessellate3Job& job, Warnings& warnings);
+// Tessellates with randomness from the job's seed alone. A binder fraction (2D) or a
+// contiguity target (2D) out of reach is refused naming its key (ConfigError); the 3D
+// stage's own check failing is a GeometryError saying so.
+Tessellation run_tessellate_job(const TessellateJob<2>& job);
+Tessellation3 run_tessellate_job(const TessellateJob<3>& job);
+
+// What the tessellation's phases tell the user before it is meshed (phase_checks.hpp): a
+// phase left without grains refused (ConfigError naming its fraction key, through the
+// job's origin), a fraction missed by more than 0.01 a warning.
+void check_phases(const Tessellation& t, const TessellateJob<2>& job, Warnings& warnings);
+void check_phases(const Tessellation3& t, const TessellateJob<3>& job, Warnings& warnings);
 
 }  // namespace grainmesh

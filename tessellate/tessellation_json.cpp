@@ -151,9 +151,14 @@ std::string tessellation_to_json(const Tessellation& t) {
   for (const Region& r : t.regions) regions.push_back({{"grain", r.grain}, {"phase", r.phase}, {"rings", r.rings}});
   j["regions"] = regions;
   j["partners"] = {{"x", t.partners.axis[0]}, {"y", t.partners.axis[1]}};
-  j["statistics"] = statistics(t.stats, t.phases);
-  j["statistics"].update(descriptors_json(t));
+  j["statistics"] = statistics_json(t);
   return j.dump(1) + "\n";
+}
+
+Json statistics_json(const Tessellation& t) {
+  Json j = statistics(t.stats, t.phases);
+  j.update(descriptors_json(t));
+  return j;
 }
 
 Json descriptors_json(const Tessellation& t) {
@@ -248,6 +253,8 @@ std::string tessellation_to_json(const Tessellation3& t) {
   j["statistics"] = statistics_json(t.stats, t.phases);
   return j.dump(1) + "\n";
 }
+
+nlohmann::ordered_json statistics_json(const Tessellation3& t) { return statistics_json(t.stats, t.phases); }
 
 nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases) {
   auto value = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };

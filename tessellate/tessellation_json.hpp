@@ -33,6 +33,10 @@ namespace grainmesh {
 
 std::string tessellation_to_json(const Tessellation& t);
 
+// Its statistics, as tessellation.json and the reports carry them: the TessellationStats
+// fields, phases [{name, target_fraction, achieved_fraction, grains}] and the descriptors.
+nlohmann::ordered_json statistics_json(const Tessellation& t);
+
 // The WC-Co descriptors of `t` (TessellationStats), as tessellation.json's statistics and
 // the reports carry them: {contiguity, intercept_length, mean_free_path}, each
 // {PHASE: value}, null where undefined (no boundary; no other phase touching).
@@ -52,7 +56,9 @@ int tessellation_version(const std::string& text);
 // Version 2: a 3D tessellation, written and read back bit for bit.
 std::string tessellation_to_json(const Tessellation3& t);
 Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source);
-// Its statistics, as tessellation.json and the reports carry them.
+// Its statistics, as tessellation.json and the reports carry them (phases as in 2D, and
+// contiguity {PHASE: value}).
 nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases);
+nlohmann::ordered_json statistics_json(const Tessellation3& t);
 
 }  // namespace grainmesh

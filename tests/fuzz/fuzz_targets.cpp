@@ -15,8 +15,8 @@
 #include "pipelines/config_keys.hpp"
 #include "pipelines/domain_command.hpp"
 #include "pipelines/export_command.hpp"
-#include "pipelines/mesh_command.hpp"
-#include "pipelines/tessellate_command.hpp"
+#include "pipelines/mesh_job.hpp"
+#include "pipelines/tessellate_job.hpp"
 #include "tessellate/tessellation_json.hpp"
 #include "tessellate/tessellate.hpp"
 #include "tessellate/validate.hpp"
@@ -71,7 +71,7 @@ void config(std::span<const std::uint8_t> data) {
   }
   refused_or_read([&] {
     const Config c = Config::from_text(text, "fuzz.ini", overrides);
-    refused_or_read([&] { read_tessellate_job(c.subset(tessellate_config_keys())); });
+    refused_or_read([&] { read_tessellate_job<2>(c.subset(tessellate_config_keys())); });
     refused_or_read([&] { read_mesh_job(c.subset(mesh_config_keys()), small_tessellation()); });
     refused_or_read([&] { read_foam_options(c.subset(export_config_keys())); });
     refused_or_read([&] {

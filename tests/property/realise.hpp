@@ -10,8 +10,8 @@
 #include "grains/grain_mesh.hpp"
 #include "pipelines/config.hpp"
 #include "pipelines/config_keys.hpp"
-#include "pipelines/mesh_command.hpp"
-#include "pipelines/tessellate_command.hpp"
+#include "pipelines/mesh_job.hpp"
+#include "pipelines/tessellate_job.hpp"
 #include "tessellate/validate.hpp"
 
 namespace grainmesh::test {
@@ -24,11 +24,11 @@ struct Realised {
 // Tessellates and meshes `ini`; the readers' and stages' errors propagate.
 inline Realised realise(const std::string& ini) {
   const Config c = Config::from_text(ini, "realisation.ini");
-  const TessellateJob job = read_tessellate_job(c.subset(tessellate_config_keys()));
+  const TessellateJob<2> job = read_tessellate_job<2>(c.subset(tessellate_config_keys()));
   Realised r;
   r.tessellation = run_tessellate_job(job);
   validate(r.tessellation);
-  const MeshJob mesh_job = read_mesh_job(c.subset(mesh_config_keys()), r.tessellation);
+  const MeshJob<2> mesh_job = read_mesh_job(c.subset(mesh_config_keys()), r.tessellation);
   r.mesh = mesh_tessellation(r.tessellation, mesh_job.options);
   return r;
 }

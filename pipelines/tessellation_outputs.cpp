@@ -1,0 +1,100 @@
+#include "pipelines/tessellation_outputs.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "pipelines/result_pictures.hpp"
+#include "tessellate/tessellation_json.hpp"
+#include "view/picture.hpp"
+#include "view/section.hpp"
+#include "view/vtu.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// The fields both dimensions give: the phases at the top, the rest of the statistics
+// (tessellation.json's) beside them.
+template <class T>
+Json cell_fields(const T& t, std::uint64_t seed) {
+  Json statistics = statistics_json(t);
+  Json phases = std::move(statistics["phases"]);
+  statistics.erase("phases");
+  return {{"seed", seed}, {"periodic", t.periodic}, {"grains", t.stats.grains}, {"phases", phases},
+          {"statistics", statistics}, {"vertices", t.vertices.size()}, {"regions", t.regions.size()}};
+}
+
+// The phases and their targets, under the summary line.
+template <class T>
+void print_phases(const T& t) {
+  for (std::size_t p = 0; p < t.phases.size(); ++p)
+    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)\n", t.phases[p].name.c_str(),
+                t.stats.phases[p].target_fraction, t.stats.phases[p].achieved_fraction, t.stats.phases[p].grains);
+}
+
+}  // namespace
+
+Json write_tessellation_files(const std::filesystem::path& dir, const Tessellation& t, const TessellateJob<2>& job,
+                              const Drawing& drawing, Warnings&) {
+  write_text_file(dir / "tessellation.json", tessellation_to_json(t));
+  if (drawing.pictures)
+    write_tessellation_png(dir / "tessellation.png", t,
+                           {.width_px = job.picture_width, .legend = phase_names(t.phases), .scale_bar = true,
+                            .length_unit = drawing.unit});
+  Json fields{{"dimensions", 2}, {"width", t.width}, {"height", t.height}};
+  fields.update(cell_fields(t, job.seed));
+  fields["edges"] = t.edges.size();
+  return fields;
+}
+
+Json write_tessellation_files(const std::filesystem::path& dir, const Tessellation3& t, const TessellateJob<3>& job,
+                              const Drawing& drawing, Warnings& warnings) {
+  write_text_file(dir / "tessellation.json", tessellation_to_json(t));
+  const double z = section_height(t, job.section * t.depth);
+  if (drawing.pictures) {
+    try {
+      const Section section = tessellation_section(t, z);
+      write_mesh_png(dir / "tessellation.png", section.cells,
+                     {.width_px = job.picture_width, .fill_by = section.phase, .outline_by = section.grain,
+                      .legend = phase_names(t.phases), .scale_bar = true, .length_unit = drawing.unit});
+    } catch (const GeometryError& e) {
+      // A picture is no reason to fail a run.
+      warnings.add("tessellation.png not drawn: the section z = " + to_text(z) + " could not be drawn (" + e.what() +
+                   "); another output.section may be");
+    }
+  }
+  Json fields{{"dimensions", 3}, {"width", t.width}, {"height", t.height}, {"depth", t.depth}};
+  fields.update(cell_fields(t, job.seed));
+  fields["faces"] = t.faces.size();
+  fields["section_z"] = z;
+  return fields;
+}
+
+void write_tessellation_viewer(const std::filesystem::path& dir, const Tessellation& t) {
+  write_tessellation_vtp(dir / "tessellation.vtp", t);
+}
+
+void write_tessellation_viewer(const std::filesystem::path& dir, const Tessellation3& t) {
+  write_tessellation_vtu(dir / "tessellation.vtu", t);
+}
+
+void print_tessellation_summary(const Tessellation& t, double seconds) {
+  const TessellationStats& s = t.stats;
+  std::printf("grainmesh tessellate: %d grains, %zu regions, sharpest corner %.1f deg, shortest edge %.3g (%.3f s)\n",
+              s.grains, t.regions.size(), s.sharpest_corner_deg, s.shortest_edge, seconds);
+  print_phases(t);
+}
+
+void print_tessellation_summary(const Tessellation3& t, double seconds) {
+  const Tessellation3Stats& s = t.stats;
+  std::printf("grainmesh tessellate: %d grains in 3D, %zu regions, %zu faces, sharpest dihedral %.1f deg, shortest "
+              "edge %.3g (%.3f s)\n",
+              s.grains, t.regions.size(), t.faces.size(), s.sharpest_dihedral_deg, s.shortest_edge, seconds);
+  print_phases(t);
+}
+
+}  // namespace grainmesh
