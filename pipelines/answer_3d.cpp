@@ -17,19 +17,11 @@ namespace grainmesh {
 
 namespace {
 
-std::vector<std::string> phase_names(const SolveInput<3>& in);
-
 // `stresses.CASE` of a solved state, each cell weighted by its volume; `loaded` the loaded
 // component's Voigt index (-1 none); `balanced`: the means from the virial stresses
 // (a periodic case's).
 Json state_stresses(const SolvedState<6>& s, const SolveInput<3>& in, int loaded, bool balanced) {
-  return state_stresses_json(s, in.pm.volume, in.pm.phase, phase_names(in), loaded, balanced);
-}
-
-std::vector<std::string> phase_names(const SolveInput<3>& in) {
-  std::vector<std::string> names;
-  for (const FoamPhase& p : in.e.phases) names.push_back(p.name);
-  return names;
+  return state_stresses_json(s, in.pm.volume, in.pm.phase, phase_names(in.t.phases), loaded, balanced);
 }
 
 // The pictures of a solved state (`load_case`): the section z = in.section_z, each
@@ -42,7 +34,7 @@ void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, con
   if (in.picture_width == 0) return;
   std::vector<double> cell_mises;
   for (std::size_t c = 0; c < fields.stress.size(); ++c) cell_mises.push_back(von_mises(openfoam_stress(fields.stress[c])));
-  const std::vector<std::string> names = phase_names(in);
+  const std::vector<std::string> names = phase_names(in.t.phases);
   write_stress_histogram(in.dir / ("stress_histogram" + suffix + ".png"), load_case,
                          phase_histograms(cell_mises, in.pm.volume, in.pm.phase, static_cast<int>(names.size()),
                                           kHistogramBins),
@@ -102,7 +94,7 @@ void write_periodic_results_vtu(const SolveInput<3>& in, const PeriodicHomogenis
     cases.push_back({"_thermal", &thermal->free.fields, nullptr});
     cases.push_back({"_thermal_xx", &thermal->loaded.fields, nullptr});
   }
-  write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in), cases, in.foam.convert_to_meters);
+  write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in.t.phases), cases, in.foam.convert_to_meters);
 }
 
 }  // namespace
@@ -112,7 +104,7 @@ Answer homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warni
   Answer answer;
   answer.stresses["mixed"] = state_stresses(h, in, 0, false);
   write_state_pictures(in, h.fields, "mixed", "");
-  if (in.picture_width > 0) write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in), {{"", &h.fields, nullptr}}, in.foam.convert_to_meters);
+  if (in.picture_width > 0) write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in.t.phases), {{"", &h.fields, nullptr}}, in.foam.convert_to_meters);
   Json& effective = answer.effective;
   add_mixed(h, in.dir, effective);
   if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways

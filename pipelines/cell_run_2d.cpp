@@ -78,15 +78,11 @@ class PlaneCellRun final : public CellRun {
   }
 
   void print_summary(const std::filesystem::path& out, const Json& report) const override {
-    // What is there (the pictures are optional), directories marked.
-    std::string written;
-    for (const std::string& name : entry_names(out))
-      written += (written.empty() ? "" : ", ") + name + (std::filesystem::is_directory(out / name) ? "/" : "");
     std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{%s}\n  each case's "
                 "Allrun runs checkMesh and solidDisplacementFoam\n",
                 t_->stats.grains, m_->mesh.triangles.size(), mesh_fields_["q_min"].get<double>(),
                 mesh_fields_["q_mean"].get<double>(),
-                report["seconds"]["total"].get<double>(), out.string().c_str(), written.c_str());
+                report["seconds"]["total"].get<double>(), out.string().c_str(), entry_list(out).c_str());
     if (!plan_.solve) return;
     const Json& eff = report["effective"];
     if (plan_.boundary == Boundary::mixed) {

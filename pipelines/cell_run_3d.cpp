@@ -80,17 +80,7 @@ class SolidCellRun final : public CellRun {
     std::printf("  cases: %s (%d %s cells)\n", cases, fm_.mesh.cells,
                 foam_.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
     if (plan_.solve) print_answer(report["effective"]);
-    // What is there (the pictures are optional), directories marked, case_* once.
-    std::string written;
-    bool cases_listed = false;
-    for (const std::string& name : entry_names(out)) {
-      const bool load_case = name.rfind("case_", 0) == 0;
-      if (load_case && cases_listed) continue;
-      cases_listed = cases_listed || load_case;
-      written += (written.empty() ? "" : ", ") + (load_case ? std::string("case_*") : name) +
-                 (std::filesystem::is_directory(out / name) ? "/" : "");
-    }
-    std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), written.c_str(),
+    std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), entry_list(out).c_str(),
                 pictures() ? (" (sections z = " + to_text(section_z_) + ")").c_str() : "");
   }
 

@@ -34,6 +34,20 @@ std::vector<std::string> entry_names(const fs::path& dir) {
   return names;
 }
 
+std::string entry_list(const fs::path& dir) {
+  std::string list;
+  bool cases_listed = false;
+  for (const std::string& name : entry_names(dir)) {
+    const bool load_case = name.rfind("case_", 0) == 0;
+    if (load_case && cases_listed) continue;
+    cases_listed = cases_listed || load_case;
+    std::error_code ec;
+    list += (list.empty() ? "" : ", ") + (load_case ? std::string("case_*") : name) +
+            (fs::is_directory(dir / name, ec) ? "/" : "");
+  }
+  return list;
+}
+
 bool occupied_directory(const fs::path& dir) {
   std::error_code ec;
   if (!fs::exists(dir, ec)) return false;

@@ -24,4 +24,8 @@ bool occupied_directory(const std::filesystem::path& dir);
 // The names directly inside `dir`, sorted.
 std::vector<std::string> entry_names(const std::filesystem::path& dir);
 
+// What `dir` holds as the commands print it: its entries, sorted, separated by ", ",
+// directories marked "/", the load cases (case_NAME/) listed once as case_*/.
+std::string entry_list(const std::filesystem::path& dir);
+
 }  // namespace grainmesh

@@ -57,8 +57,10 @@ Json write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, c
     PictureOptions picture{.width_px = job.picture_width, .fill_by = m.phase, .outline_by = m.grain, .legend = names,
                            .scale_bar = true, .length_unit = drawing.unit};
     write_mesh_png(dir / "mesh.png", m.mesh, picture);
-    picture.view = detail_view(t);
-    if (drawing.detail) write_mesh_png(dir / "mesh_detail.png", m.mesh, picture);
+    if (drawing.detail) {
+      picture.view = detail_view(t);
+      write_mesh_png(dir / "mesh_detail.png", m.mesh, picture);
+    }
   }
   Json mesh{{"points", m.mesh.points.size()}, {"cells", m.mesh.triangles.size()}};
   add_quality(mesh, q);

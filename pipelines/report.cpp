@@ -74,11 +74,9 @@ Json finish_stage(StagedOutput& staged, Json report, const Deadline& deadline, c
 }
 
 void print_written(const std::filesystem::path& out, const Json& report) {
-  std::string written;
-  for (const std::string& name : entry_names(out)) written += (written.empty() ? "" : ", ") + name;
   const std::string section =
       report.contains("section_z") ? " (section z = " + to_text(report["section_z"].get<double>()) + ")" : "";
-  std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), written.c_str(), section.c_str());
+  std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), entry_list(out).c_str(), section.c_str());
 }
 
 }  // namespace grainmesh
