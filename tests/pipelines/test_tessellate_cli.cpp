@@ -1,5 +1,6 @@
 // `grainmesh tessellate`, driven as a user would: outputs, reports, bad input.
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 
 #include <catch2/catch.hpp>
@@ -144,7 +145,6 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
   for (const char* f : {"mesh.vtu", "mesh.png", "mesh_detail.png"}) CHECK(fs::file_size(dir / "m" / f) > 1000);
   const auto report = nlohmann::json::parse(test::read_file(dir / "m" / "report.json"));
   CHECK(report["dimensions"] == 2);
-  CHECK(report["conforming"].get<bool>());
   CHECK(report["mesh"]["cells_per_grain_mean"].get<double>() > 20.0);
   for (const char* axis : {"x", "y"}) CHECK(report["pairs"][axis].get<int>() > 0);
 
@@ -154,6 +154,20 @@ TEST_CASE("grainmesh mesh meshes a tessellation and checks its conformity", "[cl
   INFO(ok.err);
   CHECK(ok.exit_code == 0);
   CHECK(ok.out.find("conforms") != std::string::npos);
+  // Its measured figures: grain areas as the tessellation's, every periodic node on its
+  // partner's image exactly, and as many pairs as the mesh reported.
+  {
+    const auto at = ok.out.find("grain areas within ");
+    REQUIRE(at != std::string::npos);
+    double area_error = 1.0, pair_mismatch = 1.0;
+    std::size_t pairs_x = 0, pairs_y = 0;
+    REQUIRE(std::sscanf(ok.out.c_str() + at, "grain areas within %lf, %zu + %zu periodic node pairs within %lf",
+                        &area_error, &pairs_x, &pairs_y, &pair_mismatch) == 4);
+    CHECK(area_error <= 1e-9);
+    CHECK(pair_mismatch == 0.0);
+    CHECK(pairs_x == report["pairs"]["x"].get<std::size_t>());
+    CHECK(pairs_y == report["pairs"]["y"].get<std::size_t>());
+  }
   {
     VtuContents moved = read_vtu(vtu);
     TriMesh m = *as_triangles(moved.mesh);
