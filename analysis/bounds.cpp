@@ -91,4 +91,15 @@ ElasticBounds elastic_bounds(const std::vector<FoamPhase>& phases, const std::ve
   return b;
 }
 
+template <std::size_t N>
+ElasticBounds mixed_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
+                           bool plane_stress) {
+  if constexpr (N == 3) return elastic_bounds(phases, fractions, plane_stress);
+  const TensorBounds<N> t = tensor_bounds<N>(phases, fractions);
+  return {.voigt = t.voigt[0][0], .reuss = t.reuss[0][0], .hs_lower = {}, .hs_upper = {}};
+}
+
+template ElasticBounds mixed_bounds<3>(const std::vector<FoamPhase>&, const std::vector<double>&, bool);
+template ElasticBounds mixed_bounds<6>(const std::vector<FoamPhase>&, const std::vector<double>&, bool);
+
 }  // namespace grainmesh

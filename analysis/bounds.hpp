@@ -47,4 +47,11 @@ struct ElasticBounds {
 ElasticBounds elastic_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
                              bool plane_stress);
 
+// The bounds on the mixed load's modulus in the dimension of N: in 2D (N = 3)
+// elastic_bounds; in 3D (N = 6), under uniaxial strain, the Voigt and Reuss tensors' C11
+// (no Hashin-Shtrikman: the load is no isotropic modulus).
+template <std::size_t N>
+ElasticBounds mixed_bounds(const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
+                           bool plane_stress = false);
+
 }  // namespace grainmesh

@@ -49,7 +49,7 @@ ModulusVerdict judge_modulus(double modulus, double voigt, double reuss, std::op
                         outside("effective.modulus", modulus, reuss, "the Reuss bound", false)})
     if (w) {
       v.inside_voigt_reuss = false;
-      v.broken.push_back(*w);
+      v.broken_voigt_reuss.push_back(*w);
     }
   if (!hs_upper || !hs_lower) return v;
   v.inside_hashin_shtrikman = true;
@@ -57,7 +57,7 @@ ModulusVerdict judge_modulus(double modulus, double voigt, double reuss, std::op
                         outside("effective.modulus", modulus, *hs_lower, "the Hashin-Shtrikman lower bound", false)})
     if (w) {
       v.inside_hashin_shtrikman = false;
-      v.broken.push_back(*w);
+      v.broken_hashin_shtrikman.push_back(*w);
     }
   return v;
 }

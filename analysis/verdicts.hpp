@@ -44,11 +44,11 @@ template <std::size_t N>
 StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBounds<N>& bounds);
 
 // The modulus of the thesis' mixed load judged against its Voigt and Reuss values (and
-// Hashin-Shtrikman's when given): the broken bounds' sentences.
+// Hashin-Shtrikman's when given): the broken bounds' sentences (outside).
 struct ModulusVerdict {
   bool inside_voigt_reuss = true;
   std::optional<bool> inside_hashin_shtrikman;
-  std::vector<std::string> broken;
+  std::vector<std::string> broken_voigt_reuss, broken_hashin_shtrikman;
 };
 ModulusVerdict judge_modulus(double modulus, double voigt, double reuss, std::optional<double> hs_lower = {},
                              std::optional<double> hs_upper = {});

@@ -102,6 +102,13 @@ double bulk_modulus(const Stiffness<N>& c) {
 }
 
 template <std::size_t N>
+std::string stiffness_name(std::size_t i, std::size_t j) {
+  // The Voigt index of component k: 1, 2, 6 in 2D.
+  const auto index = [](std::size_t k) { return N == 3 ? "126"[k] : static_cast<char>('1' + k); };
+  return {'C', index(i), index(j)};
+}
+
+template <std::size_t N>
 double shear_modulus(const Stiffness<N>& c) {
   if constexpr (N == 3) return 0.5 * c[2][2] + 0.125 * (c[0][0] + c[1][1] - c[0][1] - c[1][0]);
   return (c[0][0] + c[1][1] + c[2][2] - (c[0][1] + c[0][2] + c[1][2]) + 3.0 * (c[3][3] + c[4][4] + c[5][5])) / 15.0;
@@ -109,6 +116,7 @@ double shear_modulus(const Stiffness<N>& c) {
 
 #define GRAINMESH_VOIGT(N)                                                                     \
   template const std::array<const char*, N>& voigt_names<N>();                                \
+  template std::string stiffness_name<N>(std::size_t, std::size_t);                          \
   template double largest_entry<N>(const Stiffness<N>&);                                      \
   template Stiffness<N> inverse<N>(const Stiffness<N>&);                                      \
   template bool semidefinite_order<N>(const Stiffness<N>&, const Stiffness<N>&, double);      \

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 
 namespace grainmesh {
 
@@ -25,6 +26,11 @@ constexpr std::size_t voigt_dimensions() {
 // yz, xz, xy (N = 6); the names of load cases, report fields and engineering constants.
 template <std::size_t N>
 const std::array<const char*, N>& voigt_names();
+
+// The name of stiffness entry (i, j) by its Voigt indices, 1-based: C11, C12, C66 in 2D
+// (xx, yy, xy are 1, 2, 6), C11 to C66 in 3D.
+template <std::size_t N>
+std::string stiffness_name(std::size_t i, std::size_t j);
 
 // The index of Voigt-N component k among the six of the 3D tensor (xx yy zz yz xz xy):
 // 2D's xx, yy, xy are 0, 1, 5.

@@ -5,17 +5,23 @@
 // differs between a plane and a solid cell is here: its types and its kernels.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "pipelines/answer.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/run_plan.hpp"
+#include "pipelines/solve_cell.hpp"
 #include "pipelines/stage_line.hpp"
 
 namespace grainmesh {
+
+// The seconds of the run's stages that its summary shows.
+struct RunSeconds {
+  double tessellate = 0.0, total = 0.0;
+};
 
 class CellRun {
  public:
@@ -33,15 +39,18 @@ class CellRun {
   virtual std::vector<std::string> write_cases(const std::filesystem::path& dir) = 0;
   // report.json's fields on the cases once written (case_format, case_cells, ...).
   virtual Json case_fields() const = 0;
+  // The cells the cases are solved on (a convergence study's measure of refinement).
+  virtual std::size_t solved_cells() const = 0;
   // The stage line while solving.
   virtual std::string solving() const = 0;
   // Solves the cases in `dir` and homogenises; what is doubtful into `warnings`. Throws
   // SolveError when a solve fails.
-  virtual Answer solve(const std::filesystem::path& dir, const StagedOutput& staged,
-                       std::vector<std::string>& warnings) = 0;
-  // The run's lines on stdout (what was made and written, and the answer when solved),
-  // but for the warnings' count.
-  virtual void print_summary(const std::filesystem::path& out, const Json& report) const = 0;
+  virtual RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
+                          std::vector<std::string>& warnings) = 0;
+  // The run's lines on stdout (what was made and written into `out`, and `answer` when
+  // solved), but for the warnings' count.
+  virtual void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,
+                             const RunAnswer* answer) const = 0;
 };
 
 std::unique_ptr<CellRun> make_cell_run(const RunPlan& plan, const CellJobs<2>& jobs);

@@ -6,6 +6,7 @@
 #include "export/foam_case.hpp"
 #include "export/foam_load.hpp"
 #include "export/polymesh.hpp"
+#include "pipelines/answer_summary.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/run_cases.hpp"
@@ -70,39 +71,23 @@ class PlaneCellRun final : public CellRun {
 
   std::string solving() const override { return "solving with solidDisplacementFoam"; }
 
-  Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
+  std::size_t solved_cells() const override { return e_->mesh.cells(); }
+
+  RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
+                  std::vector<std::string>& warnings) override {
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
                            .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_};
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
-  void print_summary(const std::filesystem::path& out, const Json& report) const override {
+  void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,
+                     const RunAnswer* answer) const override {
     std::printf("grainmesh run: %d grains, %zu cells (q_min %.3f, q_mean %.3f), %.2f s\n  wrote %s/{%s}\n  each case's "
                 "Allrun runs checkMesh and solidDisplacementFoam\n",
                 t_->stats.grains, m_->mesh.triangles.size(), mesh_fields_["q_min"].get<double>(),
-                mesh_fields_["q_mean"].get<double>(),
-                report["seconds"]["total"].get<double>(), out.string().c_str(), entry_list(out).c_str());
-    if (!plan_.solve) return;
-    const Json& eff = report["effective"];
-    if (plan_.boundary == Boundary::mixed) {
-      std::printf("  solved: effective modulus %.4g Pa", eff["modulus"].get<double>());
-      if (eff.contains("reuss"))
-        std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
-      std::printf(", %d corrections\n", eff["corrections"].get<int>());
-      return;
-    }
-    const Json& C = eff["stiffness"];
-    std::printf("  solved: effective stiffness C11 %.4g, C22 %.4g, C12 %.4g, C66 %.4g Pa (%zu load cases, at most %d "
-                "corrections)\n",
-                C["C11"].get<double>(), C["C22"].get<double>(), C["C12"].get<double>(), C["C66"].get<double>(),
-                eff["load_cases"].size(), eff["corrections"].get<int>());
-    if (foam_.delta_T == 0.0) return;
-    const Json& a = eff["thermal_expansion"];
-    std::printf("  thermal (%s): free in-plane expansion %.4g, %.4g 1/K (xx, yy)%s; residual stresses in report.json "
-                "(stresses.thermal)\n",
-                foam_.plane_stress ? "plane stress" : "plane strain", a["xx"].get<double>(), a["yy"].get<double>(),
-                foam_.plane_stress ? "" : " (held out of plane: not a 3D expansion, see docs/run.md)");
+                mesh_fields_["q_mean"].get<double>(), seconds.total, out.string().c_str(), entry_list(out).c_str());
+    if (answer != nullptr) print_answer(std::get<CellAnswer<2>>(*answer));
   }
 
  private:

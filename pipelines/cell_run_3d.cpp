@@ -5,7 +5,7 @@
 #include "common/format.hpp"
 #include "export/foam_case_3d.hpp"
 #include "export/foam_load.hpp"
-#include "pipelines/answer.hpp"
+#include "pipelines/answer_summary.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/mesh_outputs.hpp"
@@ -63,7 +63,10 @@ class SolidCellRun final : public CellRun {
                                              : "solving with solidDisplacementFoam (" + std::to_string(cases()) + " cases)";
   }
 
-  Answer solve(const std::filesystem::path& dir, const StagedOutput& staged, std::vector<std::string>& warnings) override {
+  std::size_t solved_cells() const override { return static_cast<std::size_t>(fm_.mesh.cells); }
+
+  RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
+                  std::vector<std::string>& warnings) override {
     const SolveInput<3> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = fm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline,
                            .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
@@ -71,15 +74,16 @@ class SolidCellRun final : public CellRun {
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
-  void print_summary(const std::filesystem::path& out, const Json& report) const override {
-    print_tessellation_summary(*t_, report["seconds"]["tessellate"].get<double>());
+  void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,
+                     const RunAnswer* answer) const override {
+    print_tessellation_summary(*t_, seconds.tessellate);
     print_mesh_summary(*m_, mesh_fields_);
     const char* cases = plan_.boundary == Boundary::mixed ? "case/"
                         : foam_.delta_T == 0.0            ? "case_xx/ ... case_xy/ (six load cases)"
                                                           : "case_xx/ ... case_xy/, case_thermal/ (seven load cases)";
     std::printf("  cases: %s (%d %s cells)\n", cases, fm_.mesh.cells,
                 foam_.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
-    if (plan_.solve) print_answer(report["effective"]);
+    if (answer != nullptr) print_answer(std::get<CellAnswer<3>>(*answer));
     std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), entry_list(out).c_str(),
                 pictures() ? (" (sections z = " + to_text(section_z_) + ")").c_str() : "");
   }
@@ -88,27 +92,6 @@ class SolidCellRun final : public CellRun {
   bool pictures() const { return plan_.pictures != Pictures::none; }
   // The periodic load cases' count: six, and the thermal one.
   int cases() const { return foam_.delta_T == 0.0 ? 6 : 7; }
-
-  void print_answer(const Json& eff) const {
-    if (plan_.boundary == Boundary::mixed) {
-      std::printf("  solved: modulus under uniaxial strain %.4g Pa", eff["modulus"].get<double>());
-      if (eff.contains("voigt"))
-        std::printf(" (Reuss %.4g, Voigt %.4g)", eff["reuss"].get<double>(), eff["voigt"].get<double>());
-      std::printf(", %d corrections\n", eff["corrections"].get<int>());
-      return;
-    }
-    const Json& C = eff["stiffness"];
-    std::printf("  solved: C11 %.4g, C22 %.4g, C33 %.4g, C12 %.4g, C44 %.4g Pa; K %.4g, G %.4g Pa; symmetric to %.1e "
-                "(6 load cases, at most %d corrections)\n",
-                C["C11"].get<double>(), C["C22"].get<double>(), C["C33"].get<double>(), C["C12"].get<double>(),
-                C["C44"].get<double>(), eff["bulk_modulus"].get<double>(), eff["shear_modulus"].get<double>(),
-                eff["symmetry_error"].get<double>(), eff["corrections"].get<int>());
-    if (!eff.contains("thermal_expansion")) return;
-    const Json& a = eff["thermal_expansion"];
-    std::printf("  thermal: free expansion %.4g, %.4g, %.4g 1/K (xx, yy, zz); residual stresses in report.json "
-                "(stresses.thermal)\n",
-                a["xx"].get<double>(), a["yy"].get<double>(), a["zz"].get<double>());
-  }
 
   const RunPlan& plan_;
   const CellJobs<3>& jobs_;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <utility>
+#include <variant>
 #include <string>
 #include <vector>
 
@@ -22,16 +24,20 @@ namespace grainmesh {
 namespace {
 
 
-// The quantities a level's report gives: the mixed modulus (and the biased area average
-// beside it), or the periodic tensor's components.
-std::vector<std::pair<std::string, double>> quantities(const Json& effective, int dimensions) {
-  if (effective.at("boundary") == "mixed")
-    return {{"modulus", effective.at("modulus").get<double>()},
-            {"volume_average_modulus", effective.at("volume_average").at("modulus").get<double>()}};
+// The quantities a level's answer gives: the mixed modulus (and the biased volume average
+// beside it), or the periodic stiffness's normal entries (the diagonal, then those off it)
+// and its shears' diagonal: C11, C22, C12, C66 in 2D.
+template <std::size_t N>
+std::vector<std::pair<std::string, double>> quantities(const Answer<N>& a) {
+  if (const auto* m = std::get_if<MixedAnswer<N>>(&a.effective))
+    return {{"modulus", m->modulus}, {"volume_average_modulus", m->volume_average_modulus}};
+  const Stiffness<N>& C = std::get<PeriodicAnswer<N>>(a.effective).verdict.stiffness;
+  constexpr std::size_t d = voigt_dimensions<N>();
   std::vector<std::pair<std::string, double>> q;
-  for (const char* c : dimensions == 3 ? std::vector<const char*>{"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}
-                             : std::vector<const char*>{"C11", "C22", "C12", "C66"})
-    q.emplace_back(c, effective.at("stiffness").at(c).get<double>());
+  for (std::size_t k = 0; k < d; ++k) q.emplace_back(stiffness_name<N>(k, k), C[k][k]);
+  for (std::size_t i = 0; i < d; ++i)
+    for (std::size_t j = i + 1; j < d; ++j) q.emplace_back(stiffness_name<N>(i, j), C[i][j]);
+  for (std::size_t k = d; k < N; ++k) q.emplace_back(stiffness_name<N>(k, k), C[k][k]);
   return q;
 }
 
@@ -68,9 +74,9 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
     const Config level = Config::from_text(ini, c.source(), {level_key(c) + "=" + std::to_string(n)});
     std::fprintf(stderr, "grainmesh converge: level %d of %d: %d %s per grain\n", k + 1, o.levels, n,
                  l.dimensions == 3 ? "tetrahedra" : "triangles");
-    Json report;  // the level's, as its run wrote it
+    RunResult run;
     try {
-      report = run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+      run = run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
     } catch (const SolveError& e) {
       // Kept for a look, as a run keeps its failed solve: the study so far as DIR.failed,
       // the message naming the log where it now is.
@@ -82,17 +88,15 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       staged.keep_as_failed();
       throw SolveError(what);
     }
-    const auto q = quantities(report.at("effective"), l.dimensions);
+    const auto q = std::visit([](const auto& a) { return quantities(a); }, *run.answer);
     if (names.empty()) {
       for (const auto& [qn, v] : q) names.push_back(qn);
       values.resize(names.size());
     }
     for (std::size_t i = 0; i < q.size(); ++i) values[i].push_back(q[i].second);
-    // The solved cells: the case's polygons (export.cells) or the mesh's triangles.
-    const Json& solved = report.contains("case_cells") ? report.at("case_cells") : report.at("mesh");
-    cells.push_back(solved.at("cells").get<double>());
+    cells.push_back(static_cast<double>(run.solved_cells));
     tpg.push_back(n);
-    seconds.push_back(report.at("seconds").at("total").get<double>());
+    seconds.push_back(run.seconds);
     levels.push_back(
         {{per_grain_name(l.dimensions), n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
   }

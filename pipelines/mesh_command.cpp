@@ -16,7 +16,7 @@
 namespace grainmesh {
 
 Tessellation read_tessellation_file(const std::filesystem::path& file) {
-  return tessellation_from_json(read_text_file(file, "tessellation file"), file.string());
+  return tessellation_from_json<2>(read_text_file(file, "tessellation file"), file.string());
 }
 
 namespace {
@@ -44,8 +44,8 @@ void mesh_cell(const T& t, const std::filesystem::path& tessellation, const Conf
 void run_mesh_command(const std::filesystem::path& tessellation, const Config& c, const std::filesystem::path& out) {
   claim_output(out, "mesh");
   const std::string text = read_text_file(tessellation, "tessellation file");
-  if (tessellation_version(text) == 2) return mesh_cell(tessellation_3d_from_json(text, tessellation.string()), tessellation, c, out);
-  mesh_cell(tessellation_from_json(text, tessellation.string()), tessellation, c, out);
+  if (tessellation_version(text) == 2) return mesh_cell(tessellation_from_json<3>(text, tessellation.string()), tessellation, c, out);
+  mesh_cell(tessellation_from_json<2>(text, tessellation.string()), tessellation, c, out);
 }
 
 void run_check_command(const std::filesystem::path& tessellation, const std::filesystem::path& mesh_file) {

@@ -1,22 +1,12 @@
 #include "pipelines/report_json.hpp"
 
-#include <algorithm>
-
-#include "common/format.hpp"
+#include <type_traits>
 
 namespace grainmesh {
 
 namespace {
 
-// The Voigt index (1-based, as Cij names it) of component k: 1, 2, 6 in 2D.
-template <std::size_t N>
-char voigt_index(std::size_t k) {
-  if constexpr (N == 3) return "126"[k];
-  return static_cast<char>('1' + k);
-}
-
-}  // namespace
-
+// {xx: .., yy: .., ...} of a tensor's Voigt components.
 template <std::size_t N>
 Json voigt_json(const std::array<double, N>& v) {
   Json out = Json::object();
@@ -24,14 +14,18 @@ Json voigt_json(const std::array<double, N>& v) {
   return out;
 }
 
+// {C11: .., C12: .., ...}: the entries i <= j of a symmetric stiffness, named by their Voigt
+// indices (1, 2, 6 in 2D; 1 to 6 in 3D), row by row.
 template <std::size_t N>
 Json stiffness_json(const Stiffness<N>& c) {
   Json out = Json::object();
   for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = i; j < N; ++j) out[std::string{'C', voigt_index<N>(i), voigt_index<N>(j)}] = c[i][j];
+    for (std::size_t j = i; j < N; ++j) out[stiffness_name<N>(i, j)] = c[i][j];
   return out;
 }
 
+// A solve: corrections, residuals, the linear solver, the result's time directory
+// (relative to `dir`), OpenFOAM's steps' seconds.
 Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
   Json json{{"corrections", r.corrections},
             {"final_residual", r.final_residual},
@@ -47,49 +41,91 @@ Json solve_json(const SolveRun& r, const std::filesystem::path& dir) {
   return json;
 }
 
-template <std::size_t N>
-void add_load_cases(const PeriodicHomogenised<N>& h, const std::filesystem::path& dir, Json& effective) {
-  Json cases = Json::array();
-  int corrections = 0;
-  for (const LoadCaseResult<N>& r : h.cases) {
-    Json c{{"name", r.load.name}, {"strain", voigt_json<N>(r.load.strain)}, {"stress", voigt_json<N>(r.stress)}};
-    if (r.load.delta_T != 0.0) c["delta_T"] = r.load.delta_T;
-    c.update(solve_json(r.run, dir));
-    cases.push_back(c);
-    corrections = std::max(corrections, r.run.corrections);
-  }
-  effective["load_cases"] = cases;
-  effective["corrections"] = corrections;
-  effective["volume_average"] = {{"stiffness", stiffness_json<N>(symmetric_part(h.volume_average_stiffness))}};
-}
-
-template <std::size_t N>
-void add_mixed(const MixedHomogenised<N>& h, const std::filesystem::path& dir, Json& effective) {
-  effective["boundary"] = "mixed";
-  effective["modulus"] = h.modulus;
-  effective["sigma_xx"] = h.sigma_xx;
-  effective["strain_xx"] = h.strain_xx;
-  effective.update(solve_json(h.run, dir));
-  Json average{{"modulus", h.volume_average_modulus}};
-  for (std::size_t k = 0; k < N; ++k) average[std::string("sigma_") + voigt_names<N>()[k]] = h.volume_average[k];
-  effective["volume_average"] = average;
-}
-
-template <std::size_t N>
-Json state_stresses_json(const SolvedState<N>& s, const std::vector<double>& weight, const std::vector<int>& phase,
-                         const std::vector<std::string>& names, int loaded, bool balanced) {
-  const std::vector<StressTensor> own = cell_stress_tensors(s);
-  const std::vector<StressTensor> virial = balanced ? cell_stress_tensors(s, true) : std::vector<StressTensor>{};
-  const int component = loaded < 0 ? -1 : static_cast<int>(tensor_index<N>(static_cast<std::size_t>(loaded)));
-  return phase_stresses_json(
-      phase_stresses(own, weight, phase, static_cast<int>(names.size()), component, balanced ? &virial : nullptr),
-      names);
-}
-
+// A distribution: mean, std, p50, p90, p99, max.
 Json distribution_json(const Distribution& d) {
   return {{"mean", d.mean}, {"std", d.std}, {"p50", d.p50}, {"p90", d.p90}, {"p99", d.p99}, {"max", d.max}};
 }
 
+// The mixed load: boundary, modulus, sigma_xx, strain_xx, its solve, volume_average
+// {modulus, sigma_xx, ... (each Voigt component)}; with bounds voigt, reuss,
+// hashin_shtrikman {lower, upper}, inside_bounds {voigt_reuss, hashin_shtrikman}.
+template <std::size_t N>
+Json mixed_json(const MixedAnswer<N>& a, const std::filesystem::path& dir) {
+  Json e{{"boundary", "mixed"}, {"modulus", a.modulus}, {"sigma_xx", a.sigma_xx}, {"strain_xx", a.strain_xx}};
+  e.update(solve_json(a.run, dir));
+  Json average{{"modulus", a.volume_average_modulus}};
+  for (std::size_t k = 0; k < N; ++k) average[std::string("sigma_") + voigt_names<N>()[k]] = a.volume_average[k];
+  e["volume_average"] = average;
+  if (!a.bounds) return e;
+  e["voigt"] = a.bounds->voigt;
+  e["reuss"] = a.bounds->reuss;
+  if (a.bounds->hs_lower) e["hashin_shtrikman"] = {{"lower", *a.bounds->hs_lower}, {"upper", *a.bounds->hs_upper}};
+  e["inside_bounds"]["voigt_reuss"] = a.verdict->inside_voigt_reuss;
+  if (a.verdict->inside_hashin_shtrikman) e["inside_bounds"]["hashin_shtrikman"] = *a.verdict->inside_hashin_shtrikman;
+  return e;
+}
+
+// The thermal expansion: thermal_expansion {xx ...} and thermal {delta_T, plane_state (2D),
+// levin, levin_difference}.
+template <std::size_t N>
+void add_thermal(const ThermalAnswer<N>& t, Json& e) {
+  e["thermal_expansion"] = voigt_json<N>(t.expansion);
+  Json thermal{{"delta_T", t.delta_T}};
+  if (!t.plane_state.empty()) thermal["plane_state"] = t.plane_state;
+  if (t.levin) {
+    thermal["levin"] = voigt_json<N>(*t.levin);
+    thermal["levin_difference"] = t.levin_difference;
+  }
+  e["thermal"] = thermal;
+}
+
+// The periodic load cases: boundary, the judged stiffness (stiffness, symmetry_error,
+// bulk_modulus, shear_modulus), volume_fractions, the bounds (voigt, reuss,
+// hashin_shtrikman {bulk_lower, bulk_upper, shear_lower, shear_upper}), bounds_tolerance,
+// inside_bounds, engineering, anisotropy, the thermal expansion, load_cases [{name,
+// strain, stress, delta_T when heated, then its solve}], corrections (the most any case
+// took), volume_average {stiffness}.
+template <std::size_t N>
+Json periodic_json(const PeriodicAnswer<N>& a, const std::filesystem::path& dir) {
+  const StiffnessVerdict<N>& v = a.verdict;
+  const TensorBounds<N>& b = a.bounds;
+  Json e{{"boundary", "periodic"},
+         {"stiffness", stiffness_json<N>(v.stiffness)},
+         {"symmetry_error", v.symmetry_error},
+         {"bulk_modulus", v.bulk_modulus},
+         {"shear_modulus", v.shear_modulus},
+         {"volume_fractions", a.fractions},
+         {"voigt", stiffness_json<N>(b.voigt)},
+         {"reuss", stiffness_json<N>(b.reuss)}};
+  if (b.bulk_upper)
+    e["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower},
+                             {"bulk_upper", *b.bulk_upper},
+                             {"shear_lower", *b.shear_lower},
+                             {"shear_upper", *b.shear_upper}};
+  e["bounds_tolerance"] = v.tolerance;
+  e["inside_bounds"]["voigt_reuss"] = v.inside_voigt_reuss;
+  if (v.inside_hashin_shtrikman) e["inside_bounds"]["hashin_shtrikman"] = *v.inside_hashin_shtrikman;
+  Json& engineering = e["engineering"] = Json::object();
+  for (const EngineeringConstants::Named& n : a.engineering.constants) engineering[n.name] = n.value;
+  Json& anisotropy = e["anisotropy"] = {{"universal", a.engineering.universal_anisotropy}};
+  if (a.engineering.normal_anisotropy) anisotropy["normal"] = *a.engineering.normal_anisotropy;
+  if (a.engineering.shear_anisotropy) anisotropy["shear"] = *a.engineering.shear_anisotropy;
+  if (a.thermal) add_thermal(*a.thermal, e);
+  Json cases = Json::array();
+  for (const SolvedLoadCase<N>& c : a.cases) {
+    Json j{{"name", c.load.name}, {"strain", voigt_json<N>(c.load.strain)}, {"stress", voigt_json<N>(c.stress)}};
+    if (c.load.delta_T != 0.0) j["delta_T"] = c.load.delta_T;
+    j.update(solve_json(c.run, dir));
+    cases.push_back(j);
+  }
+  e["load_cases"] = cases;
+  e["corrections"] = a.corrections();
+  e["volume_average"] = {{"stiffness", stiffness_json<N>(a.volume_average_stiffness)}};
+  return e;
+}
+
+// {PHASE: {volume_fraction, mean {xx, yy, zz, yz, xz, xy}, von_mises, max_principal,
+// hydrostatic, partition (when loaded)}} of one state, the phases named `names`.
 Json phase_stresses_json(const std::vector<PhaseStresses>& phases, const std::vector<std::string>& names) {
   Json out = Json::object();
   for (std::size_t p = 0; p < phases.size(); ++p) {
@@ -105,75 +141,28 @@ Json phase_stresses_json(const std::vector<PhaseStresses>& phases, const std::ve
   return out;
 }
 
+}  // namespace
+
 template <std::size_t N>
-void add_stiffness(const StiffnessVerdict<N>& v, const TensorBounds<N>& b, const std::vector<double>& fractions,
-                   Json& effective, std::vector<std::string>& warnings, const std::string& see, const std::string& why) {
-  effective["stiffness"] = stiffness_json<N>(v.stiffness);
-  effective["symmetry_error"] = v.symmetry_error;
-  effective["bulk_modulus"] = v.bulk_modulus;
-  effective["shear_modulus"] = v.shear_modulus;
-  effective["volume_fractions"] = fractions;
-  effective["voigt"] = stiffness_json<N>(b.voigt);
-  effective["reuss"] = stiffness_json<N>(b.reuss);
-  if (b.bulk_upper)
-    effective["hashin_shtrikman"] = {{"bulk_lower", *b.bulk_lower},
-                                     {"bulk_upper", *b.bulk_upper},
-                                     {"shear_lower", *b.shear_lower},
-                                     {"shear_upper", *b.shear_upper}};
-  effective["bounds_tolerance"] = v.tolerance;
-  effective["inside_bounds"]["voigt_reuss"] = v.inside_voigt_reuss;
-  if (!v.inside_voigt_reuss)
-    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
-                       "order): check the solve (" + see + ")");
-  if (v.inside_hashin_shtrikman) effective["inside_bounds"]["hashin_shtrikman"] = *v.inside_hashin_shtrikman;
-  for (const std::string& w : v.broken_hashin_shtrikman) warnings.push_back(w + " (" + why + ")");
-}
-
-void add_engineering(const EngineeringConstants& k, Json& effective) {
-  Json& e = effective["engineering"] = Json::object();
-  for (const EngineeringConstants::Named& n : k.constants) e[n.name] = n.value;
-  Json& a = effective["anisotropy"] = {{"universal", k.universal_anisotropy}};
-  if (k.normal_anisotropy) a["normal"] = *k.normal_anisotropy;
-  if (k.shear_anisotropy) a["shear"] = *k.shear_anisotropy;
-}
-
-void add_modulus_verdict(const ModulusVerdict& v, Json& effective, std::vector<std::string>& warnings,
-                         const std::string& why) {
-  effective["inside_bounds"]["voigt_reuss"] = v.inside_voigt_reuss;
-  if (v.inside_hashin_shtrikman) effective["inside_bounds"]["hashin_shtrikman"] = *v.inside_hashin_shtrikman;
-  for (const std::string& w : v.broken) warnings.push_back(w + " (" + why + ")");
+Json effective_json(const Answer<N>& a, const std::filesystem::path& dir) {
+  return std::visit(
+      [&](const auto& e) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(e)>, MixedAnswer<N>>) return mixed_json(e, dir);
+        else return periodic_json(e, dir);
+      },
+      a.effective);
 }
 
 template <std::size_t N>
-void add_levin(const std::array<double, N>& expansion, const std::array<double, N>& levin, Json& thermal,
-               std::vector<std::string>& warnings, const std::string& advice) {
-  const double d = levin_difference({expansion.begin(), expansion.end()}, {levin.begin(), levin.end()});
-  thermal["levin"] = voigt_json<N>(levin);
-  thermal["levin_difference"] = d;
-  if (d > kLevinTolerance)
-    warnings.push_back("effective.thermal_expansion differs from Levin's exact relation by " + to_text(100.0 * d, 2) +
-                       " % of its largest component: " + advice);
+Json stresses_json(const Answer<N>& a) {
+  Json out = Json::object();
+  for (const StateStresses& s : a.stresses) out[s.state] = phase_stresses_json(s.phases, a.phase_names);
+  return out;
 }
 
-template Json voigt_json<3>(const std::array<double, 3>&);
-template Json voigt_json<6>(const std::array<double, 6>&);
-template Json stiffness_json<3>(const Stiffness<3>&);
-template Json stiffness_json<6>(const Stiffness<6>&);
-template Json state_stresses_json(const SolvedState<3>&, const std::vector<double>&, const std::vector<int>&,
-                                  const std::vector<std::string>&, int, bool);
-template Json state_stresses_json(const SolvedState<6>&, const std::vector<double>&, const std::vector<int>&,
-                                  const std::vector<std::string>&, int, bool);
-template void add_load_cases(const PeriodicHomogenised<3>&, const std::filesystem::path&, Json&);
-template void add_load_cases(const PeriodicHomogenised<6>&, const std::filesystem::path&, Json&);
-template void add_mixed(const MixedHomogenised<3>&, const std::filesystem::path&, Json&);
-template void add_mixed(const MixedHomogenised<6>&, const std::filesystem::path&, Json&);
-template void add_stiffness<3>(const StiffnessVerdict<3>&, const TensorBounds<3>&, const std::vector<double>&, Json&,
-                               std::vector<std::string>&, const std::string&, const std::string&);
-template void add_stiffness<6>(const StiffnessVerdict<6>&, const TensorBounds<6>&, const std::vector<double>&, Json&,
-                               std::vector<std::string>&, const std::string&, const std::string&);
-template void add_levin<3>(const std::array<double, 3>&, const std::array<double, 3>&, Json&, std::vector<std::string>&,
-                           const std::string&);
-template void add_levin<6>(const std::array<double, 6>&, const std::array<double, 6>&, Json&, std::vector<std::string>&,
-                           const std::string&);
+template Json effective_json(const Answer<3>&, const std::filesystem::path&);
+template Json effective_json(const Answer<6>&, const std::filesystem::path&);
+template Json stresses_json(const Answer<3>&);
+template Json stresses_json(const Answer<6>&);
 
 }  // namespace grainmesh

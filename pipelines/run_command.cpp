@@ -10,6 +10,7 @@
 #include "common/memory.hpp"
 #include "pipelines/cell_run.hpp"
 #include "pipelines/output_dir.hpp"
+#include "pipelines/report_json.hpp"
 
 namespace grainmesh {
 
@@ -51,18 +52,24 @@ void add_stage_figures(Json& report, const StageLog& log, Json seconds) {
   report["peak_memory_mib"] = log.peak_mib();
 }
 
-// The solve and its answer into `report` (effective, stresses), its warnings into
+// The solve and its answer, also into `report` (effective, stresses), its warnings into
 // `warnings`. A solve that fails keeps the staged output as OUT.failed, its report saying
 // why, and throws.
-void solve_stage(CellRun& cell, const RunPlan& plan, StagedOutput& staged, const Deadline& deadline, StageLog& log,
+RunAnswer solve_stage(CellRun& cell, const RunPlan& plan, StagedOutput& staged, const Deadline& deadline, StageLog& log,
                  Json& report, Warnings& warnings) {
   std::vector<std::string> solve_warnings;
   check_case_mesh(staged.dir(), deadline, report, warnings);
   try {
-    Answer answer = cell.solve(staged.dir(), staged, solve_warnings);
-    report["effective"] = std::move(answer.effective);
-    report["effective"]["processes"] = plan.foam.processes;
-    report["stresses"] = std::move(answer.stresses);
+    RunAnswer answer = cell.solve(staged.dir(), staged, solve_warnings);
+    std::visit(
+        [&](const auto& a) {
+          report["effective"] = effective_json(a, staged.dir());
+          report["effective"]["processes"] = plan.foam.processes;
+          report["stresses"] = stresses_json(a);
+        },
+        answer);
+    for (const std::string& w : solve_warnings) warnings.add(w);
+    return answer;
   } catch (const SolveError& err) {
     // Kept for a look: the cases with the solver's logs, as OUT.failed.
     log.end("solve");
@@ -76,24 +83,23 @@ void solve_stage(CellRun& cell, const RunPlan& plan, StagedOutput& staged, const
     }
     throw;
   }
-  for (const std::string& w : solve_warnings) warnings.add(w);
 }
 
 }  // namespace
 
-Json run_run_command(const Config& config, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
+RunResult run_run_command(const Config& config, const std::filesystem::path& out, bool solve, bool quiet, bool summary) {
   const RunPlan plan = read_run_plan(config, solve);
   return run_plan(plan, out, quiet, summary);
 }
 
-Json run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet, bool summary) {
+RunResult run_plan(const RunPlan& plan, const std::filesystem::path& out, bool quiet, bool summary) {
   if (const auto* jobs = std::get_if<CellJobs<2>>(&plan.cell))
     return run_cell(*make_cell_run(plan, *jobs), plan, jobs->tessellate.options.deadline, out, quiet, summary);
   const auto& jobs = std::get<CellJobs<3>>(plan.cell);
   return run_cell(*make_cell_run(plan, jobs), plan, jobs.tessellate.options.deadline, out, quiet, summary);
 }
 
-Json run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
+RunResult run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, const std::filesystem::path& out, bool quiet,
               bool summary) {
   claim_output(out, "run");
   Warnings warnings;
@@ -130,10 +136,12 @@ Json run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, cons
   report["solved"] = plan.solve;
   add_time_limit(report, deadline);
 
+  RunResult result;
+  result.solved_cells = cell.solved_cells();
   if (plan.solve) {
     log.begin(/*with_children=*/true);
     stage.show(cell.solving());
-    solve_stage(cell, plan, staged, deadline, log, report, warnings);
+    result.answer = solve_stage(cell, plan, staged, deadline, log, report, warnings);
     log.time("solve");
     log.end("solve");
     stage.end();
@@ -142,16 +150,18 @@ Json run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline, cons
     for (const std::string& name : case_dirs) std::filesystem::remove_all(dir / name);
     report["cases"] = "dropped once solved (output.cases = answers)";
   }
-  log.seconds()["total"] = since(start);
+  result.seconds = since(start);
+  log.seconds()["total"] = result.seconds;
   add_stage_figures(report, log, log.seconds());
-  const Json written = write_report(staged, report, warnings);
+  result.report = write_report(staged, report, warnings);
   staged.commit();
   stage.end();
-  if (!summary) return written;
-  cell.print_summary(out, written);
+  if (!summary) return result;
+  cell.print_summary(out, {.tessellate = log.seconds()["tessellate"].get<double>(), .total = result.seconds},
+                     result.answer ? &*result.answer : nullptr);
   if (!warnings.all().empty())
     std::printf("  %zu warning%s (stderr and report.json)\n", warnings.all().size(), warnings.all().size() > 1 ? "s" : "");
-  return written;
+  return result;
 }
 
 }  // namespace grainmesh

@@ -174,7 +174,8 @@ Json descriptors_json(const Tessellation& t) {
   return out;
 }
 
-Tessellation tessellation_from_json(const std::string& text, const std::string& source) {
+template <>
+Tessellation tessellation_from_json<2>(const std::string& text, const std::string& source) {
   return read_tessellation<Tessellation>(text, source, 1, [](const Json& j) {
     Tessellation t;
     const Json& d = j.at("domain");
@@ -322,7 +323,8 @@ Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phas
 
 }  // namespace
 
-Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source) {
+template <>
+Tessellation3 tessellation_from_json<3>(const std::string& text, const std::string& source) {
   return read_tessellation<Tessellation3>(text, source, 2, [](const Json& j) {
     Tessellation3 t;
     const Json& d = j.at("domain");

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -47,15 +48,25 @@ nlohmann::ordered_json phases_json(const Tessellation& t);
 // The same from the phases and their statistics (of a 2D or a 3D tessellation).
 nlohmann::ordered_json phases_json(const std::vector<Phase>& phases, const std::vector<PhaseStats>& stats);
 
-// Parses and validates; errors (GeometryError) start with `source`.
-Tessellation tessellation_from_json(const std::string& text, const std::string& source);
+// The tessellation of a plane (D = 2) or solid (D = 3) cell.
+template <int D>
+using CellTessellation = std::conditional_t<D == 2, Tessellation, Tessellation3>;
+
+// Parses and validates a tessellation.json of D dimensions (version 1 in 2D, 2 in 3D,
+// read back bit for bit); errors (GeometryError) start with `source`, and one of the other
+// dimension is refused by its version.
+template <int D>
+CellTessellation<D> tessellation_from_json(const std::string& text, const std::string& source);
+template <>
+Tessellation tessellation_from_json<2>(const std::string& text, const std::string& source);
+template <>
+Tessellation3 tessellation_from_json<3>(const std::string& text, const std::string& source);
 
 // The version a tessellation.json says it is (1: 2D, 2: 3D), 0 when it says none.
 int tessellation_version(const std::string& text);
 
 // Version 2: a 3D tessellation, written and read back bit for bit.
 std::string tessellation_to_json(const Tessellation3& t);
-Tessellation3 tessellation_3d_from_json(const std::string& text, const std::string& source);
 // Its statistics, as tessellation.json and the reports carry them (phases as in 2D, and
 // contiguity {PHASE: value}).
 nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases);

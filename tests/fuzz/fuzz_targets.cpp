@@ -90,7 +90,7 @@ void config(std::span<const std::uint8_t> data) {
 void tessellation_json(std::span<const std::uint8_t> data) {
   Tessellation t;
   try {
-    t = tessellation_from_json(as_text(data), "fuzz.json");
+    t = tessellation_from_json<2>(as_text(data), "fuzz.json");
   } catch (const GeometryError&) {
     return;
   }

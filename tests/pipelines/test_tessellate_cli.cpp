@@ -37,7 +37,7 @@ TEST_CASE("every grains example tessellates and meets its phase targets", "[cli]
     CHECK(report["statistics"]["sharpest_corner_deg"].get<double>() >= 30.0);
     // What grainmesh mesh will read: it parses and validates.
     const auto path = (dir / "out" / "tessellation.json").string();
-    const Tessellation t = tessellation_from_json(test::read_file(path), path);
+    const Tessellation t = tessellation_from_json<2>(test::read_file(path), path);
     CHECK(static_cast<int>(t.grains.size()) >= report["grains"].get<int>());
     CHECK(entries(dir.path()) == 1);
   }
@@ -72,7 +72,7 @@ TEST_CASE("a contiguity target is met within 0.02 on five seeds and three target
       for (const auto& p : report["phases"])
         CHECK(std::abs(p["achieved_fraction"].get<double>() - p["target_fraction"].get<double>()) <= 0.01);
       // The tessellation as written gives the same contiguity (grainmesh mesh reads it).
-      const Tessellation t = tessellation_from_json(test::read_file(out / "tessellation.json"), "tessellation.json");
+      const Tessellation t = tessellation_from_json<2>(test::read_file(out / "tessellation.json"), "tessellation.json");
       CHECK(t.stats.phases.empty());  // statistics are computed, not read: from the descriptors here
       CHECK(phase_descriptors(t)[1].contiguity ==
             Approx(report["statistics"]["contiguity"]["Co"].get<double>()).epsilon(1e-9));

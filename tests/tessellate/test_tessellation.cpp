@@ -341,13 +341,13 @@ TEST_CASE("tessellation.json reads back bit for bit", "[tessellate]") {
   o.phase_mode = PhaseMode::binder;
   o.matrix_phase = 1;
   const Tessellation t = make(o, 9);
-  const Tessellation back = tessellation_from_json(tessellation_to_json(t), "t.json");
+  const Tessellation back = tessellation_from_json<2>(tessellation_to_json(t), "t.json");
   REQUIRE(back.vertices.size() == t.vertices.size());
   for (std::size_t v = 0; v < t.vertices.size(); ++v) CHECK(back.vertices[v] == t.vertices[v]);
   CHECK(back.regions.size() == t.regions.size());
   CHECK(back.partners.axis[0] == t.partners.axis[0]);
   CHECK(tessellation_to_json(back).find("\"regions\"") != std::string::npos);
-  CHECK_THROWS_WITH(tessellation_from_json("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
+  CHECK_THROWS_WITH(tessellation_from_json<2>("{\"format\": \"other\"}", "x.json"), Catch::Contains("x.json"));
 }
 
 TEST_CASE("tessellation.json indices must be integers within int's range", "[tessellate]") {
@@ -357,13 +357,13 @@ TEST_CASE("tessellation.json indices must be integers within int's range", "[tes
     j["edges"][0][0] = value;
     return j.dump();
   };
-  REQUIRE_NOTHROW(tessellation_from_json(with_first_edge_end(0), "t.json"));
+  REQUIRE_NOTHROW(tessellation_from_json<2>(with_first_edge_end(0), "t.json"));
   // 1e80 was undefined behaviour in the cast and 2^32 wrapped to vertex 0 (found by fuzzing).
-  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(-5e80), "t.json"),
+  CHECK_THROWS_WITH(tessellation_from_json<2>(with_first_edge_end(-5e80), "t.json"),
                     Catch::Contains("t.json") && Catch::Contains("expected an integer, found -5e+80"));
-  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(std::uint64_t{1} << 32), "t.json"),
+  CHECK_THROWS_WITH(tessellation_from_json<2>(with_first_edge_end(std::uint64_t{1} << 32), "t.json"),
                     Catch::Contains("integer 4294967296 is out of range"));
-  CHECK_THROWS_WITH(tessellation_from_json(with_first_edge_end(1.5), "t.json"),
+  CHECK_THROWS_WITH(tessellation_from_json<2>(with_first_edge_end(1.5), "t.json"),
                     Catch::Contains("expected an integer, found 1.5"));
 }
 

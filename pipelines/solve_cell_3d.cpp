@@ -1,4 +1,4 @@
-#include "pipelines/answer.hpp"
+#include "pipelines/solve_cell.hpp"
 
 #include <optional>
 #include <tuple>
@@ -8,7 +8,6 @@
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
-#include "pipelines/report_json.hpp"
 #include "pipelines/result_pictures.hpp"
 #include "view/picture.hpp"
 #include "view/section.hpp"
@@ -17,11 +16,24 @@ namespace grainmesh {
 
 namespace {
 
-// `stresses.CASE` of a solved state, each cell weighted by its volume; `loaded` the loaded
-// component's Voigt index (-1 none); `balanced`: the means from the virial stresses
-// (a periodic case's).
-Json state_stresses(const SolvedState<6>& s, const SolveInput<3>& in, int loaded, bool balanced) {
-  return state_stresses_json(s, in.pm.volume, in.pm.phase, phase_names(in.t.phases), loaded, balanced);
+// Where the 3D answer's warnings send the user.
+const AnswerAdvice kAdvice{.see = "see docs/3d.md, 3D cases and solves",
+                           .why = "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces "
+                                  "are first order in the mesh size; see docs/3d.md, 3D cases and solves",
+                           .refine = "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)"};
+
+// The phases' stresses of a solved state (`state` in report.json), each cell weighted by
+// its volume; `loaded` the loaded component's Voigt index (-1 none); `balanced`: the
+// means from the virial stresses (a periodic case's).
+StateStresses state_stresses(const std::string& state, const SolvedState<6>& s, const SolveInput<3>& in, int loaded,
+                             bool balanced) {
+  return {state, state_phase_stresses(s, in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size()), loaded,
+                                      balanced)};
+}
+
+// The fractions of the phases' volumes.
+std::vector<double> volume_fractions(const SolveInput<3>& in) {
+  return phase_volume_fractions(in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size()));
 }
 
 // The pictures of a solved state (`load_case`): the section z = in.section_z, each
@@ -62,26 +74,6 @@ void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, con
                     .length_unit = in.unit});
 }
 
-// What a thermal load adds to the answer: effective.thermal_expansion {xx ... xy} (1/K,
-// tensor components), effective.thermal {delta_T, levin, levin_difference}, the free
-// state's phase stresses as stresses.thermal (and cooled, then pulled as the xx case, as
-// stresses.thermal_xx) and its section pictures.
-// Levin's relation with the stiffness the expansion was freed with (as solved).
-ThermalResidual<6> add_thermal_answer(Answer& answer, const PeriodicHomogenised<6>& h, const SolveInput<3>& in,
-                                         std::vector<std::string>& warnings) {
-  const ThermalResidual<6> r = thermal_residual(h);
-  answer.effective["thermal_expansion"] = voigt_json<6>(r.expansion);
-  Json thermal{{"delta_T", r.delta_T}};
-  if (const auto levin = levin_expansion(in.e.phases, h.stiffness))
-    add_levin<6>(r.expansion, *levin, thermal, warnings,
-                 "refine the mesh (mesh.tets_per_grain; see docs/3d.md, 3D cases and solves)");
-  answer.effective["thermal"] = thermal;
-  answer.stresses["thermal"] = state_stresses(r.free, in, -1, true);
-  answer.stresses["thermal_xx"] = state_stresses(r.loaded, in, 0, true);
-  write_state_pictures(in, r.free.fields, "thermal", "_thermal");
-  return r;
-}
-
 // results.vtu (unless pictures are off) of the periodic cases: each mechanical case's
 // fields suffixed _NAME, the thermal residual's _thermal and, cooled then pulled, _thermal_xx.
 void write_periodic_results_vtu(const SolveInput<3>& in, const PeriodicHomogenised<6>& h,
@@ -99,48 +91,33 @@ void write_periodic_results_vtu(const SolveInput<3>& in, const PeriodicHomogenis
 
 }  // namespace
 
-Answer homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warnings) {
+CellAnswer<3> homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>& warnings) {
   const MixedHomogenised<6> h = solve_mixed(in.dir / "case", in.e, in.pm, in.foam, in.deadline, in.staged.failed_dir() / "case");
-  Answer answer;
-  answer.stresses["mixed"] = state_stresses(h, in, 0, false);
   write_state_pictures(in, h.fields, "mixed", "");
   if (in.picture_width > 0) write_results_vtu(in.dir / "results.vtu", in.pm, phase_names(in.t.phases), {{"", &h.fields, nullptr}}, in.foam.convert_to_meters);
-  Json& effective = answer.effective;
-  add_mixed(h, in.dir, effective);
-  if (in.foam.uniaxial) return answer;  // the bounds are for the cell held sideways
-  // Uniaxial strain: between the Reuss and Voigt tensors' C11 for every microstructure.
-  const TensorBounds<6> b = tensor_bounds<6>(
-      in.e.phases, phase_volume_fractions(in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size())));
-  effective["voigt"] = b.voigt[0][0];
-  effective["reuss"] = b.reuss[0][0];
-  add_modulus_verdict(judge_modulus(h.modulus, b.voigt[0][0], b.reuss[0][0]), effective, warnings,
-                      "check the solve; see docs/3d.md, 3D cases and solves");
-  return answer;
+  return {.effective = mixed_answer(h, in.e.phases, volume_fractions(in), in.foam, kAdvice, warnings),
+          .phase_names = phase_names(in.t.phases),
+          .stresses = {state_stresses("mixed", h, in, 0, false)}};
 }
 
-Answer homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings) {
+CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings) {
   const std::vector<LoadCase<6>> loads = periodic_load_cases(in.e, in.foam);
   const PeriodicHomogenised<6> h =
       solve_periodic(load_case_dirs(loads, in.dir), in.e, in.pm, in.foam, solves_side_by_side(in.foam.processes),
                      in.deadline, load_case_dirs(loads, in.staged.failed_dir()));
-  const std::vector<double> fractions =
-      phase_volume_fractions(in.pm.volume, in.pm.phase, static_cast<int>(in.e.phases.size()));
-  const TensorBounds<6> bounds = tensor_bounds<6>(in.e.phases, fractions);
-  const StiffnessVerdict<6> verdict = judge_stiffness(h.stiffness, bounds);
-  Answer answer;
-  Json& effective = answer.effective;
-  effective["boundary"] = "periodic";
-  add_stiffness<6>(verdict, bounds, fractions, effective, warnings, "see docs/3d.md, 3D cases and solves",
-                   "a finite cell is not isotropic, and the 3D cells' shears across phase interfaces are first "
-                   "order in the mesh size; see docs/3d.md, 3D cases and solves");
-  add_engineering(engineering_constants(verdict.stiffness), effective);
   std::optional<ThermalResidual<6>> thermal;
-  if (in.foam.delta_T != 0.0) thermal = add_thermal_answer(answer, h, in, warnings);
-  add_load_cases(h, in.dir, effective);
-  // The thermal case at its fixed strain is no state of its own: its free state is above.
-  for (std::size_t k = 0; k < 6; ++k) {
-    const LoadCaseResult<6>& r = h.cases[k];
-    answer.stresses[r.load.name] = state_stresses(r, in, static_cast<int>(k), true);
+  if (in.foam.delta_T != 0.0) thermal = thermal_residual(h);
+  CellAnswer<3> answer{.effective = periodic_answer(h, thermal ? &*thermal : nullptr, in.e.phases, volume_fractions(in),
+                                                    in.foam, kAdvice, warnings),
+                       .phase_names = phase_names(in.t.phases),
+                       .stresses = {}};
+  // The thermal case at its fixed strain is no state of its own: its free state is below.
+  for (std::size_t k = 0; k < 6; ++k)
+    answer.stresses.push_back(state_stresses(h.cases[k].load.name, h.cases[k], in, static_cast<int>(k), true));
+  if (thermal) {
+    answer.stresses.push_back(state_stresses("thermal", thermal->free, in, -1, true));
+    answer.stresses.push_back(state_stresses("thermal_xx", thermal->loaded, in, 0, true));
+    write_state_pictures(in, thermal->free.fields, "thermal", "_thermal");
   }
   write_state_pictures(in, h.cases[0].fields, "xx", "");
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);

@@ -1,0 +1,109 @@
+#include "analysis/answer.hpp"
+
+#include <algorithm>
+
+#include "common/format.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// The plane state of 2D cells; a 3D cell has none.
+template <std::size_t N>
+bool plane_stress(const FoamOptions& foam) {
+  return N == 3 && foam.plane_stress;
+}
+
+}  // namespace
+
+template <std::size_t N>
+int PeriodicAnswer<N>::corrections() const {
+  int most = 0;
+  for (const SolvedLoadCase<N>& c : cases) most = std::max(most, c.run.corrections);
+  return most;
+}
+
+template <std::size_t N>
+MixedAnswer<N> mixed_answer(const MixedHomogenised<N>& h, const std::vector<FoamPhase>& phases,
+                            const std::vector<double>& fractions, const FoamOptions& foam, const AnswerAdvice& advice,
+                            std::vector<std::string>& warnings) {
+  MixedAnswer<N> a{.modulus = h.modulus, .sigma_xx = h.sigma_xx, .strain_xx = h.strain_xx,
+                   .volume_average = h.volume_average, .volume_average_modulus = h.volume_average_modulus,
+                   .run = h.run, .bounds = {}, .verdict = {}};
+  if (foam.uniaxial) return a;  // the bounds are for the cell held sideways
+  const ElasticBounds& b = *(a.bounds = mixed_bounds<N>(phases, fractions, plane_stress<N>(foam)));
+  const ModulusVerdict& v = *(a.verdict = judge_modulus(h.modulus, b.voigt, b.reuss, b.hs_lower, b.hs_upper));
+  for (const std::string& w : v.broken_voigt_reuss) warnings.push_back(w + " (check the solve; " + advice.see + ")");
+  for (const std::string& w : v.broken_hashin_shtrikman) warnings.push_back(w + " (" + advice.why + ")");
+  return a;
+}
+
+namespace {
+
+template <std::size_t N>
+ThermalAnswer<N> thermal_answer(const ThermalResidual<N>& r, const Stiffness<N>& solved,
+                                const std::vector<FoamPhase>& phases, const FoamOptions& foam,
+                                const AnswerAdvice& advice, std::vector<std::string>& warnings) {
+  ThermalAnswer<N> a{.delta_T = r.delta_T, .expansion = r.expansion, .levin = {}, .levin_difference = 0.0,
+                     .plane_state = N == 3 ? plane_state(foam) : ""};
+  // Levin's relation with the stiffness the expansion was freed with (as solved).
+  a.levin = levin_expansion(phases, solved, plane_stress<N>(foam));
+  if (!a.levin) return a;
+  a.levin_difference = levin_difference({a.expansion.begin(), a.expansion.end()}, {a.levin->begin(), a.levin->end()});
+  if (a.levin_difference > kLevinTolerance)
+    warnings.push_back("effective.thermal_expansion differs from Levin's exact relation by " +
+                       to_text(100.0 * a.levin_difference, 2) + " % of its largest component: " + advice.refine);
+  return a;
+}
+
+}  // namespace
+
+template <std::size_t N>
+PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const ThermalResidual<N>* thermal,
+                                  const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
+                                  const FoamOptions& foam, const AnswerAdvice& advice,
+                                  std::vector<std::string>& warnings) {
+  PeriodicAnswer<N> a;
+  for (const LoadCaseResult<N>& c : h.cases) a.cases.push_back({c.load, c.stress, c.run});
+  a.bounds = tensor_bounds<N>(phases, fractions, plane_stress<N>(foam));
+  a.fractions = fractions;
+  a.verdict = judge_stiffness(h.stiffness, a.bounds);
+  a.engineering = engineering_constants(a.verdict.stiffness);
+  a.volume_average_stiffness = symmetric_part(h.volume_average_stiffness);
+  if (!a.verdict.inside_voigt_reuss)
+    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
+                       "order): check the solve (" + advice.see + ")");
+  for (const std::string& w : a.verdict.broken_hashin_shtrikman) warnings.push_back(w + " (" + advice.why + ")");
+  if (thermal != nullptr) a.thermal = thermal_answer(*thermal, h.stiffness, phases, foam, advice, warnings);
+  return a;
+}
+
+template <std::size_t N>
+std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const std::vector<double>& weight,
+                                                const std::vector<int>& phase, int phases, int loaded, bool balanced) {
+  const std::vector<StressTensor> own = cell_stress_tensors(s);
+  const std::vector<StressTensor> virial = balanced ? cell_stress_tensors(s, true) : std::vector<StressTensor>{};
+  const int component = loaded < 0 ? -1 : static_cast<int>(tensor_index<N>(static_cast<std::size_t>(loaded)));
+  return phase_stresses(own, weight, phase, phases, component, balanced ? &virial : nullptr);
+}
+
+template struct PeriodicAnswer<3>;
+template struct PeriodicAnswer<6>;
+template MixedAnswer<3> mixed_answer(const MixedHomogenised<3>&, const std::vector<FoamPhase>&,
+                                     const std::vector<double>&, const FoamOptions&, const AnswerAdvice&,
+                                     std::vector<std::string>&);
+template MixedAnswer<6> mixed_answer(const MixedHomogenised<6>&, const std::vector<FoamPhase>&,
+                                     const std::vector<double>&, const FoamOptions&, const AnswerAdvice&,
+                                     std::vector<std::string>&);
+template PeriodicAnswer<3> periodic_answer(const PeriodicHomogenised<3>&, const ThermalResidual<3>*,
+                                           const std::vector<FoamPhase>&, const std::vector<double>&,
+                                           const FoamOptions&, const AnswerAdvice&, std::vector<std::string>&);
+template PeriodicAnswer<6> periodic_answer(const PeriodicHomogenised<6>&, const ThermalResidual<6>*,
+                                           const std::vector<FoamPhase>&, const std::vector<double>&,
+                                           const FoamOptions&, const AnswerAdvice&, std::vector<std::string>&);
+template std::vector<PhaseStresses> state_phase_stresses(const SolvedState<3>&, const std::vector<double>&,
+                                                         const std::vector<int>&, int, int, bool);
+template std::vector<PhaseStresses> state_phase_stresses(const SolvedState<6>&, const std::vector<double>&,
+                                                         const std::vector<int>&, int, int, bool);
+
+}  // namespace grainmesh
