@@ -1,6 +1,7 @@
 #include "analysis/answer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/format.hpp"
 
@@ -79,6 +80,32 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
 }
 
 template <std::size_t N>
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe) {
+  ReferenceAnswer<N> r;
+  r.fe = fe;
+  r.stiffness = symmetric_part(fe.stiffness);
+  r.bulk_modulus = bulk_modulus(r.stiffness);
+  r.shear_modulus = shear_modulus(r.stiffness);
+  const double largest = largest_entry(r.stiffness);
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) {
+      const double ref = r.stiffness[i][j];
+      const double scale = std::abs(ref) >= 0.01 * largest ? std::abs(ref) : largest;
+      r.stiffness_error[i][j] = (a.verdict.stiffness[i][j] - ref) / scale;
+    }
+  r.bulk_error = a.verdict.bulk_modulus / r.bulk_modulus - 1.0;
+  r.shear_error = a.verdict.shear_modulus / r.shear_modulus - 1.0;
+  if (a.thermal && fe.expansion) {
+    const double scale = std::max({std::abs((*fe.expansion)[0]), std::abs((*fe.expansion)[1]),
+                                   std::abs((*fe.expansion)[voigt_dimensions<N>() - 1])});
+    std::array<double, N> e{};
+    for (std::size_t k = 0; k < N; ++k) e[k] = (a.thermal->expansion[k] - (*fe.expansion)[k]) / scale;
+    r.expansion_error = e;
+  }
+  return r;
+}
+
+template <std::size_t N>
 std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const std::vector<double>& weight,
                                                 const std::vector<int>& phase, int phases, int loaded, bool balanced) {
   const std::vector<StressTensor> own = cell_stress_tensors(s);
@@ -89,6 +116,8 @@ std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const s
 
 template struct PeriodicAnswer<3>;
 template struct PeriodicAnswer<6>;
+template ReferenceAnswer<3> reference_answer(const PeriodicAnswer<3>&, const FeHomogenised<3>&);
+template ReferenceAnswer<6> reference_answer(const PeriodicAnswer<6>&, const FeHomogenised<6>&);
 template MixedAnswer<3> mixed_answer(const MixedHomogenised<3>&, const std::vector<FoamPhase>&,
                                      const std::vector<double>&, const FoamOptions&, const AnswerAdvice&,
                                      std::vector<std::string>&);

@@ -15,6 +15,7 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/engineering.hpp"
+#include "analysis/fe_homogenise.hpp"
 #include "analysis/load_case.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/solve.hpp"
@@ -69,6 +70,21 @@ struct ThermalAnswer {
   std::string plane_state;        // 2D: plane_strain or plane_stress; empty in 3D
 };
 
+// The finite-element reference beside a periodic answer (fe_homogenise.hpp) and how far
+// the answer lies from it, relative: each stiffness entry's difference over the
+// reference's entry, or over its largest entry where the entry is below a hundredth of it
+// (couplings that vanish by symmetry); K's and G's over theirs; the expansion's over its
+// largest normal component.
+template <std::size_t N>
+struct ReferenceAnswer {
+  FeHomogenised<N> fe;
+  Stiffness<N> stiffness{};  // fe's symmetric part
+  double bulk_modulus = 0.0, shear_modulus = 0.0;
+  Stiffness<N> stiffness_error{};
+  double bulk_error = 0.0, shear_error = 0.0;
+  std::optional<std::array<double, N>> expansion_error;
+};
+
 // The periodic load cases' answer: the cases (mechanical ones, then the thermal one), the
 // stiffness judged (verdict: the symmetric part, its symmetry error, K and G, inside the
 // bounds), the bounds at the phases' `fractions`, the engineering constants, the stiffness
@@ -82,6 +98,7 @@ struct PeriodicAnswer {
   EngineeringConstants engineering;
   Stiffness<N> volume_average_stiffness{};  // symmetric part
   std::optional<ThermalAnswer<N>> thermal;
+  std::optional<ReferenceAnswer<N>> reference;  // homogenise.reference = fe
 
   // The most corrections any case took.
   int corrections() const;
@@ -118,6 +135,11 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
                                   const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
                                   const FoamOptions& foam, const AnswerAdvice& advice,
                                   std::vector<std::string>& warnings);
+
+// The finite-element reference `fe` of the cell put beside the periodic answer `a`, with
+// the answer's errors against it.
+template <std::size_t N>
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe);
 
 // The phases' stresses of a solved state (phase_stresses): each cell weighted by `weight`
 // (its area or volume) in its `phase` of `phases`; `loaded` the loaded component's index

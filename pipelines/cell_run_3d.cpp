@@ -71,7 +71,13 @@ class SolidCellRun final : public CellRun {
                            .deadline = jobs_.tessellate.options.deadline,
                            .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
                            .section_z = section_z_, .unit = unit_};
-    return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
+    if (plan_.boundary == Boundary::mixed) return homogenise_mixed(in, warnings);
+    CellAnswer<3> answer = homogenise_periodic(in, warnings);
+    if (plan_.fe_reference) {
+      auto& periodic = std::get<PeriodicAnswer<voigt_size(3)>>(answer.effective);
+      periodic.reference = reference_answer(periodic, fe_homogenise(*e_, foam_.delta_T != 0.0));
+    }
+    return answer;
   }
 
   void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,

@@ -77,6 +77,8 @@ std::vector<ConfigKey> case_keys() {
       // What a run does with it.
       {"homogenise.boundary", R, "mixed", "mixed (the thesis' load, one modulus) or periodic (load cases on cyclic pairs, the stiffness tensor)",
        R"md(`mixed` (the thesis' load, one modulus) or `periodic` (three load cases on cyclic pairs, the stiffness tensor); see docs/run.md, Homogenisation)md"},
+      {"homogenise.reference", R, "none", "periodic, --solve: fe adds a finite-element reference solve and the answer's error against it",
+       R"md(`none`, or `fe`: beside the OpenFOAM load cases, the cell is homogenised again by periodic finite elements of second order on the same mesh (6-node triangles, 10-node tetrahedra; a sparse Cholesky factorisation, CHOLMOD), independent of OpenFOAM; `report.json` adds `effective.reference` and the answer's `discretisation_error` against it. Needs `homogenise.boundary = periodic` and `--solve`; see docs/run.md, The finite-element reference)md"},
       {"load.delta_T", R, "0", "periodic: a uniform temperature change in K (e.g. -1000): thermal residual stress and expansion",
        R"md(a uniform temperature change in K (e.g. `-1000`, cooling from sintering) for the thermal residual stress: needs `homogenise.boundary = periodic` and every phase's `phase.NAME.alpha` (≥ 0); adds the load case `thermal` (2D and 3D), see docs/run.md, Thermal residual stress)md"},
       {"solve.processes", R, "1", "MPI processes for each solve (decomposePar, mpirun, reconstructPar)",

@@ -79,12 +79,33 @@ void add_thermal(const ThermalAnswer<N>& t, Json& e) {
   e["thermal"] = thermal;
 }
 
+// The finite-element reference: reference {method, stiffness, bulk_modulus, shear_modulus,
+// thermal_expansion when heated, unknowns, seconds} and the answer's
+// discretisation_error against it {stiffness {Cij}, bulk_modulus, shear_modulus,
+// thermal_expansion}, relative (ReferenceAnswer).
+template <std::size_t N>
+void add_reference(const ReferenceAnswer<N>& r, Json& e) {
+  Json ref{{"method", N == 3 ? "finite elements: 6-node triangles, periodic" : "finite elements: 10-node tetrahedra, periodic"},
+           {"stiffness", stiffness_json<N>(r.stiffness)},
+           {"bulk_modulus", r.bulk_modulus},
+           {"shear_modulus", r.shear_modulus}};
+  if (r.fe.expansion) ref["thermal_expansion"] = voigt_json<N>(*r.fe.expansion);
+  ref["unknowns"] = r.fe.unknowns;
+  ref["seconds"] = r.fe.seconds;
+  e["reference"] = ref;
+  Json error{{"stiffness", stiffness_json<N>(r.stiffness_error)},
+             {"bulk_modulus", r.bulk_error},
+             {"shear_modulus", r.shear_error}};
+  if (r.expansion_error) error["thermal_expansion"] = voigt_json<N>(*r.expansion_error);
+  e["discretisation_error"] = error;
+}
+
 // The periodic load cases: boundary, the judged stiffness (stiffness, symmetry_error,
 // bulk_modulus, shear_modulus), volume_fractions, the bounds (voigt, reuss,
 // hashin_shtrikman {bulk_lower, bulk_upper, shear_lower, shear_upper}), bounds_tolerance,
 // inside_bounds, engineering, anisotropy, the thermal expansion, load_cases [{name,
 // strain, stress, delta_T when heated, then its solve}], corrections (the most any case
-// took), volume_average {stiffness}.
+// took), volume_average {stiffness}, and the reference with the errors against it.
 template <std::size_t N>
 Json periodic_json(const PeriodicAnswer<N>& a, const std::filesystem::path& dir) {
   const StiffnessVerdict<N>& v = a.verdict;
@@ -121,6 +142,7 @@ Json periodic_json(const PeriodicAnswer<N>& a, const std::filesystem::path& dir)
   e["load_cases"] = cases;
   e["corrections"] = a.corrections();
   e["volume_average"] = {{"stiffness", stiffness_json<N>(a.volume_average_stiffness)}};
+  if (a.reference) add_reference(*a.reference, e);
   return e;
 }
 

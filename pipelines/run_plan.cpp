@@ -43,6 +43,17 @@ int read_solve_processes(const Config& c) {
   return static_cast<int>(processes);
 }
 
+// homogenise.reference: whether the finite-element reference is solved beside the answer.
+bool read_reference(const Config& c, bool solve) {
+  const std::string r = c.has("homogenise.reference") ? c.text("homogenise.reference") : "none";
+  if (r != "none" && r != "fe") c.fail("homogenise.reference", "must be none or fe, got '" + r + "'");
+  if (r == "none") return false;
+  if (read_boundary(c) != Boundary::periodic)
+    c.fail("homogenise.reference", "fe needs homogenise.boundary = periodic: the reference homogenises a periodic cell");
+  if (!solve) c.fail("homogenise.reference", "fe is solved beside the OpenFOAM load cases: it needs --solve");
+  return true;
+}
+
 void check_periodic_cell(const Config& c) {
   if (!c.flag("domain.periodic", false))
     c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
@@ -71,7 +82,8 @@ double read_delta_T(const Config& c) {
 const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
                                              "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
-                                             "homogenise.boundary", "solve.processes", "output.pictures", "output.cases"};
+                                             "homogenise.boundary", "homogenise.reference", "solve.processes", "output.pictures",
+                                             "output.cases"};
   return keys;
 }
 
@@ -156,6 +168,7 @@ RunPlan read_run_plan(const Config& c, bool solve) {
   }
   s.format_given = c.has("export.format");
   s.boundary = read_boundary(c);
+  s.fe_reference = read_reference(c, solve);
   s.pictures = read_pictures(c);
   s.keep_cases = read_keep_cases(c, solve);
   return s;

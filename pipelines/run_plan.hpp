@@ -37,6 +37,7 @@ struct RunPlan {
   FoamOptions foam;
   bool format_given = false;  // export.format given: a large case is not made binary
   Boundary boundary = Boundary::mixed;
+  bool fe_reference = false;  // homogenise.reference = fe: the finite-element reference beside the answer
   Pictures pictures = Pictures::all;
   bool solve = false;
   bool keep_cases = true;               // output.cases = keep (answers: dropped once solved)

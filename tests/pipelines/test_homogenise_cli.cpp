@@ -48,7 +48,7 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
       std::ofstream(ini) << test::laminate_config(hard, soft, normal_to_x, boundary_size);
       const fs::path periodic = ini.string() + ".periodic", mixed = ini.string() + ".mixed";
       const auto p = test::run_grainmesh({"run", ini.string(), "-o", periodic.string(), "--solve", "--set",
-                                          "homogenise.boundary=periodic"});
+                                          "homogenise.boundary=periodic", "--set", "homogenise.reference=fe"});
       INFO(p.err);
       REQUIRE(p.exit_code == 0);
       const Json e = report_of(periodic)["effective"];
@@ -61,6 +61,17 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
       for (const char* zero : {"C16", "C26"}) CHECK(std::abs(C(e, zero)) < 0.01 * C11);
       CHECK(e["symmetry_error"].get<double>() <= 1e-3);
       CHECK(e["inside_bounds"]["voigt_reuss"].get<bool>());
+      // The finite-element reference on the same mesh, which follows the layers: exact; and
+      // the error it states is the answer's own against the exact tensor.
+      const Json& ref = e["reference"]["stiffness"];
+      const Json& error = e["discretisation_error"]["stiffness"];
+      for (const auto& [name, value] : {std::pair{"C11", C11}, std::pair{"C22", C22}, std::pair{"C12", exact[2]},
+                                        std::pair{"C66", exact[3]}}) {
+        INFO(name);
+        CHECK(ref[name].get<double>() == Approx(value).epsilon(1e-9));
+        CHECK(error[name].get<double>() == Approx(C(e, name) / value - 1).margin(1e-8));
+      }
+      for (const char* zero : {"C16", "C26"}) CHECK(std::abs(ref[zero].get<double>()) < 1e-9 * C11);
       if (normal_to_x && ratio == 3.0) {
         // Under the strain e in x each layer's stress is uniform: sigma_xx = C11 e in both,
         // the layer's strain sigma_xx / M, sigma_yy = sigma_zz = lambda sigma_xx / M, von
@@ -211,6 +222,12 @@ TEST_CASE("homogenisation refuses what it cannot do in one line, leaving nothing
        "homogenise.boundary: periodic needs a periodic cell: set domain.periodic = true"},
       {{"run", "--set", "homogenise.boundary=periodic", "--set", "load.uniaxial=true"}, 2, "load.uniaxial: not with"},
       {{"run", "--set", "homogenise.boundary=periodic", "--set", "export.cyclic=false"}, 2, "export.cyclic: "},
+      {{"run", "--solve", "--set", "homogenise.boundary=periodic", "--set", "homogenise.reference=sfepy"}, 2,
+       "homogenise.reference: must be none or fe, got 'sfepy'"},
+      {{"run", "--solve", "--set", "homogenise.reference=fe"}, 2,
+       "homogenise.reference: fe needs homogenise.boundary = periodic"},
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "homogenise.reference=fe"}, 2,
+       "homogenise.reference: fe is solved beside the OpenFOAM load cases: it needs --solve"},
   };
   int k = 0;
   for (const test::Refusal& r : refusals) test::check_refused(r, dir / ("out" + std::to_string(k++)));

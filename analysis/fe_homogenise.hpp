@@ -1,0 +1,42 @@
+// A reference answer independent of OpenFOAM: periodic finite-element homogenisation on
+// the cells of the exported mesh, one contract for 2D and 3D (N the Voigt size). Quadratic
+// Lagrange elements — 6-node triangles in 2D under the cell's plane state, 10-node
+// tetrahedra in 3D — each of its phase's isotropic stiffness (isotropic_stiffness). The
+// displacement is the macroscopic strain's plus a periodic fluctuation: the nodes on the
+// cell's sides are tied to their images through the mesh's periodic pairs (a midside node
+// with the images of its edge's ends), and one node is held (a translation is free). Each
+// load is a macroscopic strain, one per Voigt component (the shears as engineering
+// strains); the thermal one a unit temperature change at zero mean strain, each phase
+// expanding freely by its free_expansion (2D; alpha in 3D). One sparse Cholesky
+// factorisation (SuiteSparse's CHOLMOD) serves every load. The effective stress is the
+// exact volume (2D: area) average over the elements, so the answer is exact for a
+// displacement quadratic within each element: laminates whose layers the mesh follows,
+// one material.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include "analysis/voigt.hpp"
+#include "export/export_mesh.hpp"
+
+namespace grainmesh {
+
+template <std::size_t N>
+struct FeHomogenised {
+  Stiffness<N> stiffness{};                        // Pa; column j from load j, per engineering strain
+  std::optional<std::array<double, N>> expansion;  // free thermal expansion, tensor components, 1/K
+  std::size_t unknowns = 0;                        // the fluctuation's, once tied and held
+  double seconds = 0.0;
+};
+
+// The periodic cell `m` homogenised (2D: triangles only, under plane strain or
+// `plane_stress`), with its thermal expansion when `thermal`. Throws GeometryError when
+// the mesh is not periodic, has a cell that is no triangle (2D) or a side point without
+// its image, and when the stiffness matrix is not positive definite (a phase without
+// stiffness, an inverted element).
+FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool thermal);
+FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal);
+
+}  // namespace grainmesh
