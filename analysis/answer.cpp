@@ -80,7 +80,8 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
 }
 
 template <std::size_t N>
-ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe) {
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe, const AnswerAdvice& advice,
+                                    std::vector<std::string>& warnings) {
   ReferenceAnswer<N> r;
   r.fe = fe;
   r.stiffness = symmetric_part(fe.stiffness);
@@ -102,6 +103,18 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
     for (std::size_t k = 0; k < N; ++k) e[k] = (a.thermal->expansion[k] - (*fe.expansion)[k]) / scale;
     r.expansion_error = e;
   }
+  // The farthest of the quantities measured on their own scale: K, G and the entries not
+  // below a hundredth of the largest.
+  std::string worst = "the bulk modulus";
+  double most = std::abs(r.bulk_error);
+  if (std::abs(r.shear_error) > most) worst = "the shear modulus", most = std::abs(r.shear_error);
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i; j < N; ++j)
+      if (std::abs(r.stiffness[i][j]) >= 0.01 * largest && std::abs(r.stiffness_error[i][j]) > most)
+        worst = stiffness_name<N>(i, j), most = std::abs(r.stiffness_error[i][j]);
+  if (most > kReferenceTolerance)
+    warnings.push_back("effective.stiffness lies up to " + to_text(100.0 * most, 2) + " % (" + worst +
+                       ") from the finite-element reference (effective.reference): refine the mesh (" + advice.see + ")");
   return r;
 }
 
@@ -116,8 +129,10 @@ std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const s
 
 template struct PeriodicAnswer<3>;
 template struct PeriodicAnswer<6>;
-template ReferenceAnswer<3> reference_answer(const PeriodicAnswer<3>&, const FeHomogenised<3>&);
-template ReferenceAnswer<6> reference_answer(const PeriodicAnswer<6>&, const FeHomogenised<6>&);
+template ReferenceAnswer<3> reference_answer(const PeriodicAnswer<3>&, const FeHomogenised<3>&, const AnswerAdvice&,
+                                             std::vector<std::string>&);
+template ReferenceAnswer<6> reference_answer(const PeriodicAnswer<6>&, const FeHomogenised<6>&, const AnswerAdvice&,
+                                             std::vector<std::string>&);
 template MixedAnswer<3> mixed_answer(const MixedHomogenised<3>&, const std::vector<FoamPhase>&,
                                      const std::vector<double>&, const FoamOptions&, const AnswerAdvice&,
                                      std::vector<std::string>&);

@@ -137,9 +137,13 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
                                   std::vector<std::string>& warnings);
 
 // The finite-element reference `fe` of the cell put beside the periodic answer `a`, with
-// the answer's errors against it.
+// the answer's errors against it; an answer more than kReferenceTolerance off it (a
+// stiffness entry of its own scale, K or G) a warning naming the farthest, ending in
+// `advice`'s see.
 template <std::size_t N>
-ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe);
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe, const AnswerAdvice& advice,
+                                    std::vector<std::string>& warnings);
+inline constexpr double kReferenceTolerance = 0.01;
 
 // The phases' stresses of a solved state (phase_stresses): each cell weighted by `weight`
 // (its area or volume) in its `phase` of `phases`; `loaded` the loaded component's index

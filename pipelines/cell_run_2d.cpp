@@ -75,16 +75,14 @@ class PlaneCellRun final : public CellRun {
 
   RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
                   std::vector<std::string>& warnings) override {
+    // The reference solves on the triangles, also when the cases have polygons.
+    std::optional<ExportMesh<2>> triangles;
+    if (plan_.fe_reference) triangles = foam_.cells == FoamOptions::Cells::polygons ? grain_export_mesh(*t_, *m_) : *e_;
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
-                           .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_};
-    if (plan_.boundary == Boundary::mixed) return homogenise_mixed(in, warnings);
-    CellAnswer<2> answer = homogenise_periodic(in, warnings);
-    if (plan_.fe_reference) {
-      auto& periodic = std::get<PeriodicAnswer<voigt_size(2)>>(answer.effective);
-      periodic.reference = reference_answer(periodic, fe_homogenise(grain_export_mesh(*t_, *m_), foam_.plane_stress, foam_.delta_T != 0.0));
-    }
-    return answer;
+                           .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_,
+                           .reference_mesh = triangles ? &*triangles : nullptr};
+    return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
   void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,

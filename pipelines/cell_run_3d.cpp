@@ -70,14 +70,9 @@ class SolidCellRun final : public CellRun {
     const SolveInput<3> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = fm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline,
                            .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
-                           .section_z = section_z_, .unit = unit_};
-    if (plan_.boundary == Boundary::mixed) return homogenise_mixed(in, warnings);
-    CellAnswer<3> answer = homogenise_periodic(in, warnings);
-    if (plan_.fe_reference) {
-      auto& periodic = std::get<PeriodicAnswer<voigt_size(3)>>(answer.effective);
-      periodic.reference = reference_answer(periodic, fe_homogenise(*e_, foam_.delta_T != 0.0));
-    }
-    return answer;
+                           .section_z = section_z_, .unit = unit_,
+                           .reference_mesh = plan_.fe_reference ? &*e_ : nullptr};  // the tetrahedra
+    return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
   void print_summary(const std::filesystem::path& out, const RunSeconds& seconds,

@@ -58,6 +58,9 @@ struct SolveInput {
   bool all_pictures = false;  // 2D only
   double section_z = 0.0;     // 3D only, mesh units
   std::string unit{};         // the pictures' length unit (length_unit_name of convert_to_meters)
+  // homogenise.reference = fe: the simplices the finite-element reference solves on (2D
+  // the triangles, also when the cases have the dual's polygons); none without it.
+  const ExportMesh<D>* reference_mesh = nullptr;
 };
 
 // The mixed (thesis) load's answer (case/): the modulus (2D: in the plane state; 3D:
@@ -72,7 +75,8 @@ CellAnswer<3> homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>
 // (case_thermal/): the effective thermal expansion with Levin's exact relation beside it
 // (more than 1 % off a warning), the free state's phase stresses (`thermal`: the residual
 // stress; `thermal_xx`: cooled, then pulled as the xx case) and its pictures. A broken
-// bound is added to `warnings`.
+// bound is added to `warnings`. With a reference mesh, the finite-element reference beside
+// the answer (reference_answer), an answer more than 1 % off it a warning.
 CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings);
 CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings);
 

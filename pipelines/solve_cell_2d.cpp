@@ -4,6 +4,7 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/check_mesh.hpp"
+#include "analysis/fe_homogenise.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
@@ -45,7 +46,7 @@ StateStresses state_stresses(const std::string& state, const SolvedState<3>& s, 
 }  // namespace
 
 CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, reference_mesh] = in;
 
   const MixedHomogenised<3> h = solve_mixed(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   if (picture_width > 0) {
@@ -60,7 +61,7 @@ CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>
 }
 
 CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, reference_mesh] = in;
 
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
   const PeriodicHomogenised<3> h =
@@ -90,6 +91,11 @@ CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::stri
   }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t.phases), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
+  if (reference_mesh != nullptr) {
+    auto& periodic = std::get<PeriodicAnswer<3>>(answer.effective);
+    periodic.reference = reference_answer(
+        periodic, fe_homogenise(*reference_mesh, foam.plane_stress, foam.delta_T != 0.0), kAdvice, warnings);
+  }
   return answer;
 }
 

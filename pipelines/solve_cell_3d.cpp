@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "analysis/bounds.hpp"
+#include "analysis/fe_homogenise.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
@@ -121,6 +122,11 @@ CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::stri
   }
   write_state_pictures(in, h.cases[0].fields, "xx", "");
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);
+  if (in.reference_mesh != nullptr) {
+    auto& periodic = std::get<PeriodicAnswer<6>>(answer.effective);
+    periodic.reference =
+        reference_answer(periodic, fe_homogenise(*in.reference_mesh, in.foam.delta_T != 0.0), kAdvice, warnings);
+  }
   return answer;
 }
 

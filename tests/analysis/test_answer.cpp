@@ -139,7 +139,39 @@ void check_mixed() {
   CHECK(warnings.empty());
 }
 
+// The answer beside a finite-element reference: on it, errors zero and no warning; its
+// C11 2 % above, that error stated and one warning naming it.
+template <std::size_t N>
+void check_reference() {
+  const Stiffness<N> c = inside_stiffness<N>();
+  FeHomogenised<N> fe;
+  fe.stiffness = c;
+  std::vector<std::string> warnings;
+  const PeriodicAnswer<N> same = periodic_answer<N>(cases_of<N>(c, 0.0), nullptr, kPhases, kFractions, FoamOptions{},
+                                                    kAdvice, warnings);
+  const ReferenceAnswer<N> r = reference_answer(same, fe, kAdvice, warnings);
+  CHECK(warnings.empty());
+  CHECK(std::abs(r.bulk_error) < 1e-12);
+  CHECK(std::abs(r.stiffness_error[0][0]) < 1e-12);
+  Stiffness<N> off = c;
+  off[0][0] *= 1.02;
+  const PeriodicAnswer<N> a = periodic_answer<N>(cases_of<N>(off, 0.0), nullptr, kPhases, kFractions, FoamOptions{},
+                                                 kAdvice, warnings);
+  REQUIRE(warnings.empty());  // still inside the bounds
+  const ReferenceAnswer<N> e = reference_answer(a, fe, kAdvice, warnings);
+  CHECK(e.stiffness_error[0][0] == Approx(0.02).epsilon(1e-9));
+  CHECK(std::abs(e.stiffness_error[0][1]) < 1e-12);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("up to 2 % (C11)") != std::string::npos);
+  CHECK(ends_with(warnings[0], "(SEE)"));
+}
+
 }  // namespace
+
+TEST_CASE("the answer beside its finite-element reference: the errors, more than 1 % a warning", "[analysis][answer]") {
+  check_reference<3>();
+  check_reference<6>();
+}
 
 TEST_CASE("the periodic answer in 2D: verdicts, Levin's relation, warnings with their advice", "[analysis][answer]") {
   check_periodic<3>();
