@@ -69,6 +69,15 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
     add("reuss_C11", e["reuss"]["C11"]);
     if (e.contains("hashin_shtrikman"))
       for (const char* b : {"bulk_lower", "bulk_upper", "shear_lower", "shear_upper"}) add(std::string("hs_") + b, e["hashin_shtrikman"][b]);
+    if (e.contains("reference")) {
+      // The finite-element reference (homogenise.reference = fe) and the answer's relative
+      // error against it, per realisation.
+      for (const auto& [c, value] : e["reference"]["stiffness"].items()) add("reference_" + c, value);
+      for (const char* m : {"bulk_modulus", "shear_modulus"}) add(std::string("reference_") + m, e["reference"][m]);
+      for (const auto& [c, value] : e["discretisation_error"]["stiffness"].items()) add("discretisation_error_" + c, value);
+      for (const char* m : {"bulk_modulus", "shear_modulus"})
+        add(std::string("discretisation_error_") + m, e["discretisation_error"][m]);
+    }
     return;
   }
   pr.modulus.push_back(e["modulus"].get<double>());

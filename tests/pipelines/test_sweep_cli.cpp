@@ -175,7 +175,7 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "2", "--solve", "--set",
                                 "homogenise.boundary=periodic", "--set", "output.pictures=false", "--set",
                                 "load.delta_T=-1000", "--set", "phase.particulate.alpha=5e-6", "--set",
-                                "phase.matrix.alpha=14e-6"});
+                                "phase.matrix.alpha=14e-6", "--set", "homogenise.reference=fe"});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const auto c = run_grainmesh({"sweep", "--collect", out});
@@ -218,6 +218,18 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   CHECK(value("C11_std") == Approx(std::sqrt(ss / 2)).epsilon(1e-6));
   CHECK(value("C11_ci95") == Approx(4.303 * std::sqrt(ss / 2) / std::sqrt(3.0)).epsilon(1e-6));
   CHECK(value("runs") == 3);
+  // The finite-element reference and the answer's error against it, summarised the same way:
+  // the mean error is the mean of the runs' own.
+  std::vector<double> error;
+  for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
+    error.push_back(nlohmann::json::parse(test::read_file(dir / "out" / run / "report.json"))["effective"]
+                        ["discretisation_error"]["stiffness"]["C11"].get<double>());
+  CHECK(value("discretisation_error_C11_mean") == Approx((error[0] + error[1] + error[2]) / 3).epsilon(1e-9));
+  CHECK(std::abs(value("discretisation_error_C11_mean")) < 0.02);
+  CHECK(value("reference_C11_mean") == Approx(value("C11_mean")).epsilon(0.02));
+  for (const char* column : {"reference_C66_ci95", "reference_shear_modulus_mean", "discretisation_error_C12_std",
+                             "discretisation_error_bulk_modulus_mean"})
+    CHECK(std::find(names.begin(), names.end(), column) != names.end());
   // The WC-Co descriptors of every phase, summarised the same way.
   std::vector<double> contiguity;
   for (const char* run : {"grains=20-r00", "grains=20-r01", "grains=20-r02"})
