@@ -112,6 +112,8 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
     for (std::size_t j = i; j < N; ++j)
       if (std::abs(r.stiffness[i][j]) >= 0.01 * largest && std::abs(r.stiffness_error[i][j]) > most)
         worst = stiffness_name<N>(i, j), most = std::abs(r.stiffness_error[i][j]);
+  r.farthest = worst;
+  r.farthest_error = most;
   if (most > kReferenceTolerance)
     warnings.push_back("effective.stiffness lies up to " + to_text(100.0 * most, 2) + " % (" + worst +
                        ") from the finite-element reference (effective.reference): refine the mesh (" + advice.see + ")");

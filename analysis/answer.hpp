@@ -83,6 +83,9 @@ struct ReferenceAnswer {
   Stiffness<N> stiffness_error{};
   double bulk_error = 0.0, shear_error = 0.0;
   std::optional<std::array<double, N>> expansion_error;
+  // The farthest of K, G and the entries of their own scale: its name and |error|.
+  std::string farthest;
+  double farthest_error = 0.0;
 };
 
 // The periodic load cases' answer: the cases (mechanical ones, then the thermal one), the
