@@ -1,6 +1,8 @@
 // grainmesh: synthetic microstructures to solver-ready meshes.
 // main() is the only place that catches errors: it prints one line and maps the error
 // family to the exit code documented in docs/errors.md.
+#include <signal.h>
+
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -14,6 +16,20 @@
 using namespace grainmesh;
 
 namespace {
+
+// SIGINT and SIGTERM blocked before any shared library's constructor runs: OpenBLAS (under
+// CHOLMOD) starts its threads in one, and a thread that does not block them could take the
+// signal with its default action and kill the process uncleaned. install_interrupt_handling
+// blocks them too and waits for them on its own thread.
+void block_interrupts_early(int, char**, char**) {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+}
+__attribute__((section(".preinit_array"), used)) void (*const kBlockInterruptsEarly)(int, char**, char**) =
+    block_interrupts_early;
 
 constexpr const char* kUsage =
     "usage: grainmesh <command> [options]\n"
