@@ -2,8 +2,9 @@
 // install_interrupt_handling() before any other thread starts: the three signals are
 // blocked in every thread, and one thread of its own waits for them. When one comes, that
 // thread stops the registered children (TetGen and OpenFOAM's programs at once, a sweep's
-// runs given a moment to clean up after themselves), removes the registered temporary
-// paths (staging directories, TetGen's scratch), prints one line - "grainmesh:
+// runs given a moment to clean up after themselves), holds the process's other threads
+// still, removes the registered temporary paths (staging directories, TetGen's scratch)
+// while nothing can write into them, prints one line - "grainmesh:
 // interrupted; " and the run's own words - and exits with 128 + the signal.
 #pragma once
 
@@ -46,18 +47,23 @@ class TemporaryPath {
   int id_ = -1;
 };
 
-// A child process stopped when the run is interrupted, for as long as the object lives:
-// with SIGKILL, or (`graceful`: mpirun, which must take its ranks with it, and a sweep's
-// runs, which remove their own staging directories) with SIGTERM and, after a few
-// seconds, SIGKILL.
-class ChildRegistration {
+// A child process, forked and registered in one step (an interrupt waits for the step to
+// end, so it never misses a child just started), stopped when the run is interrupted for
+// as long as the object lives: with SIGKILL, or (`graceful`: mpirun, which must take its
+// ranks with it, and a sweep's runs, which remove their own staging directories) with
+// SIGTERM and, after a few seconds, SIGKILL. In the child pid() is 0 and the object holds
+// nothing: the child must exec, or call install_interrupt_handling before it registers
+// anything. pid() is -1 when fork failed.
+class RegisteredChild {
  public:
-  explicit ChildRegistration(pid_t pid, bool graceful = false);
-  ~ChildRegistration();
-  ChildRegistration(const ChildRegistration&) = delete;
-  ChildRegistration& operator=(const ChildRegistration&) = delete;
+  explicit RegisteredChild(bool graceful = false);
+  ~RegisteredChild();
+  RegisteredChild(const RegisteredChild&) = delete;
+  RegisteredChild& operator=(const RegisteredChild&) = delete;
+  pid_t pid() const { return pid_; }
 
  private:
+  pid_t pid_ = -1;
   int id_ = -1;
 };
 

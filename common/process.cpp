@@ -72,7 +72,10 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   const int in = open(log.c_str(), O_RDONLY | O_CLOEXEC);
   std::fflush(nullptr);
   const pid_t parent = getpid();
-  const pid_t pid = fork();
+  // mpirun is stopped with SIGTERM first, so that it takes the solver's ranks with it.
+  const bool graceful = argv.front() == "mpirun";
+  const RegisteredChild child(graceful);
+  const pid_t pid = child.pid();
   if (pid < 0) {
     close(out);
     if (in >= 0) close(in);
@@ -80,9 +83,6 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   }
   if (pid == 0) exec_child(parent, dir, out, args, envp);
   close(out);
-  // mpirun is stopped with SIGTERM first, so that it takes the solver's ranks with it.
-  const bool graceful = argv.front() == "mpirun";
-  const ChildRegistration registered(pid, graceful);
   // Everything the child has written since the last look, to the watcher; whether it wrote.
   std::string chunk(1 << 16, '\0');
   bool wrote = false;
@@ -128,6 +128,7 @@ int run_child(const std::vector<std::string>& argv, const std::filesystem::path&
   }
   follow();  // what it wrote last
   if (in >= 0) close(in);
+  wait_if_interrupted();  // the interrupt killed it: its caller must not act on the failure (try again, keep files)
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 

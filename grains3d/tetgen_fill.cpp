@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -65,10 +66,19 @@ std::filesystem::path keep(const std::string& text, const std::string& name) {
 }  // namespace
 
 ScratchDirectory::ScratchDirectory() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "grainmesh-tetgen-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) throw IoError("cannot create a scratch directory for TetGen in " + pattern);
-  path_ = pattern;
-  registered_ = TemporaryPath(path_);
+  // Named here, registered before it exists, then made: an interrupt at any moment finds it
+  // registered (mkdtemp would make it before its name could be registered).
+  static std::atomic<int> next{0};
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path();
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    path_ = tmp / ("grainmesh-tetgen-" + std::to_string(getpid()) + "-" + std::to_string(next++));
+    registered_ = TemporaryPath(path_);
+    std::error_code ec;
+    if (std::filesystem::create_directory(path_, ec)) return;
+    if (ec) break;
+  }
+  registered_.release();
+  throw IoError("cannot create a scratch directory for TetGen in " + tmp.string());
 }
 
 ScratchDirectory::~ScratchDirectory() {

@@ -17,7 +17,7 @@ using namespace grainmesh;
 
 namespace {
 
-// SIGINT and SIGTERM blocked before any shared library's constructor runs: OpenBLAS (under
+// SIGINT, SIGTERM and SIGHUP blocked before any shared library's constructor runs: OpenBLAS (under
 // CHOLMOD) starts its threads in one, and a thread that does not block them could take the
 // signal with its default action and kill the process uncleaned. install_interrupt_handling
 // blocks them too and waits for them on its own thread.
@@ -26,6 +26,7 @@ void block_interrupts_early(int, char**, char**) {
   sigemptyset(&set);
   sigaddset(&set, SIGINT);
   sigaddset(&set, SIGTERM);
+  sigaddset(&set, SIGHUP);
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
 }
 __attribute__((section(".preinit_array"), used)) void (*const kBlockInterruptsEarly)(int, char**, char**) =

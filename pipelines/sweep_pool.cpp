@@ -41,7 +41,7 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
   PoolResult result;
   std::map<pid_t, const SweepRun*> running;
   // On an interrupt each run gets SIGTERM and removes its own staging directory.
-  std::map<pid_t, std::unique_ptr<ChildRegistration>> registered;
+  std::map<pid_t, std::unique_ptr<RegisteredChild>> registered;
   auto progress = [&] {
     if (!terminal) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -55,7 +55,8 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
     while (next < todo.size() && static_cast<int>(running.size()) < o.jobs) {
       const SweepRun* r = todo[next++];
       const pid_t parent = getpid();
-      const pid_t pid = fork();
+      auto child = std::make_unique<RegisteredChild>(true);
+      const pid_t pid = child->pid();
       if (pid < 0) throw IoError("sweep: cannot start a run (fork failed)");
       if (pid == 0) {
         // A killed sweep takes its runs with it: none finishes behind a resumed sweep's back,
@@ -78,7 +79,7 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
         _exit(code);
       }
       running[pid] = r;
-      registered[pid] = std::make_unique<ChildRegistration>(pid, true);
+      registered[pid] = std::move(child);
     }
     progress();
     int status = 0;
