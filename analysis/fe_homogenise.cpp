@@ -15,6 +15,8 @@
 
 #include "analysis/bounds.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/memory.hpp"
 
 namespace grainmesh {
 
@@ -362,14 +364,32 @@ Eigen::MatrixXd mean_stresses(const Problem<D>& p, const Eigen::MatrixXd& u) {
   return mean / volume;
 }
 
+// Refuses a factor that would not fit: CHOLMOD's count of its nonzeros (known after the
+// analysis, before any is made), 8 bytes each with a quarter more for the supernodes'
+// padding, beside the matrix and the loads' columns (right sides and solutions).
+void check_memory(const cholmod_common& analysed, const Eigen::SparseMatrix<double>& k, int loads, std::size_t unknowns,
+                  const FeOptions& o) {
+  constexpr double kMiB = 1024.0 * 1024.0;
+  const double need = (1.25 * 8.0 * analysed.lnz + 12.0 * static_cast<double>(k.nonZeros()) +
+                       3.0 * 8.0 * static_cast<double>(loads) * static_cast<double>(unknowns)) / kMiB;
+  const double have = o.memory_mib > 0.0 ? o.memory_mib : available_memory_mib();
+  auto size = [](double mib) { return mib < 1024.0 ? to_text(mib, 3) + " MiB" : to_text(mib / 1024.0, 3) + " GiB"; };
+  if (need > have)
+    throw ConfigError("homogenise.reference = fe: the finite-element reference of this mesh (" +
+                      std::to_string(unknowns) + " unknowns) needs about " + size(need) + ", more than the " +
+                      size(have) + " available: set homogenise.reference = none, or mesh coarser or fewer grains");
+}
+
 template <int D>
-FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stress, bool thermal) {
+FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stress, bool thermal, const FeOptions& o) {
   constexpr std::size_t N = voigt_size(D);
   const auto start = std::chrono::steady_clock::now();
   const Problem<D> p(m, plane_stress, thermal);
   const auto [k, f] = assemble(p);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
-  solver.compute(k);
+  solver.analyzePattern(k);
+  check_memory(solver.cholmod(), k, p.loads, p.unknowns, o);
+  solver.factorize(k);
   if (solver.info() != Eigen::Success)
     throw GeometryError("finite-element reference: the stiffness matrix is not positive definite (a phase without "
                         "stiffness, or a mesh the periodic ties do not hold)");
@@ -393,10 +413,12 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
 
 }  // namespace
 
-FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool thermal) {
-  return homogenise(m, plane_stress, thermal);
+FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool thermal, const FeOptions& o) {
+  return homogenise(m, plane_stress, thermal, o);
 }
 
-FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal) { return homogenise(m, false, thermal); }
+FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o) {
+  return homogenise(m, false, thermal, o);
+}
 
 }  // namespace grainmesh

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -34,7 +35,47 @@ double own_peak_mib() {
 // allowed the stage's peak is the process's peak so far.
 void reset_own_peak() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
+// The first number in `file` (bytes, or kB after `key` in /proc/meminfo); negative when
+// it holds none ("max", absent).
+double number_in(const std::filesystem::path& file, const std::string& key = {}) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (!key.empty() && line.rfind(key, 0) != 0) continue;
+    try {
+      return std::stod(key.empty() ? line : line.substr(key.size()));
+    } catch (const std::exception&) {
+      return -1.0;
+    }
+  }
+  return -1.0;
+}
+
 }  // namespace
+
+double available_memory_mib() {
+  double mib = std::numeric_limits<double>::infinity();
+  if (const double kib = number_in("/proc/meminfo", "MemAvailable:"); kib >= 0.0) mib = kib / kKiBPerMiB;
+  // This process's control group, v2 ("0::PATH") or v1's memory controller ("N:memory:PATH").
+  std::ifstream groups("/proc/self/cgroup");
+  for (std::string line; std::getline(groups, line);) {
+    const auto second = line.find(':', line.find(':') + 1);
+    if (second == std::string::npos) continue;
+    const std::string controllers = line.substr(line.find(':') + 1, second - line.find(':') - 1);
+    const std::string path = line.substr(second + 1);
+    std::filesystem::path dir;
+    std::string limit, usage;
+    if (controllers.empty()) {
+      dir = "/sys/fs/cgroup" + path, limit = "memory.max", usage = "memory.current";
+    } else if (controllers == "memory") {
+      dir = "/sys/fs/cgroup/memory" + path, limit = "memory.limit_in_bytes", usage = "memory.usage_in_bytes";
+    } else {
+      continue;
+    }
+    const double max = number_in(dir / limit), used = number_in(dir / usage);
+    if (max >= 0.0 && used >= 0.0) mib = std::min(mib, std::max(0.0, max - used) / (kKiBPerMiB * kKiBPerMiB));
+  }
+  return mib;
+}
 
 double tree_resident_mib(int pid) {
   // Every process's parent and resident pages, from /proc/PID/stat (after the name's

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages grainmesh builds and tests with, only those missing.
-# With --bench, also the peers `make bench` compares against (Gmsh).
+# With --bench, also the peers `make bench` compares against (Gmsh; SfePy, read through VTK's Python).
 # Idempotent: a second run installs nothing and takes well under a second.
 set -euo pipefail
 
@@ -24,6 +24,7 @@ packages=(
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(gmsh)                      # make bench's peer mesher (2D and 3D)
+  packages+=(python3-sfepy python3-vtk9) # make bench's peer of the finite-element reference
 fi
 
 missing=()

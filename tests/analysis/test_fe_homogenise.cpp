@@ -164,3 +164,15 @@ TEST_CASE("the FE reference refuses a cell it cannot tie or solve", "[analysis][
   std::swap(inverted.mesh.corners[1], inverted.mesh.corners[2]);
   CHECK_THROWS_WITH(fe_homogenise(inverted, false, false), Catch::Contains("element 0 is inverted"));
 }
+
+TEST_CASE("the FE reference refuses a factor larger than the memory it may take, naming the key", "[analysis][fe]") {
+  const ExportMesh<2> m = grid_2d(32, [](double, double) { return 0; });
+  // A 32 x 32 grid's factor takes a few MiB: refused under 1 MiB, solved under 1 GiB.
+  CHECK_THROWS_AS(fe_homogenise(m, false, false, {.memory_mib = 1.0}), ConfigError);
+  CHECK_THROWS_WITH(fe_homogenise(m, false, false, {.memory_mib = 1.0}),
+                    Catch::StartsWith("homogenise.reference = fe: the finite-element reference of this mesh") &&
+                        Catch::Contains("more than the 1 MiB available"));
+  CHECK_NOTHROW(fe_homogenise(m, false, false, {.memory_mib = 1024.0}));
+  const ExportMesh<3> cube = grid_3d(4, [](double, double, double) { return 0; });
+  CHECK_THROWS_AS(fe_homogenise(cube, false, {.memory_mib = 0.01}), ConfigError);
+}
