@@ -152,7 +152,8 @@ TEST_CASE("a laminate cooled: the exact layer stresses and free expansion, the p
   // in the interface cells' size: 1.3 % at a boundary size of 0.01, 0.66 % at 0.005).
   std::ofstream(ini) << test::laminate_config(hard, soft, /*normal_to_x=*/true, 0.005)
                      << "[homogenise]\nboundary = periodic\n[load]\ndelta_T = -1000\n";
-  const auto r = test::run_grainmesh({"run", ini.string(), "-o", (dir / "out").string(), "--solve"});
+  const auto r = test::run_grainmesh(
+      {"run", ini.string(), "-o", (dir / "out").string(), "--solve", "--set", "homogenise.reference=fe"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const Json report = report_of(dir / "out");
@@ -170,6 +171,14 @@ TEST_CASE("a laminate cooled: the exact layer stresses and free expansion, the p
   const Json& a = report["effective"]["thermal_expansion"];
   CHECK(a["xx"].get<double>() == Approx(a11).epsilon(0.01));
   CHECK(a["yy"].get<double>() == Approx(a22).epsilon(0.01));
+  // The finite-element reference follows the layers: exact; and the expansion's error it
+  // states is the answer's own against the exact expansion.
+  const Json& ref = report["effective"]["reference"]["thermal_expansion"];
+  const Json& error = report["effective"]["discretisation_error"]["thermal_expansion"];
+  CHECK(ref["xx"].get<double>() == Approx(a11).epsilon(1e-9));
+  CHECK(ref["yy"].get<double>() == Approx(a22).epsilon(1e-9));
+  CHECK(error["xx"].get<double>() == Approx(a["xx"].get<double>() / a11 - 1).margin(1e-8));
+  CHECK(error["yy"].get<double>() == Approx(a["yy"].get<double>() / a22 - 1).margin(1e-8));
   for (const auto& [name, material] : {std::pair{"hard", hard}, std::pair{"soft", soft}}) {
     INFO(name);
     const Json& s = report["stresses"]["thermal"][name];
