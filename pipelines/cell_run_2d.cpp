@@ -75,13 +75,15 @@ class PlaneCellRun final : public CellRun {
 
   RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
                   std::vector<std::string>& warnings) override {
-    // The reference solves on the triangles, also when the cases have polygons.
+    // The reference solves on the triangles, also when the cases have polygons (made for it
+    // then; else the case's own mesh, not copied).
     std::optional<ExportMesh<2>> triangles;
-    if (plan_.fe_reference) triangles = foam_.cells == FoamOptions::Cells::polygons ? grain_export_mesh(*t_, *m_) : *e_;
+    if (plan_.fe_reference && foam_.cells == FoamOptions::Cells::polygons) triangles = grain_export_mesh(*t_, *m_);
+    const ExportMesh<2>* reference = !plan_.fe_reference ? nullptr : triangles ? &*triangles : &*e_;
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
                            .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_,
-                           .reference_mesh = triangles ? &*triangles : nullptr};
+                           .reference_mesh = reference};
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
