@@ -8,15 +8,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <limits>
-#include <numeric>
-#include <span>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "analysis/bounds.hpp"
+#include "analysis/fe_nodes.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/memory.hpp"
@@ -25,39 +21,8 @@ namespace grainmesh {
 
 namespace {
 
-// A simplex of D dimensions with quadratic Lagrange shape functions: its D + 1 corners,
-// then one node per edge (i, j), i < j, in kEdges' order.
-template <int D>
-struct Simplex {
-  static constexpr int kCorners = D + 1;
-  static constexpr int kEdges = D * (D + 1) / 2;
-  static constexpr int kNodes = kCorners + kEdges;
-  static constexpr std::size_t kVoigt = voigt_size(D);
-  static constexpr std::array<std::array<int, 2>, kEdges> edges() {
-    std::array<std::array<int, 2>, kEdges> e{};
-    int k = 0;
-    for (int i = 0; i < kCorners; ++i)
-      for (int j = i + 1; j < kCorners; ++j) e[static_cast<std::size_t>(k++)] = {i, j};
-    return e;
-  }
-};
-
 double coordinate(const Vec2& p, int k) { return k == 0 ? p.x : p.y; }
 double coordinate(const Vec3& p, int k) { return k == 0 ? p.x : k == 1 ? p.y : p.z; }
-
-const std::vector<Vec2>& mesh_points(const ExportMesh<2>& m) { return m.mesh.points; }
-const std::vector<Vec3>& mesh_points(const ExportMesh<3>& m) { return m.mesh.points; }
-std::size_t element_count(const ExportMesh<2>& m) { return m.mesh.cells(); }
-std::size_t element_count(const ExportMesh<3>& m) { return m.mesh.tets.size(); }
-
-std::array<int, 3> element_corners(const ExportMesh<2>& m, std::size_t c) {
-  const std::span<const int> ring = m.mesh.cell(c);
-  if (ring.size() != 3)
-    throw GeometryError("finite-element reference: cell " + std::to_string(c) + " has " + std::to_string(ring.size()) +
-                        " corners; it needs triangles");
-  return {ring[0], ring[1], ring[2]};
-}
-std::array<int, 4> element_corners(const ExportMesh<3>& m, std::size_t c) { return m.mesh.tets[c]; }
 
 // Quadrature exact for polynomials of degree 2 on the simplex: barycentric points and
 // weights (summing to 1; times the element's measure).
@@ -81,101 +46,6 @@ Quadrature<D> degree_two_rule() {
     q.weights.push_back(1.0 / (D + 1));
   }
   return q;
-}
-
-// The nodes of a mesh's quadratic elements: its points, then one per edge.
-template <int D>
-struct Nodes {
-  std::vector<std::array<int, Simplex<D>::kNodes>> element;  // per element, corners then edges
-  std::unordered_map<std::uint64_t, int> edge;                // (low, high) point ids -> node
-  std::size_t count = 0;
-};
-
-std::uint64_t edge_key(int a, int b) {
-  const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
-  return lo << 32 | hi;
-}
-
-template <int D>
-Nodes<D> quadratic_nodes(const ExportMesh<D>& m) {
-  Nodes<D> n;
-  const std::size_t elements = element_count(m);
-  n.count = mesh_points(m).size();
-  n.element.resize(elements);
-  n.edge.reserve(2 * elements);  // about 1.5 edges per triangle, 1.2 per tetrahedron
-  for (std::size_t c = 0; c < elements; ++c) {
-    const auto corners = element_corners(m, c);
-    auto& nodes = n.element[c];
-    for (int i = 0; i <= D; ++i) nodes[static_cast<std::size_t>(i)] = corners[static_cast<std::size_t>(i)];
-    int k = D + 1;
-    for (const auto& [i, j] : Simplex<D>::edges()) {
-      const auto [it, added] = n.edge.try_emplace(edge_key(corners[static_cast<std::size_t>(i)],
-                                                           corners[static_cast<std::size_t>(j)]),
-                                                  static_cast<int>(n.count));
-      if (added) ++n.count;
-      nodes[static_cast<std::size_t>(k++)] = it->second;
-    }
-  }
-  return n;
-}
-
-// Union-find over the nodes: the classes of nodes tied by periodicity.
-class Ties {
- public:
-  explicit Ties(std::size_t n) : parent_(n) {
-    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
-  }
-  int root(int i) {
-    while (parent_[static_cast<std::size_t>(i)] != i) {
-      parent_[static_cast<std::size_t>(i)] = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)])];
-      i = parent_[static_cast<std::size_t>(i)];
-    }
-    return i;
-  }
-  void tie(int a, int b) {
-    a = root(a);
-    b = root(b);
-    if (a != b) parent_[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
-// Each node's unknowns' first index (D of them), -1 for the held class (the first point's).
-template <int D>
-std::vector<int> node_unknowns(const ExportMesh<D>& m, const Nodes<D>& n, std::size_t& unknowns) {
-  if (!m.periodic) throw GeometryError("finite-element reference: the cell is not periodic");
-  Ties ties(n.count);
-  for (int axis = 0; axis < D; ++axis) {
-    std::unordered_map<int, int> image;
-    for (const auto& [low, high] : m.pairs.axis[static_cast<std::size_t>(axis)]) {
-      image[low] = high;
-      ties.tie(low, high);
-    }
-    // An edge on the low side and the image edge: their midside nodes are images too.
-    for (const auto& [key, node] : n.edge) {
-      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
-      const auto ia = image.find(a), ib = image.find(b);
-      if (ia == image.end() || ib == image.end()) continue;
-      const auto other = n.edge.find(edge_key(ia->second, ib->second));
-      if (other == n.edge.end())
-        throw GeometryError("finite-element reference: the edge of points " + std::to_string(a) + " and " +
-                            std::to_string(b) + " on a low side has no image edge");
-      ties.tie(node, other->second);
-    }
-  }
-  std::vector<int> cls(n.count, -1), first(n.count, -1);
-  const int held = ties.root(0);
-  int next = 0;
-  for (std::size_t i = 0; i < n.count; ++i) {
-    const int r = ties.root(static_cast<int>(i));
-    if (r == held) continue;
-    if (cls[static_cast<std::size_t>(r)] < 0) cls[static_cast<std::size_t>(r)] = next++;
-    first[i] = D * cls[static_cast<std::size_t>(r)];
-  }
-  unknowns = static_cast<std::size_t>(D) * static_cast<std::size_t>(next);
-  return first;
 }
 
 template <int D>
@@ -278,8 +148,9 @@ Materials<D> materials(const ExportMesh<D>& m, bool plane_stress) {
 // The graph of the unknown nodes (first[node] / D) that share an element: its lower
 // triangle, diagonal included, rows sorted in each column.
 template <int D>
-Eigen::SparseMatrix<double> node_graph(const Nodes<D>& n, std::size_t unknowns, const std::vector<int>& first) {
-  const int nodes = static_cast<int>(unknowns) / D;
+Eigen::SparseMatrix<double> node_graph(const FeNodes<D>& n) {
+  const std::vector<int>& first = n.first;
+  const int nodes = static_cast<int>(n.unknowns) / D;
   std::vector<Eigen::Triplet<double>> pairs;
   pairs.reserve(n.element.size() * Simplex<D>::kNodes * (Simplex<D>::kNodes + 1) / 2);
   for (const auto& element : n.element)
@@ -293,76 +164,6 @@ Eigen::SparseMatrix<double> node_graph(const Nodes<D>& n, std::size_t unknowns, 
   return graph;
 }
 
-// Numbers the unknown nodes (first[node] / D, their D components riding together) in a
-// fill-reducing order made on the mesh's corners alone, a graph a tenth the size of the
-// nodes' (2D): CHOLMOD's analysis of the corners' graph (AMD, or METIS's nested dissection
-// where it does better); each edge's midside node then follows the first of its two
-// corners, which keeps every separator a separator. The factor needs no ordering of its own.
-template <int D>
-void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<int>& first) {
-  const auto classes = unknowns / static_cast<std::size_t>(D);
-  auto class_of = [&](int node) { return first[static_cast<std::size_t>(node)] < 0 ? -1 : first[static_cast<std::size_t>(node)] / D; };
-  std::vector<int> corner_index(classes, -1), corner_class;
-  for (const auto& element : n.element)
-    for (int i = 0; i <= D; ++i)
-      if (const int c = class_of(element[static_cast<std::size_t>(i)]); c >= 0 && corner_index[static_cast<std::size_t>(c)] < 0) {
-        corner_index[static_cast<std::size_t>(c)] = static_cast<int>(corner_class.size());
-        corner_class.push_back(c);
-      }
-  std::vector<Eigen::Triplet<double>> pairs;
-  pairs.reserve(n.element.size() * (D + 1) * (D + 2) / 2);
-  for (const auto& element : n.element)
-    for (int i = 0; i <= D; ++i)
-      for (int j = 0; j <= D; ++j) {
-        const int a = class_of(element[static_cast<std::size_t>(i)]), b = class_of(element[static_cast<std::size_t>(j)]);
-        if (a < 0 || b < 0) continue;
-        const int ia = corner_index[static_cast<std::size_t>(a)], ib = corner_index[static_cast<std::size_t>(b)];
-        if (ia >= ib) pairs.emplace_back(ia, ib, 1.0);
-      }
-  const auto corners = static_cast<int>(corner_class.size());
-  Eigen::SparseMatrix<double> graph(corners, corners);
-  graph.setFromTriplets(pairs.begin(), pairs.end());
-  const Eigen::SparseMatrix<double>& lower = graph;
-  cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
-  cholmod_common common;
-  cholmod_start(&common);
-  common.nmethods = 1;  // CHOLMOD's nested dissection: the fewest operations measured (2D 1,000 grains: 2.2e10
-  common.method[0].ordering = CHOLMOD_NESDIS;  // against METIS's 2.5e10 and AMD's 5.3e10; 3D: 2.2e12 against 2.5e12)
-  cholmod_factor* symbolic = cholmod_analyze(&view, &common);
-  if (symbolic == nullptr) {
-    cholmod_finish(&common);
-    throw GeometryError("finite-element reference: CHOLMOD could not order the unknowns");
-  }
-  // Each class's place: a corner's its position in the order, a midside node's just after
-  // the first of its corners (a class of nodes, images of one another: the first of all).
-  constexpr double kLast = std::numeric_limits<double>::infinity();
-  std::vector<double> place(classes, kLast);
-  const auto* order = static_cast<const int*>(symbolic->Perm);  // order[new] = old
-  for (int k = 0; k < corners; ++k) place[static_cast<std::size_t>(corner_class[static_cast<std::size_t>(order[k])])] = k;
-  cholmod_free_factor(&symbolic, &common);
-  cholmod_finish(&common);
-  constexpr auto edges = Simplex<D>::edges();
-  for (const auto& element : n.element)
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      const int c = class_of(element[D + 1 + e]);
-      if (c < 0) continue;
-      double after = kLast;
-      for (const int end : {edges[e][0], edges[e][1]})
-        if (const int k = class_of(element[static_cast<std::size_t>(end)]); k >= 0)
-          after = std::min(after, place[static_cast<std::size_t>(k)] + 0.5);
-      place[static_cast<std::size_t>(c)] = std::min(place[static_cast<std::size_t>(c)], after);
-    }
-  std::vector<int> by_place(classes);
-  std::iota(by_place.begin(), by_place.end(), 0);
-  std::stable_sort(by_place.begin(), by_place.end(), [&](int a, int b) {
-    return place[static_cast<std::size_t>(a)] < place[static_cast<std::size_t>(b)];
-  });
-  std::vector<int> renumbered(classes);
-  for (std::size_t k = 0; k < classes; ++k) renumbered[static_cast<std::size_t>(by_place[k])] = static_cast<int>(k);
-  for (int& f : first)
-    if (f >= 0) f = D * renumbered[static_cast<std::size_t>(f / D)];
-}
-
 // The discrete problem: the mesh's quadratic nodes, each node's unknowns, the phases'
 // materials, the quadrature and the loads — load j < N the unit macroscopic (engineering)
 // strain j, load N (when thermal) the unit temperature change.
@@ -371,18 +172,14 @@ struct Problem {
   static constexpr std::size_t N = voigt_size(D);
   static constexpr int kDofs = D * Simplex<D>::kNodes;
   const ExportMesh<D>& m;
-  Nodes<D> nodes;
-  std::size_t unknowns = 0;  // before `first`, which counts them
-  std::vector<int> first;
+  FeNodes<D> nodes;
   Materials<D> mat;
   Quadrature<D> q;
   int loads = 0;
 
   Problem(const ExportMesh<D>& mesh, bool plane_stress, bool thermal)
-      : m(mesh), nodes(quadratic_nodes(mesh)), first(node_unknowns(mesh, nodes, unknowns)),
-        mat(materials(mesh, plane_stress)), q(degree_two_rule<D>()), loads(static_cast<int>(N) + (thermal ? 1 : 0)) {
-    order_unknowns(nodes, unknowns, first);
-  }
+      : m(mesh), nodes(fe_nodes(mesh)), mat(materials(mesh, plane_stress)), q(degree_two_rule<D>()),
+        loads(static_cast<int>(N) + (thermal ? 1 : 0)) {}
 
   // The strain load j imposes on a phase: E_j, or minus its free thermal strain.
   VoigtVector<D> imposed(int phase, int j) const {
@@ -392,7 +189,7 @@ struct Problem {
   // The unknown of element c's local degree of freedom k (node k / D, component k % D);
   // -1 when held.
   int dof(std::size_t c, int k) const {
-    const int base = first[static_cast<std::size_t>(nodes.element[c][static_cast<std::size_t>(k / D)])];
+    const int base = nodes.first[static_cast<std::size_t>(nodes.element[c][static_cast<std::size_t>(k / D)])];
     return base < 0 ? -1 : base + k % D;
   }
 };
@@ -401,8 +198,8 @@ struct Problem {
 // (each node pair's D x D block, the diagonal blocks' lower half), its entries zero.
 template <int D>
 Eigen::SparseMatrix<double> stiffness_pattern(const Problem<D>& p) {
-  const Eigen::SparseMatrix<double> graph = node_graph(p.nodes, p.unknowns, p.first);
-  const auto n = static_cast<Eigen::Index>(p.unknowns);
+  const Eigen::SparseMatrix<double> graph = node_graph(p.nodes);
+  const auto n = static_cast<Eigen::Index>(p.nodes.unknowns);
   Eigen::SparseMatrix<double> k(n, n);
   k.resizeNonZeros(static_cast<Eigen::Index>(D * D) * graph.nonZeros());  // an upper bound, trimmed below
   int* outer = k.outerIndexPtr();
@@ -502,10 +299,10 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
   const Problem<D> p(m, plane_stress, thermal);
   const auto [k, f] = assemble(p);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
-  solver.cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (order_unknowns)
+  solver.cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (fe_nodes.hpp)
   solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
   solver.analyzePattern(k);
-  check_memory(solver.cholmod(), k, p.loads, p.unknowns, o);
+  check_memory(solver.cholmod(), k, p.loads, p.nodes.unknowns, o);
   solver.factorize(k);
   if (solver.info() != Eigen::Success)
     throw GeometryError("finite-element reference: the stiffness matrix is not positive definite (a phase without "
@@ -513,7 +310,7 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
   const Eigen::MatrixXd u = solver.solve(f);
   const Eigen::MatrixXd mean = mean_stresses(p, u);
   FeHomogenised<N> out;
-  out.unknowns = p.unknowns;
+  out.unknowns = p.nodes.unknowns;
   VoigtMatrix<D> c_eff = mean.leftCols(static_cast<int>(N));
   for (std::size_t i = 0; i < N; ++i)
     for (std::size_t j = 0; j < N; ++j) out.stiffness[i][j] = c_eff(static_cast<int>(i), static_cast<int>(j));
