@@ -79,6 +79,20 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
   return a;
 }
 
+namespace {
+
+// Whether `reference` is measured on its own scale: not below a hundredth of `largest`
+// (the couplings that vanish by symmetry are measured on the largest).
+bool own_scale(double reference, double largest) { return std::abs(reference) >= 0.01 * largest; }
+
+// `value`'s difference from `reference`, relative to it or, below a hundredth of
+// `largest`, to `largest`.
+double relative_error(double value, double reference, double largest) {
+  return (value - reference) / (own_scale(reference, largest) ? std::abs(reference) : largest);
+}
+
+}  // namespace
+
 template <std::size_t N>
 ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe, const AnswerAdvice& advice,
                                     std::vector<std::string>& warnings) {
@@ -89,21 +103,15 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
   r.shear_modulus = shear_modulus(r.stiffness);
   const double largest = largest_entry(r.stiffness);
   for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = 0; j < N; ++j) {
-      const double ref = r.stiffness[i][j];
-      const double scale = std::abs(ref) >= 0.01 * largest ? std::abs(ref) : largest;
-      r.stiffness_error[i][j] = (a.verdict.stiffness[i][j] - ref) / scale;
-    }
+    for (std::size_t j = 0; j < N; ++j)
+      r.stiffness_error[i][j] = relative_error(a.verdict.stiffness[i][j], r.stiffness[i][j], largest);
   r.bulk_error = a.verdict.bulk_modulus / r.bulk_modulus - 1.0;
   r.shear_error = a.verdict.shear_modulus / r.shear_modulus - 1.0;
   if (a.thermal && fe.expansion) {
     const double scale = std::max({std::abs((*fe.expansion)[0]), std::abs((*fe.expansion)[1]),
                                    std::abs((*fe.expansion)[voigt_dimensions<N>() - 1])});
     std::array<double, N> e{};
-    for (std::size_t k = 0; k < N; ++k) {  // as the stiffness's: on its own scale unless below a hundredth
-      const double ref = (*fe.expansion)[k];
-      e[k] = (a.thermal->expansion[k] - ref) / (std::abs(ref) >= 0.01 * scale ? std::abs(ref) : scale);
-    }
+    for (std::size_t k = 0; k < N; ++k) e[k] = relative_error(a.thermal->expansion[k], (*fe.expansion)[k], scale);
     r.expansion_error = e;
   }
   // The farthest of the quantities measured on their own scale: K, G and the entries not
@@ -113,7 +121,7 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
   if (std::abs(r.shear_error) > most) worst = "the shear modulus", most = std::abs(r.shear_error);
   for (std::size_t i = 0; i < N; ++i)
     for (std::size_t j = i; j < N; ++j)
-      if (std::abs(r.stiffness[i][j]) >= 0.01 * largest && std::abs(r.stiffness_error[i][j]) > most)
+      if (own_scale(r.stiffness[i][j], largest) && std::abs(r.stiffness_error[i][j]) > most)
         worst = stiffness_name<N>(i, j), most = std::abs(r.stiffness_error[i][j]);
   r.farthest = worst;
   r.farthest_error = most;

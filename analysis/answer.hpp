@@ -73,8 +73,8 @@ struct ThermalAnswer {
 // The finite-element reference beside a periodic answer (fe_homogenise.hpp) and how far
 // the answer lies from it, relative: each stiffness entry's difference over the
 // reference's entry, or over its largest entry where the entry is below a hundredth of it
-// (couplings that vanish by symmetry); K's and G's over theirs; the expansion's over its
-// largest normal component.
+// (couplings that vanish by symmetry); K's and G's over theirs; the expansion's by the
+// same rule, over the largest of its normal components.
 template <std::size_t N>
 struct ReferenceAnswer {
   FeHomogenised<N> fe;

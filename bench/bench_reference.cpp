@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -28,12 +27,8 @@ namespace {
 // largest difference of an entry, relative to the largest entry.
 double sfepy_difference(const fs::path& source, const fs::path& out, const Json& stiffness, const fs::path& dir) {
   const fs::path answer = dir / "sfepy.json";
-  const std::string command = "/usr/bin/python3 " + (source / "bench" / "sfepy_reference.py").string() + " " +
-                              out.string() + " > " + answer.string() + " 2> " + (dir / "sfepy.log").string();
-  if (std::system(command.c_str()) != 0) {
-    std::fprintf(stderr, "bench_reference: %s failed (see %s)\n", command.c_str(), (dir / "sfepy.log").c_str());
-    std::exit(1);
-  }
+  run_command("/usr/bin/python3", (source / "bench" / "sfepy_reference.py").string() + " " + out.string() + " " +
+                                      answer.string(), dir / "sfepy.log");
   const Json peer = read_json(answer)["stiffness"];
   double largest = 0.0, difference = 0.0;
   for (const auto& [name, value] : stiffness.items()) {
@@ -74,14 +69,11 @@ int main(int argc, char** argv) {
   for (const Cell& c : cells) {
     const fs::path out = dir / "run";
     fs::remove_all(out);
-    const std::string command = std::string(GRAINMESH_BINARY) + " run " + c.config + " -o " + out.string() +
-                                " --solve --quiet --set homogenise.boundary=periodic --set homogenise.reference=fe "
-                                "--set output.pictures=none > " +
-                                (dir / "run.log").string() + " 2>&1";
-    if (std::system(command.c_str()) != 0) {
-      std::fprintf(stderr, "bench_reference: %s failed (see %s)\n", command.c_str(), (dir / "run.log").c_str());
-      return 1;
-    }
+    run_command(GRAINMESH_BINARY,
+                "run " + c.config + " -o " + out.string() +
+                    " --solve --quiet --set homogenise.boundary=periodic --set homogenise.reference=fe "
+                    "--set output.pictures=none",
+                dir / "run.log");
     const Json eff = read_json(out / "report.json")["effective"];
     const Json& ref = eff["reference"];
     const Json& error = eff["discretisation_error"];

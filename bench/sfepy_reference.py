@@ -2,14 +2,15 @@
 """The peer of grainmesh's finite-element reference (analysis/fe_homogenise.hpp): SfePy's
 periodic homogenisation (Debian python3-sfepy) on the mesh a grainmesh run wrote.
 
-usage: sfepy_reference.py OUT
+usage: sfepy_reference.py OUT [ANSWER.json]
 
 OUT is a periodic `grainmesh run` whose mesh.vtu holds triangles (2D) or tetrahedra (3D):
 its cells, their phases (cell array `phase`, names in field data `phase_names`), the
 phases' E and nu from OUT/config.ini and the plane state from OUT/report.json. SfePy
 solves its own corrector problems on the same cells with quadratic Lagrange elements
 (field order 2), ties the sides by matching coordinates (its match_*_plane), holds the
-corners, and returns the homogenised stiffness. Printed as JSON on stdout, named as
+corners, and returns the homogenised stiffness. Written as JSON to ANSWER.json (or
+stdout), named as
 grainmesh names the stiffness's entries (C11, C12, ..., Voigt 1..3 the normals, then
 yz, xz, xy in 3D; xy is 6 in 2D), with engineering shear strains as grainmesh's.
 """
@@ -134,7 +135,7 @@ def homogenise(dim, points, cells, phases, materials, plane, workdir):
 
 
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__.strip().splitlines()[2])
     sfepy_output.set_output(quiet=True)
     dim, points, cells, phases, materials, plane = read_run(sys.argv[1])
@@ -147,9 +148,13 @@ def main():
         for j in range(len(voigt)):
             a, b = sorted((voigt[i], voigt[j]))
             stiffness["C%d%d" % (a, b)] = float(d[i, j])
-    json.dump({"stiffness": stiffness, "cells": int(len(cells)), "plane": plane if dim == 2 else None},
-              sys.stdout)
-    sys.stdout.write("\n")
+    answer = {"stiffness": stiffness, "cells": int(len(cells)), "plane": plane if dim == 2 else None}
+    if len(sys.argv) == 3:
+        with open(sys.argv[2], "w") as f:
+            json.dump(answer, f)
+    else:
+        json.dump(answer, sys.stdout)
+        sys.stdout.write("\n")
 
 
 if __name__ == "__main__":
