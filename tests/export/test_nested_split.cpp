@@ -1,0 +1,127 @@
+// Nested refinement (export/nested_split.hpp) on periodic two-phase cells: four triangles
+// (eight tetrahedra) per cell, each grain's area (volume) kept exactly, no inverted child,
+// the periodic pairs those a search by position finds (2D) or exact images (3D), and a
+// cyclic case of the split cell that checkMesh accepts; the finite-element answer on the
+// split mesh lies below the unsplit one's (the spaces are nested: displacement elements
+// are too stiff, less so when refined).
+#include <algorithm>
+#include <map>
+
+#include <catch2/catch.hpp>
+
+#include "analysis/fe_homogenise.hpp"
+#include "checkmesh.hpp"
+#include "export/export_mesh.hpp"
+#include "export/foam_case.hpp"
+#include "export/nested_split.hpp"
+#include "grains/grain_mesh.hpp"
+#include "grains3d/grain_mesh_3d.hpp"
+#include "helpers.hpp"
+#include "tessellate/tessellate.hpp"
+#include "tessellate/tessellate_3d.hpp"
+
+using namespace grainmesh;
+
+namespace {
+
+ExportMesh<2> cell_2d() {
+  TessellationOptions o;
+  o.width = 3.0;
+  o.height = 1.7;
+  o.grains = 30;
+  o.periodic = true;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
+  Rng rng(5);
+  const Tessellation t = tessellate(o, rng);
+  return grain_export_mesh(t, mesh_tessellation(t, {.size = 0.15, .phase_size = {}}));
+}
+
+ExportMesh<3> cell_3d() {
+  Tessellation3Options o;
+  o.grains = 12;
+  o.periodic = true;
+  o.lloyd_iterations = 3;
+  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
+  Rng rng(3);
+  const Tessellation3 t = tessellate_3d(o, rng);
+  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 60)}));
+}
+
+std::map<int, double> grain_areas(const ExportMesh<2>& m) {
+  std::map<int, double> area;
+  for (std::size_t c = 0; c < m.mesh.cells(); ++c) {
+    const double a = cell_area(m.mesh, c);
+    CHECK(a > 0.0);
+    area[m.grain[c]] += a;
+  }
+  return area;
+}
+
+std::map<int, double> grain_volumes(const ExportMesh<3>& m) {
+  std::map<int, double> volume;
+  for (std::size_t c = 0; c < m.mesh.tets.size(); ++c) {
+    const auto& [a, b, d, e] = m.mesh.tets[c];
+    const auto& p = m.mesh.points;
+    const double v = tet_volume(p[a], p[b], p[d], p[e]);
+    CHECK(v > 0.0);
+    volume[m.grain[c]] += v;
+  }
+  return volume;
+}
+
+template <class Map>
+void check_same_measures(const Map& before, const Map& after) {
+  REQUIRE(before.size() == after.size());
+  for (const auto& [grain, measure] : before) CHECK(after.at(grain) == Approx(measure).epsilon(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("nested refinement splits a periodic plane cell in four, grains and pairs kept", "[export][nested]") {
+  const ExportMesh<2> m = cell_2d();
+  const ExportMesh<2> s = split_nested(m);
+  REQUIRE(s.mesh.cells() == 4 * m.mesh.cells());
+  validate(s.mesh);
+  check_same_measures(grain_areas(m), grain_areas(s));
+  for (std::size_t c = 0; c < s.mesh.cells(); ++c) CHECK(s.phase[c] == m.phase[c / 4]);
+  // The pairs are exactly those of the points on the sides.
+  PeriodicPairs found = pair_by_position(s.mesh.points, s.cell), made = s.pairs;
+  for (int axis = 0; axis < 2; ++axis) {
+    std::sort(found.axis[axis].begin(), found.axis[axis].end());
+    std::sort(made.axis[axis].begin(), made.axis[axis].end());
+    CHECK(made.axis[axis] == found.axis[axis]);
+    CHECK(made.axis[axis].size() == 2 * m.pairs.axis[axis].size() - 1);  // a midpoint between each two
+  }
+  test::ScratchDir dir("nested_split");
+  write_foam_case(dir.path(), s, {.cyclic = true});
+  test::check_mesh_ok(dir.path(), s.phases, s.phase);
+}
+
+TEST_CASE("nested refinement splits a periodic solid cell in eight, grains and pairs kept", "[export][nested]") {
+  const ExportMesh<3> m = cell_3d();
+  const ExportMesh<3> s = split_nested(m);
+  REQUIRE(s.mesh.tets.size() == 8 * m.mesh.tets.size());
+  check_same_measures(grain_volumes(m), grain_volumes(s));
+  const Vec3 size = s.cell.size();
+  for (int axis = 0; axis < 3; ++axis) {
+    REQUIRE(s.pairs.axis[axis].size() > m.pairs.axis[axis].size());
+    for (const auto& [low, high] : s.pairs.axis[axis]) {
+      const Vec3 a = s.mesh.points[low], b = s.mesh.points[high];
+      const std::array<double, 3> pa{a.x, a.y, a.z}, pb{b.x, b.y, b.z}, extent{size.x, size.y, size.z};
+      for (int k = 0; k < 3; ++k) {
+        if (k == axis) CHECK(pb[k] - pa[k] == Approx(extent[k]).epsilon(1e-12));
+        else CHECK(pb[k] == pa[k]);  // bit for bit
+      }
+    }
+  }
+}
+
+TEST_CASE("the finite elements on a nested refinement lie below the unsplit mesh's", "[export][nested][fe]") {
+  const ExportMesh<2> m = cell_2d();
+  const FeHomogenised<3> coarse = fe_homogenise(m, false, false), fine = fe_homogenise(split_nested(m), false, false);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(fine.stiffness[i][i] < coarse.stiffness[i][i]);
+    CHECK(fine.stiffness[i][i] > 0.999 * coarse.stiffness[i][i]);
+  }
+}
