@@ -41,11 +41,13 @@ MixedAnswer<N> mixed_answer(const MixedHomogenised<N>& h, const std::vector<Foam
 
 namespace {
 
+// The free expansion under delta_T beside Levin's relation with the stiffness it was
+// freed with (`solved`).
 template <std::size_t N>
-ThermalAnswer<N> thermal_answer(const ThermalResidual<N>& r, const Stiffness<N>& solved,
+ThermalAnswer<N> thermal_answer(double delta_T, const std::array<double, N>& expansion, const Stiffness<N>& solved,
                                 const std::vector<FoamPhase>& phases, const FoamOptions& foam,
                                 const AnswerAdvice& advice, std::vector<std::string>& warnings) {
-  ThermalAnswer<N> a{.delta_T = r.delta_T, .expansion = r.expansion, .levin = {}, .levin_difference = 0.0,
+  ThermalAnswer<N> a{.delta_T = delta_T, .expansion = expansion, .levin = {}, .levin_difference = 0.0,
                      .plane_state = N == 3 ? plane_state(foam) : ""};
   // Levin's relation with the stiffness the expansion was freed with (as solved).
   a.levin = levin_expansion(phases, solved, plane_stress<N>(foam));
@@ -57,6 +59,25 @@ ThermalAnswer<N> thermal_answer(const ThermalResidual<N>& r, const Stiffness<N>&
   return a;
 }
 
+// A solved stiffness judged against the bounds at the phases' `fractions`, with its
+// engineering constants; a broken bound a warning.
+template <std::size_t N>
+PeriodicAnswer<N> judged_answer(Solver solver, const Stiffness<N>& solved, const std::vector<FoamPhase>& phases,
+                                const std::vector<double>& fractions, const FoamOptions& foam,
+                                const AnswerAdvice& advice, std::vector<std::string>& warnings) {
+  PeriodicAnswer<N> a;
+  a.solver = solver;
+  a.bounds = tensor_bounds<N>(phases, fractions, plane_stress<N>(foam));
+  a.fractions = fractions;
+  a.verdict = judge_stiffness(solved, a.bounds);
+  a.engineering = engineering_constants(a.verdict.stiffness);
+  if (!a.verdict.inside_voigt_reuss)
+    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
+                       "order): check the solve (" + advice.see + ")");
+  for (const std::string& w : a.verdict.broken_hashin_shtrikman) warnings.push_back(w + " (" + advice.why + ")");
+  return a;
+}
+
 }  // namespace
 
 template <std::size_t N>
@@ -64,18 +85,11 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
                                   const std::vector<FoamPhase>& phases, const std::vector<double>& fractions,
                                   const FoamOptions& foam, const AnswerAdvice& advice,
                                   std::vector<std::string>& warnings) {
-  PeriodicAnswer<N> a;
+  PeriodicAnswer<N> a = judged_answer(Solver::openfoam, h.stiffness, phases, fractions, foam, advice, warnings);
   for (const LoadCaseResult<N>& c : h.cases) a.cases.push_back({c.load, c.stress, c.run});
-  a.bounds = tensor_bounds<N>(phases, fractions, plane_stress<N>(foam));
-  a.fractions = fractions;
-  a.verdict = judge_stiffness(h.stiffness, a.bounds);
-  a.engineering = engineering_constants(a.verdict.stiffness);
   a.volume_average_stiffness = symmetric_part(h.volume_average_stiffness);
-  if (!a.verdict.inside_voigt_reuss)
-    warnings.push_back("effective.stiffness does not lie between the Reuss and Voigt tensors (positive semidefinite "
-                       "order): check the solve (" + advice.see + ")");
-  for (const std::string& w : a.verdict.broken_hashin_shtrikman) warnings.push_back(w + " (" + advice.why + ")");
-  if (thermal != nullptr) a.thermal = thermal_answer(*thermal, h.stiffness, phases, foam, advice, warnings);
+  if (thermal != nullptr)
+    a.thermal = thermal_answer(thermal->delta_T, thermal->expansion, h.stiffness, phases, foam, advice, warnings);
   return a;
 }
 
@@ -91,13 +105,43 @@ double relative_error(double value, double reference, double largest) {
   return (value - reference) / (own_scale(reference, largest) ? std::abs(reference) : largest);
 }
 
+// The largest normal component of an expansion: the scale of its components' errors.
+template <std::size_t N>
+double expansion_scale(const std::array<double, N>& x) {
+  return std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[voigt_dimensions<N>() - 1])});
+}
+
 }  // namespace
 
 template <std::size_t N>
-ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe, const AnswerAdvice& advice,
+FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coarse, const std::string& how) {
+  FeLevels<N> l{.fine = fine, .coarse = coarse, .estimate = {}};
+  ErrorEstimate<N>& e = l.estimate;
+  const Stiffness<N> f = symmetric_part(fine.stiffness), c = symmetric_part(coarse.stiffness);
+  const double largest = largest_entry(f);
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) e.stiffness[i][j] = kFeLevelFactor * std::abs(relative_error(c[i][j], f[i][j], largest));
+  e.bulk_modulus = kFeLevelFactor * std::abs(bulk_modulus(c) / bulk_modulus(f) - 1.0);
+  e.shear_modulus = kFeLevelFactor * std::abs(shear_modulus(c) / shear_modulus(f) - 1.0);
+  if (fine.expansion && coarse.expansion) {
+    std::array<double, N> x{};
+    const double scale = expansion_scale<N>(*fine.expansion);
+    for (std::size_t k = 0; k < N; ++k)
+      x[k] = kFeLevelFactor * std::abs(relative_error((*coarse.expansion)[k], (*fine.expansion)[k], scale));
+    e.expansion = x;
+  }
+  e.basis = "the finite elements on two levels (" + how + "): " + to_text(kFeLevelFactor) +
+            " x their difference, the fine level's error when each halving of the element size gains a factor of 1.5 "
+            "or more (docs/run.md, Error estimates)";
+  return l;
+}
+
+template <std::size_t N>
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeLevels<N>& levels, const AnswerAdvice& advice,
                                     std::vector<std::string>& warnings) {
+  const FeHomogenised<N>& fe = levels.fine;
   ReferenceAnswer<N> r;
-  r.fe = fe;
+  r.fe = levels;
   r.stiffness = symmetric_part(fe.stiffness);
   r.bulk_modulus = bulk_modulus(r.stiffness);
   r.shear_modulus = shear_modulus(r.stiffness);
@@ -108,8 +152,7 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
   r.bulk_error = a.verdict.bulk_modulus / r.bulk_modulus - 1.0;
   r.shear_error = a.verdict.shear_modulus / r.shear_modulus - 1.0;
   if (a.thermal && fe.expansion) {
-    const double scale = std::max({std::abs((*fe.expansion)[0]), std::abs((*fe.expansion)[1]),
-                                   std::abs((*fe.expansion)[voigt_dimensions<N>() - 1])});
+    const double scale = expansion_scale<N>(*fe.expansion);
     std::array<double, N> e{};
     for (std::size_t k = 0; k < N; ++k) e[k] = relative_error(a.thermal->expansion[k], (*fe.expansion)[k], scale);
     r.expansion_error = e;
@@ -132,6 +175,46 @@ ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogeni
 }
 
 template <std::size_t N>
+void add_reference(PeriodicAnswer<N>& a, const FeLevels<N>& fe, const AnswerAdvice& advice,
+                   std::vector<std::string>& warnings) {
+  const ReferenceAnswer<N>& r = *(a.reference = reference_answer(a, fe, advice, warnings));
+  const ErrorEstimate<N>& own = fe.estimate;
+  ErrorEstimate<N> e;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) e.stiffness[i][j] = std::abs(r.stiffness_error[i][j]) + own.stiffness[i][j];
+  e.bulk_modulus = std::abs(r.bulk_error) + own.bulk_modulus;
+  e.shear_modulus = std::abs(r.shear_error) + own.shear_modulus;
+  if (r.expansion_error && own.expansion) {
+    std::array<double, N> x{};
+    for (std::size_t k = 0; k < N; ++k) x[k] = std::abs((*r.expansion_error)[k]) + (*own.expansion)[k];
+    e.expansion = x;
+  }
+  e.basis = "the difference from the finite-element reference (effective.reference) plus the reference's own "
+            "estimate (effective.reference.error_estimate)";
+  a.error_estimate = e;
+}
+
+template <std::size_t N>
+PeriodicAnswer<N> fe_answer(const FeLevels<N>& fe, const std::vector<FoamPhase>& phases,
+                            const std::vector<double>& fractions, const FoamOptions& foam, const AnswerAdvice& advice,
+                            std::vector<std::string>& warnings, std::optional<PeriodicAnswer<N>> openfoam) {
+  const FeHomogenised<N>& fine = fe.fine;
+  PeriodicAnswer<N> a = judged_answer(Solver::fe, fine.stiffness, phases, fractions, foam, advice, warnings);
+  a.fe = fe;
+  if (fine.expansion)
+    a.thermal = thermal_answer(foam.delta_T, *fine.expansion, fine.stiffness, phases, foam, advice, warnings);
+  a.error_estimate = fe.estimate;
+  if (openfoam) {
+    a.cases = openfoam->cases;
+    a.volume_average_stiffness = openfoam->volume_average_stiffness;
+    std::vector<std::string> theirs;  // OpenFOAM's answer is not the answer: its doubts are not the run's
+    openfoam->reference = reference_answer(*openfoam, fe, advice, theirs);
+    a.openfoam = std::make_shared<const PeriodicAnswer<N>>(std::move(*openfoam));
+  }
+  return a;
+}
+
+template <std::size_t N>
 std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const std::vector<double>& weight,
                                                 const std::vector<int>& phase, int phases, int loaded, bool balanced) {
   const std::vector<StressTensor> own = cell_stress_tensors(s);
@@ -142,10 +225,20 @@ std::vector<PhaseStresses> state_phase_stresses(const SolvedState<N>& s, const s
 
 template struct PeriodicAnswer<3>;
 template struct PeriodicAnswer<6>;
-template ReferenceAnswer<3> reference_answer(const PeriodicAnswer<3>&, const FeHomogenised<3>&, const AnswerAdvice&,
+template FeLevels<3> fe_levels(const FeHomogenised<3>&, const FeHomogenised<3>&, const std::string&);
+template FeLevels<6> fe_levels(const FeHomogenised<6>&, const FeHomogenised<6>&, const std::string&);
+template ReferenceAnswer<3> reference_answer(const PeriodicAnswer<3>&, const FeLevels<3>&, const AnswerAdvice&,
                                              std::vector<std::string>&);
-template ReferenceAnswer<6> reference_answer(const PeriodicAnswer<6>&, const FeHomogenised<6>&, const AnswerAdvice&,
+template ReferenceAnswer<6> reference_answer(const PeriodicAnswer<6>&, const FeLevels<6>&, const AnswerAdvice&,
                                              std::vector<std::string>&);
+template void add_reference(PeriodicAnswer<3>&, const FeLevels<3>&, const AnswerAdvice&, std::vector<std::string>&);
+template void add_reference(PeriodicAnswer<6>&, const FeLevels<6>&, const AnswerAdvice&, std::vector<std::string>&);
+template PeriodicAnswer<3> fe_answer(const FeLevels<3>&, const std::vector<FoamPhase>&, const std::vector<double>&,
+                                     const FoamOptions&, const AnswerAdvice&, std::vector<std::string>&,
+                                     std::optional<PeriodicAnswer<3>>);
+template PeriodicAnswer<6> fe_answer(const FeLevels<6>&, const std::vector<FoamPhase>&, const std::vector<double>&,
+                                     const FoamOptions&, const AnswerAdvice&, std::vector<std::string>&,
+                                     std::optional<PeriodicAnswer<6>>);
 template MixedAnswer<3> mixed_answer(const MixedHomogenised<3>&, const std::vector<FoamPhase>&,
                                      const std::vector<double>&, const FoamOptions&, const AnswerAdvice&,
                                      std::vector<std::string>&);

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -70,6 +71,43 @@ struct ThermalAnswer {
   std::string plane_state;        // 2D: plane_strain or plane_stress; empty in 3D
 };
 
+// Where a periodic cell's answer comes from (homogenise.solver): OpenFOAM's load cases or
+// the finite-element solve (fe_homogenise.hpp).
+enum class Solver { openfoam, fe };
+
+// How far each reported quantity may lie from the exact answer on the cell's geometry,
+// relative and by the rule of ReferenceAnswer's errors (an entry below a hundredth of the
+// largest on the largest's scale), with what it was measured by (`basis`).
+template <std::size_t N>
+struct ErrorEstimate {
+  Stiffness<N> stiffness{};
+  double bulk_modulus = 0.0, shear_modulus = 0.0;
+  std::optional<std::array<double, N>> expansion;  // when heated
+  std::string basis;
+};
+
+// The finite elements solved on two levels of refinement, `coarse` and `fine` (coarse
+// split in nested refinement: half its element size), and the fine level's error
+// estimate from their difference.
+template <std::size_t N>
+struct FeLevels {
+  FeHomogenised<N> fine, coarse;
+  ErrorEstimate<N> estimate;
+
+  double seconds() const { return fine.seconds + coarse.seconds; }
+};
+
+// How much of the two levels' difference the fine level's error may be: 1 / (r - 1) for a
+// stiffness converging by a factor r per halving of the element size, r >= 1.5 (measured
+// at least 1.67 on contrast-20 cells whose corners make the solution singular, about 3.5
+// at the default contrast: docs/benchmarks.md, fe_nested).
+inline constexpr double kFeLevelFactor = 2.0;
+
+// The fine level's error estimate: each quantity's difference from the coarse level times
+// kFeLevelFactor, relative to the fine one by ReferenceAnswer's rule; `how` the levels.
+template <std::size_t N>
+FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coarse, const std::string& how);
+
 // The finite-element reference beside a periodic answer (fe_homogenise.hpp) and how far
 // the answer lies from it, relative: each stiffness entry's difference over the
 // reference's entry, or over its largest entry where the entry is below a hundredth of it
@@ -77,7 +115,7 @@ struct ThermalAnswer {
 // same rule, over the largest of its normal components.
 template <std::size_t N>
 struct ReferenceAnswer {
-  FeHomogenised<N> fe;
+  FeLevels<N> fe;
   Stiffness<N> stiffness{};  // fe's symmetric part
   double bulk_modulus = 0.0, shear_modulus = 0.0;
   Stiffness<N> stiffness_error{};
@@ -88,20 +126,27 @@ struct ReferenceAnswer {
   double farthest_error = 0.0;
 };
 
-// The periodic load cases' answer: the cases (mechanical ones, then the thermal one), the
-// stiffness judged (verdict: the symmetric part, its symmetry error, K and G, inside the
-// bounds), the bounds at the phases' `fractions`, the engineering constants, the stiffness
-// from the cells' volume averages, and the thermal expansion under a temperature change.
+// The periodic cell's answer (`solver`'s): the stiffness judged (verdict: the symmetric
+// part, its symmetry error, K and G, inside the bounds), the bounds at the phases'
+// `fractions`, the engineering constants, the thermal expansion under a temperature change
+// and each quantity's error estimate. With OpenFOAM's load cases solved, the cases
+// (mechanical ones, then the thermal one) and the stiffness from the cells' volume
+// averages; under solver fe, the finite-element solve (`fe`) and, when OpenFOAM solved
+// too, OpenFOAM's answer beside it (`openfoam`, its reference this answer).
 template <std::size_t N>
 struct PeriodicAnswer {
+  Solver solver = Solver::openfoam;
   std::vector<SolvedLoadCase<N>> cases;
   StiffnessVerdict<N> verdict;
   TensorBounds<N> bounds;
   std::vector<double> fractions;
   EngineeringConstants engineering;
-  Stiffness<N> volume_average_stiffness{};  // symmetric part
+  Stiffness<N> volume_average_stiffness{};  // symmetric part, when cases
   std::optional<ThermalAnswer<N>> thermal;
-  std::optional<ReferenceAnswer<N>> reference;  // homogenise.reference = fe
+  std::optional<ErrorEstimate<N>> error_estimate;  // none: not measured (solver openfoam, reference none)
+  std::optional<FeLevels<N>> fe;                   // solver fe
+  std::optional<ReferenceAnswer<N>> reference;     // solver openfoam, homogenise.reference = fe
+  std::shared_ptr<const PeriodicAnswer<N>> openfoam;  // solver fe, solved by OpenFOAM too
 
   // The most corrections any case took.
   int corrections() const;
@@ -139,14 +184,31 @@ PeriodicAnswer<N> periodic_answer(const PeriodicHomogenised<N>& h, const Thermal
                                   const FoamOptions& foam, const AnswerAdvice& advice,
                                   std::vector<std::string>& warnings);
 
-// The finite-element reference `fe` of the cell put beside the periodic answer `a`, with
-// the answer's errors against it; an answer more than kReferenceTolerance off it (a
-// stiffness entry of its own scale, K or G) a warning naming the farthest, ending in
-// `advice`'s see.
+// The finite-element reference `fe` (its fine level) of the cell put beside the periodic
+// answer `a`, with the answer's errors against it; an answer more than kReferenceTolerance
+// off it (a stiffness entry of its own scale, K or G) a warning naming the farthest,
+// ending in `advice`'s see.
 template <std::size_t N>
-ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeHomogenised<N>& fe, const AnswerAdvice& advice,
+ReferenceAnswer<N> reference_answer(const PeriodicAnswer<N>& a, const FeLevels<N>& fe, const AnswerAdvice& advice,
                                     std::vector<std::string>& warnings);
 inline constexpr double kReferenceTolerance = 0.01;
+
+// The OpenFOAM answer `a` with the finite-element reference `fe` beside it
+// (reference_answer) and its error estimate from it: each quantity's difference from the
+// reference plus the reference's own estimate.
+template <std::size_t N>
+void add_reference(PeriodicAnswer<N>& a, const FeLevels<N>& fe, const AnswerAdvice& advice,
+                   std::vector<std::string>& warnings);
+
+// The finite-element answer (solver fe) from its solve `fe` (its fine level, with its
+// error estimate): judged against the bounds at the phases' `fractions` (foam's plane
+// state in 2D), its expansion under foam.delta_T beside Levin's relation. With `openfoam`
+// (the load cases solved too), their cases and OpenFOAM's answer beside it, its reference
+// this answer. Broken bounds are warnings, as in periodic_answer.
+template <std::size_t N>
+PeriodicAnswer<N> fe_answer(const FeLevels<N>& fe, const std::vector<FoamPhase>& phases,
+                            const std::vector<double>& fractions, const FoamOptions& foam, const AnswerAdvice& advice,
+                            std::vector<std::string>& warnings, std::optional<PeriodicAnswer<N>> openfoam = {});
 
 // The phases' stresses of a solved state (phase_stresses): each cell weighted by `weight`
 // (its area or volume) in its `phase` of `phases`; `loaded` the loaded component's index

@@ -286,10 +286,11 @@ void check_memory(const cholmod_common& analysed, const Eigen::SparseMatrix<doub
                        3.0 * 8.0 * static_cast<double>(loads) * static_cast<double>(unknowns)) / kMiB;
   const double have = o.memory_mib > 0.0 ? o.memory_mib : available_memory_mib();
   auto size = [](double mib) { return mib < 1024.0 ? to_text(mib, 3) + " MiB" : to_text(mib / 1024.0, 3) + " GiB"; };
+  const std::string key = o.reference ? "homogenise.reference" : "homogenise.solver";
   if (need > have)
-    throw ConfigError("homogenise.reference = fe: the finite-element reference of this mesh (" +
-                      std::to_string(unknowns) + " unknowns) needs about " + size(need) + ", more than the " +
-                      size(have) + " available: set homogenise.reference = none, or mesh coarser or fewer grains");
+    throw ConfigError(key + " = fe: the finite elements on this mesh (" + std::to_string(unknowns) +
+                      " unknowns) need about " + size(need) + ", more than the " + size(have) + " available: set " +
+                      key + (o.reference ? " = none" : " = openfoam") + ", or mesh coarser or fewer grains");
 }
 
 template <int D>

@@ -36,14 +36,17 @@ struct FeHomogenised {
 // control group has available, common/memory.hpp).
 struct FeOptions {
   double memory_mib = 0.0;
+  // The key that asked for them, named when they are refused: homogenise.solver, or
+  // homogenise.reference when they are OpenFOAM's reference.
+  bool reference = false;
 };
 
 // The periodic cell `m` homogenised (2D: triangles only, under plane strain or
 // `plane_stress`), with its thermal expansion when `thermal`. Throws GeometryError when
 // the mesh is not periodic, has a cell that is no triangle (2D) or a side point without
 // its image, and when the stiffness matrix is not positive definite (a phase without
-// stiffness, an inverted element); ConfigError naming homogenise.reference when the
-// factor would not fit in memory.
+// stiffness, an inverted element); ConfigError naming homogenise.solver (or
+// homogenise.reference, o.reference) when the factor would not fit in memory.
 FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool thermal, const FeOptions& o = {});
 FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o = {});
 

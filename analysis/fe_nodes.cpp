@@ -114,12 +114,21 @@ std::vector<int> node_unknowns(const ExportMesh<D>& m, const Nodes<D>& n, std::s
       ties.tie(node, other->second);
     }
   }
+  // A class no element uses has no stiffness and no unknowns (a point the mesher left
+  // unused); the held class is the first used point's.
+  std::vector<char> used(n.count, 0);
+  for (const auto& element : n.element)
+    for (const int node : element) used[static_cast<std::size_t>(ties.root(node))] = 1;
   std::vector<int> cls(n.count, -1), first(n.count, -1);
-  const int held = ties.root(0);
+  int held = -1;
+  for (const auto& element : n.element) {
+    held = ties.root(element[0]);
+    break;
+  }
   int next = 0;
   for (std::size_t i = 0; i < n.count; ++i) {
     const int r = ties.root(static_cast<int>(i));
-    if (r == held) continue;
+    if (r == held || used[static_cast<std::size_t>(r)] == 0) continue;
     if (cls[static_cast<std::size_t>(r)] < 0) cls[static_cast<std::size_t>(r)] = next++;
     first[i] = D * cls[static_cast<std::size_t>(r)];
   }

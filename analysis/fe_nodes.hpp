@@ -1,7 +1,8 @@
 // The nodes of a simplicial mesh's quadratic (Lagrange) elements and their unknowns on a
 // periodic cell, for the finite-element reference (fe_homogenise.hpp): the mesh's points,
 // then one node per edge; each node tied to its periodic images (a midside node with the
-// image of its edge), the class of the first point held (a translation is free), and the
+// image of its edge), the class of the first element's first corner held (a translation is
+// free), a point no element uses left without unknowns, and the
 // unknowns numbered in a fill-reducing order for the sparse Cholesky factor (CHOLMOD,
 // inside fe_nodes.cpp only).
 #pragma once
@@ -43,7 +44,7 @@ template <int D>
 struct FeNodes {
   std::vector<std::array<int, Simplex<D>::kNodes>> element;  // per element its nodes, corners then edges
   std::size_t count = 0;                                      // nodes: the points, then the edges'
-  std::vector<int> first;      // per node its unknowns' first index (D in a row), -1 for the held class
+  std::vector<int> first;      // per node its unknowns' first index (D in a row), -1 held or unused
   std::size_t unknowns = 0;    // D per class of tied nodes, the held one excepted
 };
 

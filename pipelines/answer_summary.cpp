@@ -1,6 +1,8 @@
 #include "pipelines/answer_summary.hpp"
 
+#include <array>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -20,8 +22,14 @@ void print_mixed(const MixedAnswer<N>& a) {
   std::printf(", %d corrections\n", a.run.corrections);
 }
 
+// " (±x %)": a quantity's relative error estimate, when there is one.
+std::string plus_minus(const std::optional<double>& estimate) {
+  return estimate ? " (\u00b1" + to_text(100.0 * *estimate, 2) + " %)" : "";
+}
+
+// `stresses`: whether the phases' stresses were averaged (OpenFOAM's fields solved).
 template <std::size_t N>
-void print_periodic(const PeriodicAnswer<N>& a) {
+void print_periodic(const PeriodicAnswer<N>& a, bool stresses) {
   // The normal diagonal, C12 and the first shear's: all an isotropic cell has.
   constexpr std::size_t d = voigt_dimensions<N>();
   const Stiffness<N>& C = a.verdict.stiffness;
@@ -29,31 +37,53 @@ void print_periodic(const PeriodicAnswer<N>& a) {
   for (std::size_t k = 0; k < d; ++k) shown.emplace_back(k, k);
   shown.emplace_back(0, 1);
   shown.emplace_back(d, d);
+  const std::optional<ErrorEstimate<N>>& x = a.error_estimate;
+  auto estimate = [&](auto of) { return x ? std::optional<double>(of(*x)) : std::nullopt; };
   std::string entries;
   for (const auto& [i, j] : shown)
-    entries.append(entries.empty() ? "" : ", ").append(stiffness_name<N>(i, j)).append(" ").append(to_text(C[i][j], 4));
-  std::printf("  solved: %s Pa; K %.4g, G %.4g Pa; symmetric to %.1e (%zu load cases, at most %d corrections)\n",
-              entries.c_str(), a.verdict.bulk_modulus, a.verdict.shear_modulus, a.verdict.symmetry_error,
-              a.cases.size(), a.corrections());
+    entries.append(entries.empty() ? "" : ", ")
+        .append(stiffness_name<N>(i, j))
+        .append(" ")
+        .append(to_text(C[i][j], 4))
+        .append(plus_minus(estimate([&](const ErrorEstimate<N>& e) { return e.stiffness[i][j]; })));
+  const std::string moduli =
+      "K " + to_text(a.verdict.bulk_modulus, 4) + plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.bulk_modulus; })) +
+      ", G " + to_text(a.verdict.shear_modulus, 4) +
+      plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.shear_modulus; }));
+  if (a.solver == Solver::fe)
+    std::printf("  answer (finite elements, %zu unknowns, %.2f s): %s Pa; %s Pa\n", a.fe->fine.unknowns,
+                a.fe->seconds(), entries.c_str(), moduli.c_str());
+  else
+    std::printf("  solved: %s Pa; %s Pa; symmetric to %.1e (%zu load cases, at most %d corrections)\n",
+                entries.c_str(), moduli.c_str(), a.verdict.symmetry_error, a.cases.size(), a.corrections());
+  if (!x) std::printf("  error estimate: not measured (homogenise.reference = fe measures it)\n");
+  if (a.openfoam && a.openfoam->reference)
+    std::printf("  OpenFOAM's load cases: K %.4g, G %.4g Pa, within %.2g %% of the answer (farthest: %s; "
+                "effective.openfoam)\n",
+                a.openfoam->verdict.bulk_modulus, a.openfoam->verdict.shear_modulus,
+                100.0 * a.openfoam->reference->farthest_error, a.openfoam->reference->farthest.c_str());
   if (a.reference) {
     const ReferenceAnswer<N>& r = *a.reference;
     std::printf("  reference (finite elements, %zu unknowns, %.2f s): K %.4g, G %.4g Pa; the answer within %.2g %% of it "
                 "(farthest: %s)\n",
-                r.fe.unknowns, r.fe.seconds, r.bulk_modulus, r.shear_modulus, 100.0 * r.farthest_error, r.farthest.c_str());
+                r.fe.fine.unknowns, r.fe.seconds(), r.bulk_modulus, r.shear_modulus, 100.0 * r.farthest_error, r.farthest.c_str());
   }
   if (!a.thermal) return;
   const ThermalAnswer<N>& t = *a.thermal;
   std::string normals, names;
+  const std::optional<std::array<double, N>> spread = x ? x->expansion : std::nullopt;
   for (std::size_t k = 0; k < d; ++k) {
     normals.append(k == 0 ? "" : ", ").append(to_text(t.expansion[k], 4));
+    if (spread) normals.append(plus_minus((*spread)[k]));
     names.append(k == 0 ? "" : ", ").append(voigt_names<N>()[k]);
   }
   // In plane strain a 2D cell is held out of plane: its in-plane expansion is not a 3D one.
   const bool held = t.plane_state == "plane_strain";
-  std::printf("  thermal%s: free %sexpansion %s 1/K (%s)%s; residual stresses in report.json (stresses.thermal)\n",
+  std::printf("  thermal%s: free %sexpansion %s 1/K (%s)%s%s\n",
               t.plane_state.empty() ? "" : (held ? " (plane strain)" : " (plane stress)"),
               t.plane_state.empty() ? "" : "in-plane ", normals.c_str(), names.c_str(),
-              held ? " (held out of plane: not a 3D expansion, see docs/run.md)" : "");
+              held ? " (held out of plane: not a 3D expansion, see docs/run.md)" : "",
+              stresses ? "; residual stresses in report.json (stresses.thermal)" : "");
 }
 
 }  // namespace
@@ -61,9 +91,9 @@ void print_periodic(const PeriodicAnswer<N>& a) {
 template <std::size_t N>
 void print_answer(const Answer<N>& a) {
   std::visit(
-      [](const auto& e) {
+      [&](const auto& e) {
         if constexpr (std::is_same_v<std::decay_t<decltype(e)>, MixedAnswer<N>>) print_mixed(e);
-        else print_periodic(e);
+        else print_periodic(e, !a.stresses.empty());
       },
       a.effective);
 }

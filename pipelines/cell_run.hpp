@@ -43,8 +43,9 @@ class CellRun {
   virtual std::size_t solved_cells() const = 0;
   // The stage line while solving.
   virtual std::string solving() const = 0;
-  // Solves the cases in `dir` and homogenises; what is doubtful into `warnings`. Throws
-  // SolveError when a solve fails.
+  // Solves the cases in `dir` and homogenises (--solve), or without --solve homogenises by
+  // finite elements alone (homogenise.solver = fe); what is doubtful into `warnings`.
+  // Throws SolveError when a solve fails.
   virtual RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
                           std::vector<std::string>& warnings) = 0;
   // The run's lines on stdout (what was made and written into `out`, and `answer` when

@@ -69,21 +69,23 @@ class PlaneCellRun final : public CellRun {
     return fields;
   }
 
-  std::string solving() const override { return "solving with solidDisplacementFoam"; }
+  std::string solving() const override {
+    return plan_.solve ? "solving with solidDisplacementFoam" : "homogenising with finite elements";
+  }
 
   std::size_t solved_cells() const override { return e_->mesh.cells(); }
 
   RunAnswer solve(const std::filesystem::path& dir, const StagedOutput& staged,
                   std::vector<std::string>& warnings) override {
-    // The reference solves on the triangles, also when the cases have polygons (made for it
-    // then; else the case's own mesh, not copied).
-    std::optional<ExportMesh<2>> triangles;
-    if (plan_.fe_reference && foam_.cells == FoamOptions::Cells::polygons) triangles = grain_export_mesh(*t_, *m_);
-    const ExportMesh<2>* reference = !plan_.fe_reference ? nullptr : triangles ? &*triangles : &*e_;
+    // The finite elements' coarse level (fe_coarse_mesh).
+    std::optional<ExportMesh<2>> coarse;
+    if (plan_.solves_fe()) coarse = grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.triangles.size()));
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
                            .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_,
-                           .reference_mesh = reference};
+                           .fe_mesh = coarse ? &*coarse : nullptr, .solver = plan_.solver,
+                           .fe_mesh_file = plan_.pictures != Pictures::none && plan_.keep_cases};
+    if (!plan_.solve) return homogenise_fe(in, warnings);
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 

@@ -59,6 +59,7 @@ class SolidCellRun final : public CellRun {
   }
 
   std::string solving() const override {
+    if (!plan_.solve) return "homogenising with finite elements";
     return plan_.boundary == Boundary::mixed ? "solving with solidDisplacementFoam (1 case)"
                                              : "solving with solidDisplacementFoam (" + std::to_string(cases()) + " cases)";
   }
@@ -71,7 +72,9 @@ class SolidCellRun final : public CellRun {
                            .deadline = jobs_.tessellate.options.deadline,
                            .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
                            .section_z = section_z_, .unit = unit_,
-                           .reference_mesh = plan_.fe_reference ? &*e_ : nullptr};  // the tetrahedra
+                           .fe_mesh = fe_mesh(), .solver = plan_.solver,
+                           .fe_mesh_file = pictures() && plan_.keep_cases};
+    if (!plan_.solve) return homogenise_fe(in, warnings);
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);
   }
 
@@ -91,6 +94,12 @@ class SolidCellRun final : public CellRun {
 
  private:
   bool pictures() const { return plan_.pictures != Pictures::none; }
+  // The finite elements' coarse level (fe_coarse_mesh); none when they do not solve.
+  const ExportMesh<3>* fe_mesh() {
+    if (!plan_.solves_fe()) return nullptr;
+    fe_mesh_ = grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.tets.size()));
+    return &*fe_mesh_;
+  }
   // The periodic load cases' count: six, and the thermal one.
   int cases() const { return foam_.delta_T == 0.0 ? 6 : 7; }
 
@@ -102,6 +111,7 @@ class SolidCellRun final : public CellRun {
   std::optional<Tessellation3> t_;
   std::optional<GrainMesh3> m_;
   std::optional<ExportMesh<3>> e_;
+  std::optional<ExportMesh<3>> fe_mesh_;
   FoamMesh3 fm_;
   double section_z_ = 0.0;
   Json mesh_fields_;

@@ -45,22 +45,25 @@ std::vector<std::pair<std::string, double>> quantities(const Answer<N>& a) {
 std::string level_key(const Config& c) {
   return cell_dimensions(c) == 3 ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
 }
-// The study's checks: its levels, and no key that fixes an element size.
-void check_study(const Config& c, const ConvergeOptions& o) {
+// The study's checks: its levels, and no key that fixes an element size. Whether its levels
+// are solved by OpenFOAM: not when the finite elements answer (homogenise.solver = fe).
+bool check_study(const Config& c, const ConvergeOptions& o) {
   if (o.levels < 3 || o.levels > 12)
     throw ConfigError("converge: --levels " + std::to_string(o.levels) +
                       ": give 3 to 12 (Richardson extrapolation needs three levels)");
   if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
-  read_run_plan(c, /*solve=*/true);
+  const bool openfoam = read_run_plan(c, /*solve=*/true).solver == Solver::openfoam;
   for (const auto& [key, value] : c.entries())
     if (key == "mesh.size" || key == "mesh.h" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
       c.fail(key, "fixes an element size, which would not follow the study's levels (" + level_key(c) +
                       "); remove it to study convergence");
+  return openfoam;
 }
 
 // Runs the levels into `dir`; a failed solve keeps the study so far as DIR.failed.
-Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged, const ConvergeOptions& o) {
+Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged, const ConvergeOptions& o,
+                  bool openfoam) {
   const std::filesystem::path dir = staged.dir();
   Levels l;
   std::vector<std::string>& names = l.names;
@@ -76,7 +79,7 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
                  l.dimensions == 3 ? "tetrahedra" : "triangles");
     RunResult run;
     try {
-      run = run_run_command(level, dir / name, /*solve=*/true, /*quiet=*/true, /*summary=*/false);
+      run = run_run_command(level, dir / name, /*solve=*/openfoam, /*quiet=*/true, /*summary=*/false);
     } catch (const SolveError& e) {
       // Kept for a look, as a run keeps its failed solve: the study so far as DIR.failed,
       // the message naming the log where it now is.
@@ -107,12 +110,12 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
 }  // namespace
 
 void run_converge_command(const Config& c, const std::filesystem::path& out, const ConvergeOptions& o) {
-  check_study(c, o);
+  const bool openfoam = check_study(c, o);
   claim_output(out, "converge");
   StagedOutput staged(out, "converge");
   const std::filesystem::path dir = staged.dir();
   const std::string ini = config_ini(c);
-  const Levels l = run_levels(c, ini, staged, o);
+  const Levels l = run_levels(c, ini, staged, o, openfoam);
   const Study st = study_of(l);
   write_text_file(dir / "convergence.csv", convergence_csv(l, st));
   write_convergence_png(dir / "convergence.png", l, st);

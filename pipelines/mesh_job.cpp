@@ -141,4 +141,18 @@ MeshJob<3> resolve_mesh_job(MeshJob<3> job, const Tessellation3& t) {
 MeshJob<2> read_mesh_job(const Config& config, const Tessellation& t) { return resolve_mesh_job(read_mesh_job<2>(config), t); }
 MeshJob<3> read_mesh_job(const Config& config, const Tessellation3& t) { return resolve_mesh_job(read_mesh_job<3>(config), t); }
 
+MeshJob<2> scaled_mesh_job(MeshJob<2> job, double factor) {
+  GrainMeshOptions& o = job.options;
+  o.size *= factor;
+  for (double& size : o.phase_size) size *= factor;
+  o.boundary_size *= factor;
+  o.junction_size *= factor;
+  return job;
+}
+
+MeshJob<3> scaled_mesh_job(MeshJob<3> job, double factor) {
+  job.options.size *= factor;
+  return job;
+}
+
 }  // namespace grainmesh

@@ -64,6 +64,12 @@ MeshJob<3> read_mesh_job<3>(const Config& config);
 MeshJob<2> resolve_mesh_job(MeshJob<2> job, const Tessellation& t);
 MeshJob<3> resolve_mesh_job(MeshJob<3> job, const Tessellation3& t);
 
+// A resolved job's sizes (element edge lengths: the size, per phase, on boundaries and at
+// junctions) times `factor`: the same cell meshed coarser (the finite elements' coarse
+// level, factor 2).
+MeshJob<2> scaled_mesh_job(MeshJob<2> job, double factor);
+MeshJob<3> scaled_mesh_job(MeshJob<3> job, double factor);
+
 // Both at once (the mesh command's and the tests' way).
 MeshJob<2> read_mesh_job(const Config& config, const Tessellation& t);
 MeshJob<3> read_mesh_job(const Config& config, const Tessellation3& t);

@@ -40,6 +40,32 @@ GrainMesh3 run_mesh_job(const Tessellation3& t, const MeshJob<3>& job, Warnings&
   return m;
 }
 
+namespace {
+
+std::size_t element_count(const GrainMesh& m) { return m.mesh.triangles.size(); }
+std::size_t element_count(const GrainMesh3& m) { return m.mesh.tets.size(); }
+
+template <int D, class Cell>
+auto coarse_mesh(const Cell& t, MeshJob<D> job, std::size_t cells) {
+  if constexpr (D == 2) job.options.progress = nullptr;
+  Warnings quiet(false);
+  auto coarse = run_mesh_job(t, scaled_mesh_job(job, 2.0), quiet);
+  const double fine = std::pow(2.0, D) * static_cast<double>(element_count(coarse));
+  if (fine > 1.25 * static_cast<double>(cells))
+    coarse = run_mesh_job(t, scaled_mesh_job(job, 2.0 * std::pow(fine / static_cast<double>(cells), 1.0 / D)), quiet);
+  return coarse;
+}
+
+}  // namespace
+
+GrainMesh fe_coarse_mesh(const Tessellation& t, const MeshJob<2>& job, std::size_t cells) {
+  return coarse_mesh<2>(t, job, cells);
+}
+
+GrainMesh3 fe_coarse_mesh(const Tessellation3& t, const MeshJob<3>& job, std::size_t cells) {
+  return coarse_mesh<3>(t, job, cells);
+}
+
 Json write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, const GrainMesh& m,
                       const MeshJob<2>& job, const Drawing& drawing, Warnings& warnings) {
   const MeshQuality q = measure_quality(m.mesh);

@@ -22,6 +22,13 @@ namespace grainmesh {
 GrainMesh run_mesh_job(const Tessellation& t, const MeshJob<2>& job, Warnings& warnings);
 GrainMesh3 run_mesh_job(const Tessellation3& t, const MeshJob<3>& job, Warnings& warnings);
 
+// The finite elements' coarse level of a cell whose run mesh has `cells` elements: meshed
+// at twice the job's sizes, and once more, coarser, when its nested refinement (2^D
+// children a cell) would hold more than 1.25 times `cells`: the fine level then costs
+// about what the run's mesh would. Quietly: the run's mesh has had its warnings.
+GrainMesh fe_coarse_mesh(const Tessellation& t, const MeshJob<2>& job, std::size_t cells);
+GrainMesh3 fe_coarse_mesh(const Tessellation3& t, const MeshJob<3>& job, std::size_t cells);
+
 // Writes mesh.vtu (cell arrays grain, phase, quality; 3D also region) into `dir` and, when
 // drawing.pictures, mesh.png (3D: the section at the job's height); 2D also mesh.json (the
 // cell and phases, for the export) and, when drawing.detail, mesh_detail.png. A poor mesh

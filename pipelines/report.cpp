@@ -43,7 +43,7 @@ Json read_json(const std::filesystem::path& file) {
 }
 
 void Warnings::add(const std::string& warning) {
-  std::fprintf(stderr, "grainmesh: warning: %s\n", warning.c_str());
+  if (echo_) std::fprintf(stderr, "grainmesh: warning: %s\n", warning.c_str());
   lines_.push_back(warning);
 }
 

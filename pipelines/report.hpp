@@ -39,10 +39,14 @@ Json read_json(const std::filesystem::path& file);
 // for report.json's "warnings".
 class Warnings {
  public:
+  // `echo`: each warning also on stderr as it is added (a run's); without, only kept.
+  Warnings() = default;
+  explicit Warnings(bool echo) : echo_(echo) {}
   void add(const std::string& warning);
   const std::vector<std::string>& all() const { return lines_; }
 
  private:
+  bool echo_ = true;
   std::vector<std::string> lines_;
 };
 

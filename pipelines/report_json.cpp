@@ -79,38 +79,107 @@ void add_thermal(const ThermalAnswer<N>& t, Json& e) {
   e["thermal"] = thermal;
 }
 
-// The finite-element reference: reference {method, stiffness, bulk_modulus, shear_modulus,
-// thermal_expansion when heated, unknowns, seconds} and the answer's
-// discretisation_error against it {stiffness {Cij}, bulk_modulus, shear_modulus,
-// thermal_expansion}, relative (ReferenceAnswer).
+// The finite elements' method, as report.json names it.
 template <std::size_t N>
-void add_reference(const ReferenceAnswer<N>& r, Json& e) {
-  Json ref{{"method", N == 3 ? "finite elements: 6-node triangles, periodic" : "finite elements: 10-node tetrahedra, periodic"},
-           {"stiffness", stiffness_json<N>(r.stiffness)},
-           {"bulk_modulus", r.bulk_modulus},
-           {"shear_modulus", r.shear_modulus}};
-  if (r.fe.expansion) ref["thermal_expansion"] = voigt_json<N>(*r.fe.expansion);
-  ref["unknowns"] = r.fe.unknowns;
-  ref["seconds"] = r.fe.seconds;
-  e["reference"] = ref;
+const char* fe_method() {
+  return N == 3 ? "finite elements: 6-node triangles, periodic" : "finite elements: 10-node tetrahedra, periodic";
+}
+
+// An answer's relative errors against the finite elements: {stiffness {Cij},
+// bulk_modulus, shear_modulus, thermal_expansion when heated} (ReferenceAnswer).
+template <std::size_t N>
+Json discretisation_error_json(const ReferenceAnswer<N>& r) {
   Json error{{"stiffness", stiffness_json<N>(r.stiffness_error)},
              {"bulk_modulus", r.bulk_error},
              {"shear_modulus", r.shear_error}};
   if (r.expansion_error) error["thermal_expansion"] = voigt_json<N>(*r.expansion_error);
-  e["discretisation_error"] = error;
+  return error;
 }
 
-// The periodic load cases: boundary, the judged stiffness (stiffness, symmetry_error,
+// The finite-element reference: reference {method, stiffness, bulk_modulus, shear_modulus,
+// thermal_expansion when heated, unknowns, seconds} and the answer's
+// discretisation_error against it.
+// The error estimate: error_estimate {stiffness {Cij}, bulk_modulus, shear_modulus,
+// thermal_expansion when heated, basis}, relative.
+template <std::size_t N>
+Json error_estimate_json(const ErrorEstimate<N>& x) {
+  Json e{{"stiffness", stiffness_json<N>(x.stiffness)}, {"bulk_modulus", x.bulk_modulus}, {"shear_modulus", x.shear_modulus}};
+  if (x.expansion) e["thermal_expansion"] = voigt_json<N>(*x.expansion);
+  e["basis"] = x.basis;
+  return e;
+}
+
+// The finite elements' solve: {method, unknowns, seconds (both levels'), coarse {unknowns,
+// seconds}}.
+template <std::size_t N>
+Json fe_solve_json(const FeLevels<N>& l) {
+  return {{"method", fe_method<N>()},
+          {"unknowns", l.fine.unknowns},
+          {"seconds", l.seconds()},
+          {"coarse", {{"unknowns", l.coarse.unknowns}, {"seconds", l.coarse.seconds}}}};
+}
+
+// The finite-element reference: reference {stiffness, bulk_modulus, shear_modulus,
+// thermal_expansion when heated, error_estimate, and its solve (fe_solve_json)} and the
+// answer's discretisation_error against it.
+template <std::size_t N>
+void add_reference(const ReferenceAnswer<N>& r, Json& e) {
+  Json ref{{"stiffness", stiffness_json<N>(r.stiffness)},
+           {"bulk_modulus", r.bulk_modulus},
+           {"shear_modulus", r.shear_modulus}};
+  if (r.fe.fine.expansion) ref["thermal_expansion"] = voigt_json<N>(*r.fe.fine.expansion);
+  ref["error_estimate"] = error_estimate_json(r.fe.estimate);
+  ref.update(fe_solve_json(r.fe));
+  e["reference"] = ref;
+  e["discretisation_error"] = discretisation_error_json(r);
+}
+
+// OpenFOAM's answer beside the finite elements' (solver fe, solved): openfoam {stiffness,
+// symmetry_error, bulk_modulus, shear_modulus, engineering, thermal_expansion when heated,
+// discretisation_error against the answer}.
+template <std::size_t N>
+Json openfoam_json(const PeriodicAnswer<N>& o) {
+  Json j{{"stiffness", stiffness_json<N>(o.verdict.stiffness)},
+         {"symmetry_error", o.verdict.symmetry_error},
+         {"bulk_modulus", o.verdict.bulk_modulus},
+         {"shear_modulus", o.verdict.shear_modulus}};
+  Json& engineering = j["engineering"] = Json::object();
+  for (const EngineeringConstants::Named& n : o.engineering.constants) engineering[n.name] = n.value;
+  if (o.thermal) j["thermal_expansion"] = voigt_json<N>(o.thermal->expansion);
+  if (o.reference) j["discretisation_error"] = discretisation_error_json(*o.reference);
+  return j;
+}
+
+// The load cases as solved by OpenFOAM: load_cases [{name, strain, stress, delta_T when
+// heated, then its solve}], corrections (the most any case took), volume_average
+// {stiffness}.
+template <std::size_t N>
+void add_load_cases(const PeriodicAnswer<N>& a, const std::filesystem::path& dir, Json& e) {
+  Json cases = Json::array();
+  for (const SolvedLoadCase<N>& c : a.cases) {
+    Json j{{"name", c.load.name}, {"strain", voigt_json<N>(c.load.strain)}, {"stress", voigt_json<N>(c.stress)}};
+    if (c.load.delta_T != 0.0) j["delta_T"] = c.load.delta_T;
+    j.update(solve_json(c.run, dir));
+    cases.push_back(j);
+  }
+  e["load_cases"] = cases;
+  e["corrections"] = a.corrections();
+  e["volume_average"] = {{"stiffness", stiffness_json<N>(a.volume_average_stiffness)}};
+}
+
+// The periodic answer: boundary, solver, the judged stiffness (stiffness, symmetry_error,
 // bulk_modulus, shear_modulus), volume_fractions, the bounds (voigt, reuss,
 // hashin_shtrikman {bulk_lower, bulk_upper, shear_lower, shear_upper}), bounds_tolerance,
-// inside_bounds, engineering, anisotropy, the thermal expansion, load_cases [{name,
-// strain, stress, delta_T when heated, then its solve}], corrections (the most any case
-// took), volume_average {stiffness}, and the reference with the errors against it.
+// inside_bounds, engineering, anisotropy, the thermal expansion, error_estimate; the
+// finite elements' solve (solver fe: finite_elements {method, unknowns, seconds}); the
+// OpenFOAM load cases when solved, OpenFOAM's answer beside the finite elements'
+// (openfoam) or the reference beside OpenFOAM's with the errors against it.
 template <std::size_t N>
 Json periodic_json(const PeriodicAnswer<N>& a, const std::filesystem::path& dir) {
   const StiffnessVerdict<N>& v = a.verdict;
   const TensorBounds<N>& b = a.bounds;
   Json e{{"boundary", "periodic"},
+         {"solver", a.solver == Solver::fe ? "fe" : "openfoam"},
          {"stiffness", stiffness_json<N>(v.stiffness)},
          {"symmetry_error", v.symmetry_error},
          {"bulk_modulus", v.bulk_modulus},
@@ -132,16 +201,10 @@ Json periodic_json(const PeriodicAnswer<N>& a, const std::filesystem::path& dir)
   if (a.engineering.normal_anisotropy) anisotropy["normal"] = *a.engineering.normal_anisotropy;
   if (a.engineering.shear_anisotropy) anisotropy["shear"] = *a.engineering.shear_anisotropy;
   if (a.thermal) add_thermal(*a.thermal, e);
-  Json cases = Json::array();
-  for (const SolvedLoadCase<N>& c : a.cases) {
-    Json j{{"name", c.load.name}, {"strain", voigt_json<N>(c.load.strain)}, {"stress", voigt_json<N>(c.stress)}};
-    if (c.load.delta_T != 0.0) j["delta_T"] = c.load.delta_T;
-    j.update(solve_json(c.run, dir));
-    cases.push_back(j);
-  }
-  e["load_cases"] = cases;
-  e["corrections"] = a.corrections();
-  e["volume_average"] = {{"stiffness", stiffness_json<N>(a.volume_average_stiffness)}};
+  if (a.error_estimate) e["error_estimate"] = error_estimate_json(*a.error_estimate);
+  if (a.fe) e["finite_elements"] = fe_solve_json(*a.fe);
+  if (!a.cases.empty()) add_load_cases(a, dir, e);
+  if (a.openfoam) e["openfoam"] = openfoam_json(*a.openfoam);
   if (a.reference) add_reference(*a.reference, e);
   return e;
 }

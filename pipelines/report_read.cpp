@@ -28,6 +28,7 @@ Json expansion_names(const Json& a) {
 }
 
 void upgrade_effective(Json& e) {
+  if (e.contains("stiffness") && !e.contains("solver")) e["solver"] = "openfoam";  // the only one there was
   for (const char* key : {"stiffness", "voigt", "reuss"})
     if (e.contains(key)) e[key] = symmetric_stiffness(e[key]);
   if (e.contains("volume_average") && e["volume_average"].contains("stiffness"))
@@ -106,6 +107,9 @@ Json read_report(const std::filesystem::path& file) {
     throw IoError(file.string() + ": report schema " + r["schema"].dump() + " is not one this grainmesh reads (" +
                   std::to_string(kReportSchema) + " and the unversioned schema 1); collect it with the grainmesh "
                   "that wrote it");
+  // Written before homogenise.solver: OpenFOAM's answer.
+  if (r.contains("effective") && r["effective"].contains("stiffness") && !r["effective"].contains("solver"))
+    r["effective"]["solver"] = "openfoam";
   return r;
 }
 

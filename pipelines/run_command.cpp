@@ -58,14 +58,14 @@ void add_stage_figures(Json& report, const StageLog& log, Json seconds) {
 RunAnswer solve_stage(CellRun& cell, const RunPlan& plan, StagedOutput& staged, const Deadline& deadline, StageLog& log,
                  Json& report, Warnings& warnings) {
   std::vector<std::string> solve_warnings;
-  check_case_mesh(staged.dir(), deadline, report, warnings);
+  if (plan.solve) check_case_mesh(staged.dir(), deadline, report, warnings);
   try {
     RunAnswer answer = cell.solve(staged.dir(), staged, solve_warnings);
     std::visit(
         [&](const auto& a) {
           report["effective"] = effective_json(a, staged.dir());
-          report["effective"]["processes"] = plan.foam.processes;
-          report["stresses"] = stresses_json(a);
+          if (plan.solve) report["effective"]["processes"] = plan.foam.processes;
+          if (!a.stresses.empty()) report["stresses"] = stresses_json(a);
         },
         answer);
     for (const std::string& w : solve_warnings) warnings.add(w);
@@ -138,7 +138,7 @@ RunResult run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline,
 
   RunResult result;
   result.solved_cells = cell.solved_cells();
-  if (plan.solve) {
+  if (plan.answers()) {
     log.begin(/*with_children=*/true);
     stage.show(cell.solving());
     result.answer = solve_stage(cell, plan, staged, deadline, log, report, warnings);

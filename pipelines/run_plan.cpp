@@ -43,6 +43,19 @@ int read_solve_processes(const Config& c) {
   return static_cast<int>(processes);
 }
 
+// homogenise.solver: where a periodic cell's answer comes from; the finite elements unless
+// told otherwise (the mixed load is OpenFOAM's alone).
+Solver read_solver(const Config& c) {
+  const bool periodic = read_boundary(c) == Boundary::periodic;
+  if (!c.has("homogenise.solver")) return periodic ? Solver::fe : Solver::openfoam;
+  const std::string s = c.text("homogenise.solver");
+  if (s != "openfoam" && s != "fe") c.fail("homogenise.solver", "must be openfoam or fe, got '" + s + "'");
+  if (s == "fe" && !periodic)
+    c.fail("homogenise.solver", "fe homogenises a periodic cell: it needs homogenise.boundary = periodic (the mixed "
+                                "load is solved by OpenFOAM)");
+  return s == "fe" ? Solver::fe : Solver::openfoam;
+}
+
 // homogenise.reference: whether the finite-element reference is solved beside the answer.
 bool read_reference(const Config& c, bool solve) {
   const std::string r = c.has("homogenise.reference") ? c.text("homogenise.reference") : "none";
@@ -50,6 +63,9 @@ bool read_reference(const Config& c, bool solve) {
   if (r == "none") return false;
   if (read_boundary(c) != Boundary::periodic)
     c.fail("homogenise.reference", "fe needs homogenise.boundary = periodic: the reference homogenises a periodic cell");
+  if (read_solver(c) == Solver::fe)
+    c.fail("homogenise.reference", "fe is the answer already (homogenise.solver = fe; with --solve OpenFOAM's answer "
+                                   "is put beside it): the reference is for homogenise.solver = openfoam");
   if (!solve) c.fail("homogenise.reference", "fe is solved beside the OpenFOAM load cases: it needs --solve");
   return true;
 }
@@ -82,7 +98,7 @@ double read_delta_T(const Config& c) {
 const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
                                              "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
-                                             "homogenise.boundary", "homogenise.reference", "solve.processes", "output.pictures",
+                                             "homogenise.boundary", "homogenise.solver", "homogenise.reference", "solve.processes", "output.pictures",
                                              "output.cases"};
   return keys;
 }
@@ -168,6 +184,7 @@ RunPlan read_run_plan(const Config& c, bool solve) {
   }
   s.format_given = c.has("export.format");
   s.boundary = read_boundary(c);
+  s.solver = read_solver(c);
   s.fe_reference = read_reference(c, solve);
   s.pictures = read_pictures(c);
   s.keep_cases = read_keep_cases(c, solve);

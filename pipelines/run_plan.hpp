@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "analysis/answer.hpp"
 #include "analysis/homogenise.hpp"
 #include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
@@ -37,6 +38,7 @@ struct RunPlan {
   FoamOptions foam;
   bool format_given = false;  // export.format given: a large case is not made binary
   Boundary boundary = Boundary::mixed;
+  Solver solver = Solver::openfoam;  // homogenise.solver: where a periodic cell's answer comes from
   bool fe_reference = false;  // homogenise.reference = fe: the finite-element reference beside the answer
   Pictures pictures = Pictures::all;
   bool solve = false;
@@ -44,6 +46,11 @@ struct RunPlan {
   std::vector<std::string> warnings;    // what the config's load makes doubtful (check_load)
 
   int dimensions() const { return cell.index() == 0 ? 2 : 3; }
+  // Whether the run solves by finite elements: the answer's solver or its reference.
+  bool solves_fe() const { return solver == Solver::fe || fe_reference; }
+  // Whether the run has an answer: solved by OpenFOAM (--solve), or by finite elements
+  // without it.
+  bool answers() const { return solve || solver == Solver::fe; }
 };
 
 // Reads and checks every key of a run config (`solve`: the run solves, --solve).

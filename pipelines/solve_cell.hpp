@@ -58,9 +58,12 @@ struct SolveInput {
   bool all_pictures = false;  // 2D only
   double section_z = 0.0;     // 3D only, mesh units
   std::string unit{};         // the pictures' length unit (length_unit_name of convert_to_meters)
-  // homogenise.reference = fe: the simplices the finite-element reference solves on (2D
-  // the triangles, also when the cases have the dual's polygons); none without it.
-  const ExportMesh<D>* reference_mesh = nullptr;
+  // The finite elements' coarse level (homogenise.solver or reference = fe): the cell
+  // meshed coarser (fe_coarse_mesh); they solve on it and on its nested refinement
+  // (fe_cell_answer). None without them.
+  const ExportMesh<D>* fe_mesh = nullptr;
+  Solver solver = Solver::openfoam;  // homogenise.solver: whose answer is reported
+  bool fe_mesh_file = false;         // the finite elements' fine level written as fe_mesh.vtu
 };
 
 // The mixed (thesis) load's answer (case/): the modulus (2D: in the plane state; 3D:
@@ -79,5 +82,21 @@ CellAnswer<3> homogenise_mixed(const SolveInput<3>& in, std::vector<std::string>
 // the answer (reference_answer), an answer more than 1 % off it a warning.
 CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings);
 CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::string>& warnings);
+
+// The periodic cell's answer by finite elements alone (homogenise.solver = fe without
+// --solve: no OpenFOAM case is solved, so no stress statistics and no field pictures).
+CellAnswer<2> homogenise_fe(const SolveInput<2>& in, std::vector<std::string>& warnings);
+CellAnswer<3> homogenise_fe(const SolveInput<3>& in, std::vector<std::string>& warnings);
+
+// The finite elements' part of a periodic cell's answer, solved on two levels:
+// in.fe_mesh and its nested refinement (split_nested), the finer one's answer with the
+// error estimate from both (fe_levels), its mesh written as fe_mesh.vtu in in.dir when
+// in.fe_mesh_file. Under solver openfoam the reference beside OpenFOAM's answer `solved`
+// (add_reference); under solver fe the answer (fe_answer) with the phases at `fractions`,
+// and OpenFOAM's answer beside it with its stresses when `solved`. A broken bound a
+// warning ending in `advice`'s.
+template <int D>
+CellAnswer<D> fe_cell_answer(const SolveInput<D>& in, const std::vector<double>& fractions, const AnswerAdvice& advice,
+                             std::optional<CellAnswer<D>> solved, std::vector<std::string>& warnings);
 
 }  // namespace grainmesh

@@ -4,7 +4,6 @@
 
 #include "analysis/bounds.hpp"
 #include "analysis/check_mesh.hpp"
-#include "analysis/fe_homogenise.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
@@ -46,7 +45,7 @@ StateStresses state_stresses(const std::string& state, const SolvedState<3>& s, 
 }  // namespace
 
 CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, reference_mesh] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, solver, fe_mesh_file] = in;
 
   const MixedHomogenised<3> h = solve_mixed(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   if (picture_width > 0) {
@@ -61,7 +60,7 @@ CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>
 }
 
 CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, reference_mesh] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, solver, fe_mesh_file] = in;
 
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
   const PeriodicHomogenised<3> h =
@@ -69,9 +68,10 @@ CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::stri
                      load_case_dirs(loads, staged.failed_dir()));
   std::optional<ThermalResidual<3>> thermal;
   if (foam.delta_T != 0.0) thermal = thermal_residual(h);
+  std::vector<std::string> openfoams;  // OpenFOAM's doubts, when its answer is not the one reported
   CellAnswer<2> answer{
       .effective = periodic_answer(h, thermal ? &*thermal : nullptr, e.phases, achieved_fractions(t), foam, kAdvice,
-                                   warnings),
+                                   in.solver == Solver::fe ? openfoams : warnings),
       .phase_names = phase_names(t.phases),
       .stresses = {}};
   std::vector<SolvedFields> solved;
@@ -91,12 +91,12 @@ CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::stri
   }
   if (picture_width > 0) write_results_vtu(dir / "results.vtu", e, phase_names(t.phases), solved, foam.convert_to_meters);
   write_field_pictures(dir, h.cases[0].fields, h.cases[0].cell_stress, e, picture_width, all_pictures, unit);
-  if (reference_mesh != nullptr) {
-    auto& periodic = std::get<PeriodicAnswer<3>>(answer.effective);
-    periodic.reference = reference_answer(
-        periodic, fe_homogenise(*reference_mesh, foam.plane_stress, foam.delta_T != 0.0), kAdvice, warnings);
-  }
-  return answer;
+  if (fe_mesh == nullptr) return answer;
+  return fe_cell_answer(in, achieved_fractions(t), kAdvice, std::move(answer), warnings);
+}
+
+CellAnswer<2> homogenise_fe(const SolveInput<2>& in, std::vector<std::string>& warnings) {
+  return fe_cell_answer(in, achieved_fractions(in.t), kAdvice, {}, warnings);
 }
 
 }  // namespace grainmesh

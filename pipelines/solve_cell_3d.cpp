@@ -4,7 +4,6 @@
 #include <tuple>
 
 #include "analysis/bounds.hpp"
-#include "analysis/fe_homogenise.hpp"
 #include "analysis/phase_statistics.hpp"
 #include "analysis/results_vtu.hpp"
 #include "analysis/thermal.hpp"
@@ -108,8 +107,9 @@ CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::stri
                      in.deadline, load_case_dirs(loads, in.staged.failed_dir()));
   std::optional<ThermalResidual<6>> thermal;
   if (in.foam.delta_T != 0.0) thermal = thermal_residual(h);
+  std::vector<std::string> openfoams;  // OpenFOAM's doubts, when its answer is not the one reported
   CellAnswer<3> answer{.effective = periodic_answer(h, thermal ? &*thermal : nullptr, in.e.phases, volume_fractions(in),
-                                                    in.foam, kAdvice, warnings),
+                                                    in.foam, kAdvice, in.solver == Solver::fe ? openfoams : warnings),
                        .phase_names = phase_names(in.t.phases),
                        .stresses = {}};
   // The thermal case at its fixed strain is no state of its own: its free state is below.
@@ -122,12 +122,12 @@ CellAnswer<3> homogenise_periodic(const SolveInput<3>& in, std::vector<std::stri
   }
   write_state_pictures(in, h.cases[0].fields, "xx", "");
   write_periodic_results_vtu(in, h, thermal ? &*thermal : nullptr);
-  if (in.reference_mesh != nullptr) {
-    auto& periodic = std::get<PeriodicAnswer<6>>(answer.effective);
-    periodic.reference =
-        reference_answer(periodic, fe_homogenise(*in.reference_mesh, in.foam.delta_T != 0.0), kAdvice, warnings);
-  }
-  return answer;
+  if (in.fe_mesh == nullptr) return answer;
+  return fe_cell_answer(in, volume_fractions(in), kAdvice, std::move(answer), warnings);
+}
+
+CellAnswer<3> homogenise_fe(const SolveInput<3>& in, std::vector<std::string>& warnings) {
+  return fe_cell_answer(in, volume_fractions(in), kAdvice, {}, warnings);
 }
 
 }  // namespace grainmesh

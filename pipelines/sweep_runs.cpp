@@ -17,6 +17,32 @@ constexpr double kT975[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.
                             2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
                             2.074, 2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
 
+// A periodic answer's columns beside its tensor: each quantity's error estimate,
+// OpenFOAM's answer beside the finite elements' (solver fe, --solve) and the reference
+// beside OpenFOAM's (solver openfoam), each with the errors against the other.
+template <class Add>
+void add_solver_columns(const Json& e, Add& add) {
+  // A quantity set {stiffness {Cij}, bulk_modulus, shear_modulus} as columns PREFIX_...
+  auto columns = [&](const std::string& prefix, const Json& q) {
+    for (const auto& [c, value] : q["stiffness"].items()) add(prefix + c, value);
+    for (const char* m : {"bulk_modulus", "shear_modulus"}) add(prefix + m, q[m]);
+  };
+  if (e.contains("error_estimate")) {
+    const Json& x = e["error_estimate"];
+    columns("error_estimate_", x);
+    if (x.contains("thermal_expansion"))
+      for (const auto& [c, value] : x["thermal_expansion"].items()) add("error_estimate_thermal_expansion_" + c, value);
+  }
+  if (e.contains("openfoam")) {
+    columns("openfoam_", e["openfoam"]);
+    columns("discretisation_error_", e["openfoam"]["discretisation_error"]);
+  }
+  if (e.contains("reference")) {
+    columns("reference_", e["reference"]);
+    columns("discretisation_error_", e["discretisation_error"]);
+  }
+}
+
 // One done run's report into `pr`; `names` gets each extra column's name the first time.
 void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& tensor, PointRuns& pr,
              std::vector<std::string>& names) {
@@ -69,15 +95,7 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
     add("reuss_C11", e["reuss"]["C11"]);
     if (e.contains("hashin_shtrikman"))
       for (const char* b : {"bulk_lower", "bulk_upper", "shear_lower", "shear_upper"}) add(std::string("hs_") + b, e["hashin_shtrikman"][b]);
-    if (e.contains("reference")) {
-      // The finite-element reference (homogenise.reference = fe) and the answer's relative
-      // error against it, per realisation.
-      for (const auto& [c, value] : e["reference"]["stiffness"].items()) add("reference_" + c, value);
-      for (const char* m : {"bulk_modulus", "shear_modulus"}) add(std::string("reference_") + m, e["reference"][m]);
-      for (const auto& [c, value] : e["discretisation_error"]["stiffness"].items()) add("discretisation_error_" + c, value);
-      for (const char* m : {"bulk_modulus", "shear_modulus"})
-        add(std::string("discretisation_error_") + m, e["discretisation_error"][m]);
-    }
+    add_solver_columns(e, add);
     return;
   }
   pr.modulus.push_back(e["modulus"].get<double>());

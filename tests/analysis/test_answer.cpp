@@ -139,13 +139,26 @@ void check_mixed() {
   CHECK(warnings.empty());
 }
 
+// Two finite-element levels whose fine one is `c`, the coarse one `c` with its diagonal
+// entry k times `factor`.
+template <std::size_t N>
+FeLevels<N> two_levels(const Stiffness<N>& c, std::size_t k, double factor) {
+  FeHomogenised<N> fine, coarse;
+  fine.stiffness = coarse.stiffness = c;
+  coarse.stiffness[k][k] *= factor;
+  return fe_levels(fine, coarse, "test");
+}
+
 // The answer beside a finite-element reference: on it, errors zero and no warning; its
-// C11 2 % above, that error stated and one warning naming it.
+// C11 2 % above, that error stated and one warning naming it; the answer's error estimate
+// that error plus the reference's own (twice its two levels' difference: 0.5 % in C11).
 template <std::size_t N>
 void check_reference() {
   const Stiffness<N> c = inside_stiffness<N>();
-  FeHomogenised<N> fe;
-  fe.stiffness = c;
+  const FeLevels<N> fe = two_levels(c, 0, 1.005);
+  CHECK(fe.estimate.stiffness[0][0] == Approx(0.01).epsilon(1e-9));
+  CHECK(fe.estimate.stiffness[1][1] == 0.0);
+  CHECK(fe.estimate.bulk_modulus > 0.0);
   std::vector<std::string> warnings;
   const PeriodicAnswer<N> same = periodic_answer<N>(cases_of<N>(c, 0.0), nullptr, kPhases, kFractions, FoamOptions{},
                                                     kAdvice, warnings);
@@ -155,15 +168,49 @@ void check_reference() {
   CHECK(std::abs(r.stiffness_error[0][0]) < 1e-12);
   Stiffness<N> off = c;
   off[0][0] *= 1.02;
-  const PeriodicAnswer<N> a = periodic_answer<N>(cases_of<N>(off, 0.0), nullptr, kPhases, kFractions, FoamOptions{},
-                                                 kAdvice, warnings);
+  PeriodicAnswer<N> a = periodic_answer<N>(cases_of<N>(off, 0.0), nullptr, kPhases, kFractions, FoamOptions{},
+                                           kAdvice, warnings);
   REQUIRE(warnings.empty());  // still inside the bounds
-  const ReferenceAnswer<N> e = reference_answer(a, fe, kAdvice, warnings);
+  CHECK_FALSE(a.error_estimate);  // not measured without the reference
+  add_reference(a, fe, kAdvice, warnings);
+  const ReferenceAnswer<N>& e = *a.reference;
   CHECK(e.stiffness_error[0][0] == Approx(0.02).epsilon(1e-9));
   CHECK(std::abs(e.stiffness_error[0][1]) < 1e-12);
+  REQUIRE(a.error_estimate);
+  CHECK(a.error_estimate->stiffness[0][0] == Approx(0.03).epsilon(1e-9));
+  CHECK(a.error_estimate->stiffness[0][1] == Approx(0.0).margin(1e-12));
   REQUIRE(warnings.size() == 1);
   CHECK(warnings[0].find("up to 2 % (C11)") != std::string::npos);
   CHECK(ends_with(warnings[0], "(SEE)"));
+}
+
+// The finite elements' answer (solver fe): their fine level judged, its error estimate
+// their levels'; with OpenFOAM's answer beside it, OpenFOAM's errors against it and its
+// load cases, no warning of OpenFOAM's.
+template <std::size_t N>
+void check_fe_answer() {
+  const Stiffness<N> c = inside_stiffness<N>();
+  const FeLevels<N> fe = two_levels(c, 1, 1.004);
+  std::vector<std::string> warnings;
+  const PeriodicAnswer<N> alone = fe_answer(fe, kPhases, kFractions, FoamOptions{}, kAdvice, warnings);
+  CHECK(alone.solver == Solver::fe);
+  CHECK(alone.verdict.stiffness[1][1] == c[1][1]);
+  CHECK(alone.cases.empty());
+  REQUIRE(alone.error_estimate);
+  CHECK(alone.error_estimate->stiffness[1][1] == Approx(0.008).epsilon(1e-9));
+  Stiffness<N> off = c;
+  off[0][0] *= 1.03;  // OpenFOAM's, 3 % off: no warning, as it is not the answer
+  std::vector<std::string> theirs;
+  const PeriodicAnswer<N> openfoam = periodic_answer<N>(cases_of<N>(off, 0.0), nullptr, kPhases, kFractions,
+                                                        FoamOptions{}, kAdvice, theirs);
+  const PeriodicAnswer<N> both = fe_answer(fe, kPhases, kFractions, FoamOptions{}, kAdvice, warnings,
+                                                 std::optional<PeriodicAnswer<N>>(openfoam));
+  CHECK(warnings.empty());
+  REQUIRE(both.openfoam);
+  REQUIRE(both.openfoam->reference);
+  CHECK(both.openfoam->reference->stiffness_error[0][0] == Approx(0.03).epsilon(1e-9));
+  CHECK(both.cases.size() == openfoam.cases.size());
+  CHECK(both.verdict.stiffness[0][0] == c[0][0]);
 }
 
 }  // namespace
@@ -171,6 +218,11 @@ void check_reference() {
 TEST_CASE("the answer beside its finite-element reference: the errors, more than 1 % a warning", "[analysis][answer]") {
   check_reference<3>();
   check_reference<6>();
+}
+
+TEST_CASE("the finite elements' answer: its estimate from two levels, OpenFOAM's beside it", "[analysis][answer]") {
+  check_fe_answer<3>();
+  check_fe_answer<6>();
 }
 
 TEST_CASE("the periodic answer in 2D: verdicts, Levin's relation, warnings with their advice", "[analysis][answer]") {

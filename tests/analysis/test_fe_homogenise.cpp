@@ -121,6 +121,16 @@ TEST_CASE("the FE reference on one material: its own stiffness and free expansio
   check_expansion<6>(*h.expansion, {kSoft.alpha, kSoft.alpha, kSoft.alpha, 0, 0, 0});
 }
 
+TEST_CASE("the FE reference leaves a point no element uses without unknowns", "[analysis][fe]") {
+  // A mesher may leave a point unused (TetGen did, on a 3D cell): it has no stiffness.
+  ExportMesh<3> m = grid_3d(2, [](double, double, double) { return 0; });
+  const FeHomogenised<6> before = fe_homogenise(m, false);
+  m.mesh.points.push_back({0.3, 0.4, 0.5});
+  const FeHomogenised<6> after = fe_homogenise(m, false);
+  CHECK(after.unknowns == before.unknowns);
+  check_stiffness<6>(after.stiffness, isotropic_stiffness<6>(kHard));
+}
+
 TEST_CASE("the FE reference on laminates the mesh follows: Backus's stiffness and Levin's expansion, exact",
           "[analysis][fe]") {
   // Layers normal to x, the soft one 30 % of the cell.
@@ -170,8 +180,10 @@ TEST_CASE("the FE reference refuses a factor larger than the memory it may take,
   // A 32 x 32 grid's factor takes a few MiB: refused under 1 MiB, solved under 1 GiB.
   CHECK_THROWS_AS(fe_homogenise(m, false, false, {.memory_mib = 1.0}), ConfigError);
   CHECK_THROWS_WITH(fe_homogenise(m, false, false, {.memory_mib = 1.0}),
-                    Catch::StartsWith("homogenise.reference = fe: the finite-element reference of this mesh") &&
-                        Catch::Contains("more than the 1 MiB available"));
+                    Catch::StartsWith("homogenise.solver = fe: the finite elements on this mesh") &&
+                        Catch::Contains("more than the 1 MiB available") && Catch::Contains("homogenise.solver = openfoam"));
+  CHECK_THROWS_WITH(fe_homogenise(m, false, false, {.memory_mib = 1.0, .reference = true}),
+                    Catch::StartsWith("homogenise.reference = fe: ") && Catch::Contains("homogenise.reference = none"));
   CHECK_NOTHROW(fe_homogenise(m, false, false, {.memory_mib = 1024.0}));
   const ExportMesh<3> cube = grid_3d(4, [](double, double, double) { return 0; });
   CHECK_THROWS_AS(fe_homogenise(cube, false, {.memory_mib = 0.01}), ConfigError);

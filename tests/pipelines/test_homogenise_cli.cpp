@@ -48,7 +48,8 @@ TEST_CASE("periodic homogenisation: laminates of stiffness ratio 3 and 20 have t
       std::ofstream(ini) << test::laminate_config(hard, soft, normal_to_x, boundary_size);
       const fs::path periodic = ini.string() + ".periodic", mixed = ini.string() + ".mixed";
       const auto p = test::run_grainmesh({"run", ini.string(), "-o", periodic.string(), "--solve", "--set",
-                                          "homogenise.boundary=periodic", "--set", "homogenise.reference=fe"});
+                                          "homogenise.boundary=periodic", "--set", "homogenise.solver=openfoam", "--set",
+                                          "homogenise.reference=fe"});
       INFO(p.err);
       REQUIRE(p.exit_code == 0);
       const Json e = report_of(periodic)["effective"];
@@ -226,8 +227,16 @@ TEST_CASE("homogenisation refuses what it cannot do in one line, leaving nothing
        "homogenise.reference: must be none or fe, got 'sfepy'"},
       {{"run", "--solve", "--set", "homogenise.reference=fe"}, 2,
        "homogenise.reference: fe needs homogenise.boundary = periodic"},
-      {{"run", "--set", "homogenise.boundary=periodic", "--set", "homogenise.reference=fe"}, 2,
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "homogenise.solver=openfoam", "--set",
+        "homogenise.reference=fe"},
+       2,
        "homogenise.reference: fe is solved beside the OpenFOAM load cases: it needs --solve"},
+      {{"run", "--solve", "--set", "homogenise.boundary=periodic", "--set", "homogenise.reference=fe"}, 2,
+       "homogenise.reference: fe is the answer already (homogenise.solver = fe"},
+      {{"run", "--set", "homogenise.boundary=periodic", "--set", "homogenise.solver=sfepy"}, 2,
+       "homogenise.solver: must be openfoam or fe, got 'sfepy'"},
+      {{"run", "--set", "homogenise.solver=fe"}, 2,
+       "homogenise.solver: fe homogenises a periodic cell: it needs homogenise.boundary = periodic"},
   };
   int k = 0;
   for (const test::Refusal& r : refusals) test::check_refused(r, dir / ("out" + std::to_string(k++)));

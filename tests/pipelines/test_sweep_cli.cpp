@@ -175,7 +175,8 @@ TEST_CASE("a periodic sweep summarises every stiffness component and engineering
   const auto r = run_grainmesh({"sweep", (dir / "sweep.ini").string(), "-o", out, "--jobs", "2", "--solve", "--set",
                                 "homogenise.boundary=periodic", "--set", "output.pictures=false", "--set",
                                 "load.delta_T=-1000", "--set", "phase.particulate.alpha=5e-6", "--set",
-                                "phase.matrix.alpha=14e-6", "--set", "homogenise.reference=fe"});
+                                "phase.matrix.alpha=14e-6", "--set", "homogenise.solver=openfoam", "--set",
+                                "homogenise.reference=fe"});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const auto c = run_grainmesh({"sweep", "--collect", out});

@@ -27,7 +27,7 @@ constexpr const char* kVoigt[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 // tetrahedra, cooled by 700 K, with `sets` on top.
 test::CommandResult run_cooled(const fs::path& out, const std::vector<std::string>& sets) {
   std::vector<std::string> args{"run", test::example("grains_3d_wc_co").string(), "-o", out.string(), "--solve"};
-  for (const std::string& s : std::vector<std::string>{"homogenise.boundary=periodic", "tessellation.grains=30",
+  for (const std::string& s : std::vector<std::string>{"homogenise.boundary=periodic", "homogenise.solver=openfoam", "tessellation.grains=30",
                                                         "mesh.tets_per_grain=200", "load.delta_T=-700"}) {
     args.push_back("--set");
     args.push_back(s);

@@ -76,7 +76,8 @@ test::CommandResult run(const Cell& c, const fs::path& out, const std::vector<st
     set("phase.matrix.E=" + std::to_string(hard / c.contrast));
   }
   args.insert(args.end(), {"-o", out.string(), "--solve", "--quiet"});
-  for (const std::string& kv : std::vector<std::string>{"homogenise.boundary=periodic", "output.pictures=none",
+  for (const std::string& kv : std::vector<std::string>{"homogenise.boundary=periodic", "homogenise.solver=openfoam",
+                                                        "output.pictures=none",
                                                         "tessellation.seed=" + std::to_string(c.seed)})
     set(kv);
   for (const std::string& kv : extra) set(kv);
