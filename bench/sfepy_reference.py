@@ -1,10 +1,11 @@
 #!/usr/bin/python3
-"""The peer of grainmesh's finite-element reference (analysis/fe_homogenise.hpp): SfePy's
-periodic homogenisation (Debian python3-sfepy) on the mesh a grainmesh run wrote.
+"""The peer of grainmesh's finite elements (analysis/fe_homogenise.hpp): SfePy's periodic
+homogenisation (Debian python3-sfepy) on the mesh a grainmesh run solved them on.
 
 usage: sfepy_reference.py OUT [ANSWER.json]
 
-OUT is a periodic `grainmesh run` whose mesh.vtu holds triangles (2D) or tetrahedra (3D):
+OUT is a periodic `grainmesh run` whose fe_mesh.vtu (the finite elements' fine level) holds
+triangles (2D) or tetrahedra (3D):
 its cells, their phases (cell array `phase`, names in field data `phase_names`), the
 phases' E and nu from OUT/config.ini and the plane state from OUT/report.json. SfePy
 solves its own corrector problems on the same cells with quadratic Lagrange elements
@@ -37,12 +38,12 @@ from sfepy.mechanics.matcoefs import stiffness_from_youngpoisson
 def read_run(out):
     """The mesh (points, cells, phase per cell), the phases' (E, nu) and the plane state."""
     reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(out, "mesh.vtu"))
+    reader.SetFileName(os.path.join(out, "fe_mesh.vtu"))
     reader.Update()
     grid = reader.GetOutput()
     types = {grid.GetCellType(i) for i in range(grid.GetNumberOfCells())}
     if types not in ({vtk.VTK_TRIANGLE}, {vtk.VTK_TETRA}):
-        sys.exit("sfepy_reference: %s/mesh.vtu: triangles or tetrahedra only" % out)
+        sys.exit("sfepy_reference: %s/fe_mesh.vtu: triangles or tetrahedra only" % out)
     dim = 2 if types == {vtk.VTK_TRIANGLE} else 3
     points = np.array([grid.GetPoint(i)[:dim] for i in range(grid.GetNumberOfPoints())])
     cells = np.array([[grid.GetCell(i).GetPointId(k) for k in range(dim + 1)]
