@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "analysis/bounds.hpp"
 #include "analysis/fe_nodes.hpp"
+#include "analysis/fe_two_grid.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/memory.hpp"
@@ -293,22 +295,28 @@ void check_memory(const cholmod_common& analysed, const Eigen::SparseMatrix<doub
                       key + (o.reference ? " = none" : " = openfoam") + ", or mesh coarser or fewer grains");
 }
 
-template <int D>
-FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stress, bool thermal, const FeOptions& o) {
-  constexpr std::size_t N = voigt_size(D);
-  const auto start = std::chrono::steady_clock::now();
-  const Problem<D> p(m, plane_stress, thermal);
-  const auto [k, f] = assemble(p);
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
-  solver.cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (fe_nodes.hpp)
-  solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
-  solver.analyzePattern(k);
-  check_memory(solver.cholmod(), k, p.loads, p.nodes.unknowns, o);
-  solver.factorize(k);
-  if (solver.info() != Eigen::Success)
+using Factor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+
+// The sparse Cholesky factor of `k` (its lower triangle), refused before it is made when
+// it would not fit (check_memory).
+std::unique_ptr<Factor> factorise(const Eigen::SparseMatrix<double>& k, int loads, std::size_t unknowns,
+                                  const FeOptions& o) {
+  auto factor = std::make_unique<Factor>();
+  factor->cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (fe_nodes.hpp)
+  factor->cholmod().method[0].ordering = CHOLMOD_NATURAL;
+  factor->analyzePattern(k);
+  check_memory(factor->cholmod(), k, loads, unknowns, o);
+  factor->factorize(k);
+  if (factor->info() != Eigen::Success)
     throw GeometryError("finite-element reference: the stiffness matrix is not positive definite (a phase without "
                         "stiffness, or a mesh the periodic ties do not hold)");
-  const Eigen::MatrixXd u = solver.solve(f);
+  return factor;
+}
+
+// The effective stiffness (and expansion, when thermal) from the solved fluctuations `u`.
+template <int D>
+FeHomogenised<voigt_size(D)> effective(const Problem<D>& p, const Eigen::MatrixXd& u, bool thermal) {
+  constexpr std::size_t N = voigt_size(D);
   const Eigen::MatrixXd mean = mean_stresses(p, u);
   FeHomogenised<N> out;
   out.unknowns = p.nodes.unknowns;
@@ -323,7 +331,105 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
     for (std::size_t i = 0; i < N; ++i) alpha[i] = e(static_cast<int>(i)) * (i < static_cast<std::size_t>(D) ? 1.0 : 0.5);
     out.expansion = alpha;
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <int D>
+FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stress, bool thermal, const FeOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const Problem<D> p(m, plane_stress, thermal);
+  const auto [k, f] = assemble(p);
+  const Eigen::MatrixXd u = factorise(k, p.loads, p.nodes.unknowns, o)->solve(f);
+  FeHomogenised<voigt_size(D)> out = effective(p, u, thermal);
+  out.seconds = seconds_since(start);
+  return out;
+}
+
+// The prolongation from the coarse level's unknowns to the fine's: the coarse quadratic
+// shape functions at each fine node (fine element 2^D c + k lies in coarse element c).
+template <int D>
+Eigen::SparseMatrix<double> prolongation(const Problem<D>& coarse, const Problem<D>& fine) {
+  using Point = Eigen::Matrix<double, D, 1>;
+  auto at = [](const auto& points, int i) {
+    Point x;
+    for (int r = 0; r < D; ++r) x(r) = coordinate(points[static_cast<std::size_t>(i)], r);
+    return x;
+  };
+  constexpr auto edges = Simplex<D>::edges();
+  const auto& cp = mesh_points(coarse.m);
+  const auto& fp = mesh_points(fine.m);
+  std::vector<char> done(fine.nodes.unknowns / D, 0);
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(fine.nodes.unknowns * 4);
+  for (std::size_t c = 0; c < element_count(fine.m); ++c) {
+    const std::size_t e = c >> D;
+    const auto corners = element_corners(coarse.m, e);
+    Eigen::Matrix<double, D, D> jacobian;
+    for (int k = 0; k < D; ++k) jacobian.col(k) = at(cp, corners[static_cast<std::size_t>(k + 1)]) - at(cp, corners[0]);
+    const Eigen::Matrix<double, D, D> inverse = jacobian.inverse();
+    const auto fc = element_corners(fine.m, c);
+    for (int a = 0; a < Simplex<D>::kNodes; ++a) {
+      const int r = fine.nodes.first[static_cast<std::size_t>(fine.nodes.element[c][static_cast<std::size_t>(a)])];
+      if (r < 0 || done[static_cast<std::size_t>(r / D)]) continue;
+      done[static_cast<std::size_t>(r / D)] = 1;
+      const Point x = a <= D ? at(fp, fc[static_cast<std::size_t>(a)])
+                             : 0.5 * (at(fp, fc[static_cast<std::size_t>(edges[static_cast<std::size_t>(a - D - 1)][0])]) +
+                                      at(fp, fc[static_cast<std::size_t>(edges[static_cast<std::size_t>(a - D - 1)][1])]));
+      const Point tail = inverse * (x - at(cp, corners[0]));
+      std::array<double, D + 1> l;
+      l[0] = 1.0 - tail.sum();
+      for (int k = 0; k < D; ++k) l[static_cast<std::size_t>(k + 1)] = tail(k);
+      for (int b = 0; b < Simplex<D>::kNodes; ++b) {
+        const int s = coarse.nodes.first[static_cast<std::size_t>(coarse.nodes.element[e][static_cast<std::size_t>(b)])];
+        const double phi = b <= D ? l[static_cast<std::size_t>(b)] * (2.0 * l[static_cast<std::size_t>(b)] - 1.0)
+                                  : 4.0 * l[static_cast<std::size_t>(edges[static_cast<std::size_t>(b - D - 1)][0])] *
+                                        l[static_cast<std::size_t>(edges[static_cast<std::size_t>(b - D - 1)][1])];
+        if (s < 0 || std::abs(phi) < 1e-12) continue;
+        for (int d = 0; d < D; ++d) entries.emplace_back(r + d, s + d, phi);
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(fine.nodes.unknowns),
+                                  static_cast<Eigen::Index>(coarse.nodes.unknowns));
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
+// The fine level's conjugate gradients: each load's residual to 1e-10 of its norm (the
+// effective stress, linear in the residual, then right to about as much), in at most 200
+// cycles; beyond, the fine level is factorised.
+constexpr double kTwoGridTolerance = 1e-10;
+constexpr int kTwoGridIterations = 200;
+
+template <int D>
+FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const ExportMesh<D>& fine, bool plane_stress,
+                                          bool thermal, const FeOptions& o) {
+  if (element_count(fine) != (element_count(coarse) << D))
+    throw GeometryError("finite-element levels: the fine mesh has " + std::to_string(element_count(fine)) +
+                        " elements, not the coarse mesh's split (" + std::to_string(element_count(coarse) << D) + ")");
+  FeNested<voigt_size(D)> out;
+  auto start = std::chrono::steady_clock::now();
+  const Problem<D> pc(coarse, plane_stress, thermal);
+  const auto [kc, fc] = assemble(pc);
+  const std::unique_ptr<Factor> factor = factorise(kc, pc.loads, pc.nodes.unknowns, o);
+  const Eigen::MatrixXd uc = factor->solve(fc);
+  out.coarse = effective(pc, uc, thermal);
+  out.coarse.seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const Problem<D> pf(fine, plane_stress, thermal);
+  const auto [kf, ff] = assemble(pf);
+  const Eigen::SparseMatrix<double> pr = prolongation(pc, pf);
+  TwoGridSolve s = two_grid_solve(
+      kf, ff, pr, [&](const Eigen::MatrixXd& r) { return Eigen::MatrixXd(factor->solve(r)); }, pr * uc,
+      kTwoGridTolerance, kTwoGridIterations);
+  const Eigen::MatrixXd uf = s.converged ? std::move(s.u) : factorise(kf, pf.loads, pf.nodes.unknowns, o)->solve(ff);
+  out.fine = effective(pf, uf, thermal);
+  out.fine.iterations = s.converged ? s.iterations : 0;
+  out.fine.seconds = seconds_since(start);
   return out;
 }
 
@@ -335,6 +441,16 @@ FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool t
 
 FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o) {
   return homogenise(m, false, thermal, o);
+}
+
+FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2>& fine, bool plane_stress,
+                                 bool thermal, const FeOptions& o) {
+  return homogenise_nested(coarse, fine, plane_stress, thermal, o);
+}
+
+FeNested<6> fe_homogenise_nested(const ExportMesh<3>& coarse, const ExportMesh<3>& fine, bool thermal,
+                                 const FeOptions& o) {
+  return homogenise_nested(coarse, fine, false, thermal, o);
 }
 
 }  // namespace grainmesh

@@ -29,6 +29,13 @@ struct FeHomogenised {
   std::optional<std::array<double, N>> expansion;  // free thermal expansion, tensor components, 1/K
   std::size_t unknowns = 0;                        // the fluctuation's, once tied and held
   double seconds = 0.0;
+  int iterations = 0;  // the conjugate gradients' cycles when solved iteratively; 0: factorised
+};
+
+// Two nested levels of one cell: `coarse` factorised, `fine` (its nested split).
+template <std::size_t N>
+struct FeNested {
+  FeHomogenised<N> coarse, fine;
 };
 
 // What the reference may take: its sparse factor's memory, estimated from CHOLMOD's
@@ -49,5 +56,17 @@ struct FeOptions {
 // homogenise.reference, o.reference) when the factor would not fit in memory.
 FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool thermal, const FeOptions& o = {});
 FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o = {});
+
+// The same on two nested levels: `coarse`, and `fine` = split_nested(coarse) (fine element
+// 2^D c + k a child of coarse element c). The coarse level is factorised; the fine level
+// solved by conjugate gradients preconditioned by a two-grid cycle on the coarse factor
+// (fe_two_grid.hpp), from the coarse solution, to a residual of 1e-10 of each load's —
+// the answer as the fine level's factor gives it, without its fill (3D: a fraction of the
+// operations); factorised instead when 200 cycles do not reach it. Throws as
+// fe_homogenise, and GeometryError when `fine` has not 2^D times coarse's elements.
+FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2>& fine, bool plane_stress,
+                                 bool thermal, const FeOptions& o = {});
+FeNested<6> fe_homogenise_nested(const ExportMesh<3>& coarse, const ExportMesh<3>& fine, bool thermal,
+                                 const FeOptions& o = {});
 
 }  // namespace grainmesh

@@ -96,9 +96,6 @@ Json discretisation_error_json(const ReferenceAnswer<N>& r) {
   return error;
 }
 
-// The finite-element reference: reference {method, stiffness, bulk_modulus, shear_modulus,
-// thermal_expansion when heated, unknowns, seconds} and the answer's
-// discretisation_error against it.
 // The error estimate: error_estimate {stiffness {Cij}, bulk_modulus, shear_modulus,
 // thermal_expansion when heated, basis}, relative.
 template <std::size_t N>
@@ -109,13 +106,14 @@ Json error_estimate_json(const ErrorEstimate<N>& x) {
   return e;
 }
 
-// The finite elements' solve: {method, unknowns, seconds (both levels'), coarse {unknowns,
-// seconds}}.
+// The finite elements' solve: {method, unknowns, seconds (both levels'), iterations (the
+// fine level's conjugate gradients; 0 when factorised), coarse {unknowns, seconds}}.
 template <std::size_t N>
 Json fe_solve_json(const FeLevels<N>& l) {
   return {{"method", fe_method<N>()},
           {"unknowns", l.fine.unknowns},
           {"seconds", l.seconds()},
+          {"iterations", l.fine.iterations},
           {"coarse", {{"unknowns", l.coarse.unknowns}, {"seconds", l.coarse.seconds}}}};
 }
 

@@ -13,12 +13,12 @@ namespace {
 // Refused for memory naming the key that asked for them.
 FeOptions fe_options(Solver solver) { return {.memory_mib = 0.0, .reference = solver == Solver::openfoam}; }
 
-FeHomogenised<3> fe_solve(const SolveInput<2>& in, const ExportMesh<2>& m) {
-  return fe_homogenise(m, in.foam.plane_stress, in.foam.delta_T != 0.0, fe_options(in.solver));
+FeNested<3> fe_solve(const SolveInput<2>& in, const ExportMesh<2>& fine) {
+  return fe_homogenise_nested(*in.fe_mesh, fine, in.foam.plane_stress, in.foam.delta_T != 0.0, fe_options(in.solver));
 }
 
-FeHomogenised<6> fe_solve(const SolveInput<3>& in, const ExportMesh<3>& m) {
-  return fe_homogenise(m, in.foam.delta_T != 0.0, fe_options(in.solver));
+FeNested<6> fe_solve(const SolveInput<3>& in, const ExportMesh<3>& fine) {
+  return fe_homogenise_nested(*in.fe_mesh, fine, in.foam.delta_T != 0.0, fe_options(in.solver));
 }
 
 // The fine level's simplices with their grains and phases (the phases' names as field
@@ -38,8 +38,8 @@ CellAnswer<D> fe_cell_answer(const SolveInput<D>& in, const std::vector<double>&
                              std::optional<CellAnswer<D>> solved, std::vector<std::string>& warnings) {
   constexpr std::size_t N = voigt_size(D);
   const ExportMesh<D> fine = split_nested(*in.fe_mesh);
-  const auto coarse_answer = fe_solve(in, *in.fe_mesh);
-  const FeLevels<N> levels = fe_levels(fe_solve(in, fine), coarse_answer,
+  const FeNested<N> solved_levels = fe_solve(in, fine);
+  const FeLevels<N> levels = fe_levels(solved_levels.fine, solved_levels.coarse,
                                        D == 2 ? "the cell meshed at twice the run's element size or more, each triangle "
                                                 "then split in four"
                                               : "the cell meshed at twice the run's element size or more, each "

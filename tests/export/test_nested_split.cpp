@@ -3,8 +3,10 @@
 // the periodic pairs those a search by position finds (2D) or exact images (3D), and a
 // cyclic case of the split cell that checkMesh accepts; the finite-element answer on the
 // split mesh lies below the unsplit one's (the spaces are nested: displacement elements
-// are too stiff, less so when refined).
+// are too stiff, less so when refined); the two levels solved together (the fine one by
+// two-grid conjugate gradients) give the factorised answer.
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <catch2/catch.hpp>
@@ -123,5 +125,57 @@ TEST_CASE("the finite elements on a nested refinement lie below the unsplit mesh
   for (std::size_t i = 0; i < 3; ++i) {
     CHECK(fine.stiffness[i][i] < coarse.stiffness[i][i]);
     CHECK(fine.stiffness[i][i] > 0.999 * coarse.stiffness[i][i]);
+  }
+}
+
+namespace {
+
+// Each entry of `a` within `tolerance` of `b`'s, relative to b's largest entry.
+template <class Tensor>
+void check_close(const Tensor& a, const Tensor& b, double tolerance) {
+  double scale = 0.0;
+  for (const auto& row : b)
+    for (const double v : row) scale = std::max(scale, std::abs(v));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < a.size(); ++j) CHECK(std::abs(a[i][j] - b[i][j]) <= tolerance * scale);
+}
+
+template <class Fe>
+void check_expansion_close(const Fe& a, const Fe& b) {
+  REQUIRE(a.expansion);
+  REQUIRE(b.expansion);
+  for (std::size_t i = 0; i < a.expansion->size(); ++i)
+    CHECK((*a.expansion)[i] == Approx((*b.expansion)[i]).margin(1e-9 * std::abs((*b.expansion)[0])));
+}
+
+}  // namespace
+
+TEST_CASE("the nested levels' fine solve by two-grid conjugate gradients is the factorised one", "[export][nested][fe]") {
+  SECTION("2D, heated") {
+    ExportMesh<2> m = cell_2d();
+    m.phases[0].alpha = 5.2e-6;
+    m.phases[1].alpha = 13.8e-6;
+    const ExportMesh<2> fine = split_nested(m);
+    const FeNested<3> nested = fe_homogenise_nested(m, fine, false, true);
+    const FeHomogenised<3> direct = fe_homogenise(fine, false, true);
+    CHECK(nested.fine.iterations > 0);
+    CHECK(nested.fine.iterations < 30);
+    CHECK(nested.fine.unknowns == direct.unknowns);
+    check_close(nested.fine.stiffness, direct.stiffness, 1e-9);
+    check_expansion_close(nested.fine, direct);
+    check_close(nested.coarse.stiffness, fe_homogenise(m, false, true).stiffness, 1e-12);
+    CHECK_THROWS_AS(fe_homogenise_nested(m, m, false, false), GeometryError);
+  }
+  SECTION("3D, heated") {
+    ExportMesh<3> m = cell_3d();
+    m.phases[0].alpha = 5.2e-6;
+    m.phases[1].alpha = 13.8e-6;
+    const ExportMesh<3> fine = split_nested(m);
+    const FeNested<6> nested = fe_homogenise_nested(m, fine, true);
+    const FeHomogenised<6> direct = fe_homogenise(fine, true);
+    CHECK(nested.fine.iterations > 0);
+    CHECK(nested.fine.iterations < 50);
+    check_close(nested.fine.stiffness, direct.stiffness, 1e-9);
+    check_expansion_close(nested.fine, direct);
   }
 }
