@@ -40,12 +40,14 @@ void print_periodic(const PeriodicAnswer<N>& a, bool stresses) {
   const std::optional<ErrorEstimate<N>>& x = a.error_estimate;
   auto estimate = [&](auto of) { return x ? std::optional<double>(of(*x)) : std::nullopt; };
   std::string entries;
-  for (const auto& [i, j] : shown)
+  for (const auto& ij : shown) {
+    const std::size_t i = ij.first, j = ij.second;  // not a structured binding: captured below
     entries.append(entries.empty() ? "" : ", ")
         .append(stiffness_name<N>(i, j))
         .append(" ")
         .append(to_text(C[i][j], 4))
         .append(plus_minus(estimate([&](const ErrorEstimate<N>& e) { return e.stiffness[i][j]; })));
+  }
   const std::string moduli =
       "K " + to_text(a.verdict.bulk_modulus, 4) + plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.bulk_modulus; })) +
       ", G " + to_text(a.verdict.shear_modulus, 4) +
