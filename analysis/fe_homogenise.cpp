@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -441,6 +443,12 @@ FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool t
 
 FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o) {
   return homogenise(m, false, thermal, o);
+}
+
+void limit_fe_threads(int threads) {
+  // Looked up, not linked: the BLAS is whichever libblas.so.3 the system chose.
+  using SetThreads = void (*)(int);
+  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(threads);
 }
 
 FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2>& fine, bool plane_stress,

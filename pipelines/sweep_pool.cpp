@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
+#include "analysis/fe_homogenise.hpp"
 #include "common/process.hpp"
 #include "pipelines/run_command.hpp"
 
@@ -64,6 +65,7 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
         die_with_parent(parent, SIGTERM);
         install_interrupt_handling();
         set_interrupt_message("nothing written to " + (dir / r->name).string());
+        if (o.jobs > 1) limit_fe_threads(1);  // the runs share the cores
         // The run: its output to its log, its errors as its exit code.
         if (!std::freopen((dir / "logs" / (r->name + ".log")).c_str(), "w", stdout)) _exit(4);
         dup2(STDOUT_FILENO, STDERR_FILENO);

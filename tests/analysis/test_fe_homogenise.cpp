@@ -3,6 +3,8 @@
 // stiffness, Levin's exact expansion with it), both to 1e-9; a stiff inclusion converging
 // as quadratic elements should under nested refinement; and the periodic ties refused
 // where the mesh does not hold them.
+#include <dlfcn.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -187,4 +189,16 @@ TEST_CASE("the FE reference refuses a factor larger than the memory it may take,
   CHECK_NOTHROW(fe_homogenise(m, false, false, {.memory_mib = 1024.0}));
   const ExportMesh<3> cube = grid_3d(4, [](double, double, double) { return 0; });
   CHECK_THROWS_AS(fe_homogenise(cube, false, {.memory_mib = 0.01}), ConfigError);
+}
+
+// scripts/install-deps.sh makes OpenBLAS the BLAS: the limit must reach it.
+TEST_CASE("the finite elements' BLAS threads are limited (OpenBLAS's)", "[analysis][fe]") {
+  using GetThreads = int (*)();
+  const auto get = reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  REQUIRE(get);
+  const int before = get();
+  limit_fe_threads(1);
+  CHECK(get() == 1);
+  limit_fe_threads(before);
+  CHECK(get() == before);
 }
