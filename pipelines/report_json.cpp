@@ -2,27 +2,12 @@
 
 #include <type_traits>
 
+#include "pipelines/fe_answer_json.hpp"
+#include "pipelines/tensor_json.hpp"
+
 namespace grainmesh {
 
 namespace {
-
-// {xx: .., yy: .., ...} of a tensor's Voigt components.
-template <std::size_t N>
-Json voigt_json(const std::array<double, N>& v) {
-  Json out = Json::object();
-  for (std::size_t k = 0; k < N; ++k) out[voigt_names<N>()[k]] = v[k];
-  return out;
-}
-
-// {C11: .., C12: .., ...}: the entries i <= j of a symmetric stiffness, named by their Voigt
-// indices (1, 2, 6 in 2D; 1 to 6 in 3D), row by row.
-template <std::size_t N>
-Json stiffness_json(const Stiffness<N>& c) {
-  Json out = Json::object();
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = i; j < N; ++j) out[stiffness_name<N>(i, j)] = c[i][j];
-  return out;
-}
 
 // A solve: corrections, residuals, the linear solver, the result's time directory
 // (relative to `dir`), OpenFOAM's steps' seconds.
@@ -77,75 +62,6 @@ void add_thermal(const ThermalAnswer<N>& t, Json& e) {
     thermal["levin_difference"] = t.levin_difference;
   }
   e["thermal"] = thermal;
-}
-
-// The finite elements' method, as report.json names it.
-template <std::size_t N>
-const char* fe_method() {
-  return N == 3 ? "finite elements: 6-node triangles, periodic" : "finite elements: 10-node tetrahedra, periodic";
-}
-
-// An answer's relative errors against the finite elements: {stiffness {Cij},
-// bulk_modulus, shear_modulus, thermal_expansion when heated} (ReferenceAnswer).
-template <std::size_t N>
-Json discretisation_error_json(const ReferenceAnswer<N>& r) {
-  Json error{{"stiffness", stiffness_json<N>(r.stiffness_error)},
-             {"bulk_modulus", r.bulk_error},
-             {"shear_modulus", r.shear_error}};
-  if (r.expansion_error) error["thermal_expansion"] = voigt_json<N>(*r.expansion_error);
-  return error;
-}
-
-// The error estimate: error_estimate {stiffness {Cij}, bulk_modulus, shear_modulus,
-// thermal_expansion when heated, basis}, relative.
-template <std::size_t N>
-Json error_estimate_json(const ErrorEstimate<N>& x) {
-  Json e{{"stiffness", stiffness_json<N>(x.stiffness)}, {"bulk_modulus", x.bulk_modulus}, {"shear_modulus", x.shear_modulus}};
-  if (x.expansion) e["thermal_expansion"] = voigt_json<N>(*x.expansion);
-  e["basis"] = x.basis;
-  return e;
-}
-
-// The finite elements' solve: {method, unknowns, seconds (both levels'), iterations (the
-// fine level's conjugate gradients; 0 when factorised), coarse {unknowns, seconds}}.
-template <std::size_t N>
-Json fe_solve_json(const FeLevels<N>& l) {
-  return {{"method", fe_method<N>()},
-          {"unknowns", l.fine.unknowns},
-          {"seconds", l.seconds()},
-          {"iterations", l.fine.iterations},
-          {"coarse", {{"unknowns", l.coarse.unknowns}, {"seconds", l.coarse.seconds}}}};
-}
-
-// The finite-element reference: reference {stiffness, bulk_modulus, shear_modulus,
-// thermal_expansion when heated, error_estimate, and its solve (fe_solve_json)} and the
-// answer's discretisation_error against it.
-template <std::size_t N>
-void add_reference(const ReferenceAnswer<N>& r, Json& e) {
-  Json ref{{"stiffness", stiffness_json<N>(r.stiffness)},
-           {"bulk_modulus", r.bulk_modulus},
-           {"shear_modulus", r.shear_modulus}};
-  if (r.fe.fine.expansion) ref["thermal_expansion"] = voigt_json<N>(*r.fe.fine.expansion);
-  ref["error_estimate"] = error_estimate_json(r.fe.estimate);
-  ref.update(fe_solve_json(r.fe));
-  e["reference"] = ref;
-  e["discretisation_error"] = discretisation_error_json(r);
-}
-
-// OpenFOAM's answer beside the finite elements' (solver fe, solved): openfoam {stiffness,
-// symmetry_error, bulk_modulus, shear_modulus, engineering, thermal_expansion when heated,
-// discretisation_error against the answer}.
-template <std::size_t N>
-Json openfoam_json(const PeriodicAnswer<N>& o) {
-  Json j{{"stiffness", stiffness_json<N>(o.verdict.stiffness)},
-         {"symmetry_error", o.verdict.symmetry_error},
-         {"bulk_modulus", o.verdict.bulk_modulus},
-         {"shear_modulus", o.verdict.shear_modulus}};
-  Json& engineering = j["engineering"] = Json::object();
-  for (const EngineeringConstants::Named& n : o.engineering.constants) engineering[n.name] = n.value;
-  if (o.thermal) j["thermal_expansion"] = voigt_json<N>(o.thermal->expansion);
-  if (o.reference) j["discretisation_error"] = discretisation_error_json(*o.reference);
-  return j;
 }
 
 // The load cases as solved by OpenFOAM: load_cases [{name, strain, stress, delta_T when
