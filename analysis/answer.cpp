@@ -131,8 +131,8 @@ FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coar
     e.expansion = x;
   }
   e.basis = "the finite elements on two levels (" + how + "): " + to_text(kFeLevelFactor) +
-            " x their difference, the fine level's error when each halving of the element size gains a factor of 1.5 "
-            "or more (docs/run.md, Error estimates)";
+            " x their difference, the fine level's error when each halving of the element size gains a factor of " +
+            to_text(1.0 + 1.0 / kFeLevelFactor) + " or more (docs/run.md, Error estimates)";
   return l;
 }
 

@@ -67,15 +67,28 @@ struct ElementGeometry {
   std::vector<BMatrix<D>> b;
 };
 
+// Point i of `points` as a vector.
+template <int D, class Points>
+Eigen::Matrix<double, D, 1> point_at(const Points& points, int i) {
+  Eigen::Matrix<double, D, 1> x;
+  for (int r = 0; r < D; ++r) x(r) = coordinate(points[static_cast<std::size_t>(i)], r);
+  return x;
+}
+
+// Element c's Jacobian: column k is corner k + 1 less corner 0.
 template <int D>
-ElementGeometry<D> element_geometry(const ExportMesh<D>& m, std::size_t c, const Quadrature<D>& q) {
+Eigen::Matrix<double, D, D> simplex_jacobian(const ExportMesh<D>& m, std::size_t c) {
   const auto corners = element_corners(m, c);
   const auto& points = mesh_points(m);
-  Eigen::Matrix<double, D, D> jacobian;  // column k: corner k + 1 less corner 0
+  Eigen::Matrix<double, D, D> jacobian;
   for (int k = 0; k < D; ++k)
-    for (int r = 0; r < D; ++r)
-      jacobian(r, k) = coordinate(points[static_cast<std::size_t>(corners[static_cast<std::size_t>(k + 1)])], r) -
-                       coordinate(points[static_cast<std::size_t>(corners[0])], r);
+    jacobian.col(k) = point_at<D>(points, corners[static_cast<std::size_t>(k + 1)]) - point_at<D>(points, corners[0]);
+  return jacobian;
+}
+
+template <int D>
+ElementGeometry<D> element_geometry(const ExportMesh<D>& m, std::size_t c, const Quadrature<D>& q) {
+  const Eigen::Matrix<double, D, D> jacobian = simplex_jacobian(m, c);
   const double det = jacobian.determinant();
   if (!(det > 0.0))
     throw GeometryError("finite-element reference: element " + std::to_string(c) + " is inverted or flat");
@@ -301,13 +314,13 @@ using Factor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::L
 
 // The sparse Cholesky factor of `k` (its lower triangle), refused before it is made when
 // it would not fit (check_memory).
-std::unique_ptr<Factor> factorise(const Eigen::SparseMatrix<double>& k, int loads, std::size_t unknowns,
-                                  const FeOptions& o) {
+template <int D>
+std::unique_ptr<Factor> factorise(const Eigen::SparseMatrix<double>& k, const Problem<D>& p, const FeOptions& o) {
   auto factor = std::make_unique<Factor>();
   factor->cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (fe_nodes.hpp)
   factor->cholmod().method[0].ordering = CHOLMOD_NATURAL;
   factor->analyzePattern(k);
-  check_memory(factor->cholmod(), k, loads, unknowns, o);
+  check_memory(factor->cholmod(), k, p.loads, p.nodes.unknowns, o);
   factor->factorize(k);
   if (factor->info() != Eigen::Success)
     throw GeometryError("finite-element reference: the stiffness matrix is not positive definite (a phase without "
@@ -345,7 +358,7 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
   const auto start = std::chrono::steady_clock::now();
   const Problem<D> p(m, plane_stress, thermal);
   const auto [k, f] = assemble(p);
-  const Eigen::MatrixXd u = factorise(k, p.loads, p.nodes.unknowns, o)->solve(f);
+  const Eigen::MatrixXd u = factorise(k, p, o)->solve(f);
   FeHomogenised<voigt_size(D)> out = effective(p, u, thermal);
   out.seconds = seconds_since(start);
   return out;
@@ -356,11 +369,7 @@ FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stres
 template <int D>
 Eigen::SparseMatrix<double> prolongation(const Problem<D>& coarse, const Problem<D>& fine) {
   using Point = Eigen::Matrix<double, D, 1>;
-  auto at = [](const auto& points, int i) {
-    Point x;
-    for (int r = 0; r < D; ++r) x(r) = coordinate(points[static_cast<std::size_t>(i)], r);
-    return x;
-  };
+  auto at = [](const auto& points, int i) { return point_at<D>(points, i); };
   constexpr auto edges = Simplex<D>::edges();
   const auto& cp = mesh_points(coarse.m);
   const auto& fp = mesh_points(fine.m);
@@ -370,9 +379,7 @@ Eigen::SparseMatrix<double> prolongation(const Problem<D>& coarse, const Problem
   for (std::size_t c = 0; c < element_count(fine.m); ++c) {
     const std::size_t e = c >> D;
     const auto corners = element_corners(coarse.m, e);
-    Eigen::Matrix<double, D, D> jacobian;
-    for (int k = 0; k < D; ++k) jacobian.col(k) = at(cp, corners[static_cast<std::size_t>(k + 1)]) - at(cp, corners[0]);
-    const Eigen::Matrix<double, D, D> inverse = jacobian.inverse();
+    const Eigen::Matrix<double, D, D> inverse = simplex_jacobian(coarse.m, e).inverse();
     const auto fc = element_corners(fine.m, c);
     for (int a = 0; a < Simplex<D>::kNodes; ++a) {
       const int r = fine.nodes.first[static_cast<std::size_t>(fine.nodes.element[c][static_cast<std::size_t>(a)])];
@@ -417,7 +424,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   auto start = std::chrono::steady_clock::now();
   const Problem<D> pc(coarse, plane_stress, thermal);
   const auto [kc, fc] = assemble(pc);
-  const std::unique_ptr<Factor> factor = factorise(kc, pc.loads, pc.nodes.unknowns, o);
+  const std::unique_ptr<Factor> factor = factorise(kc, pc, o);
   const Eigen::MatrixXd uc = factor->solve(fc);
   out.coarse = effective(pc, uc, thermal);
   out.coarse.seconds = seconds_since(start);
@@ -428,7 +435,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   TwoGridSolve s = two_grid_solve(
       kf, ff, pr, [&](const Eigen::MatrixXd& r) { return Eigen::MatrixXd(factor->solve(r)); }, pr * uc,
       kTwoGridTolerance, kTwoGridIterations);
-  const Eigen::MatrixXd uf = s.converged ? std::move(s.u) : factorise(kf, pf.loads, pf.nodes.unknowns, o)->solve(ff);
+  const Eigen::MatrixXd uf = s.converged ? std::move(s.u) : factorise(kf, pf, o)->solve(ff);
   out.fine = effective(pf, uf, thermal);
   out.fine.iterations = s.converged ? s.iterations : 0;
   out.fine.seconds = seconds_since(start);
