@@ -7,11 +7,14 @@
 // two-grid conjugate gradients) give the factorised answer.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include <catch2/catch.hpp>
 
+#include "analysis/answer.hpp"
 #include "analysis/fe_homogenise.hpp"
+#include "analysis/voigt.hpp"
 #include "checkmesh.hpp"
 #include "export/export_mesh.hpp"
 #include "export/foam_case.hpp"
@@ -177,5 +180,98 @@ TEST_CASE("the nested levels' fine solve by two-grid conjugate gradients is the 
     CHECK(nested.fine.iterations < 50);
     check_close(nested.fine.stiffness, direct.stiffness, 1e-9);
     check_expansion_close(nested.fine, direct);
+  }
+}
+
+namespace {
+
+// The fine level's error estimate (fe_levels, from the coarse level and the fine) against
+// the fine level's measured error: its difference from the next level, a third (the error
+// of a displacement method only shrinks under nested refinement, so this is the part of
+// it that the levels show). Every stiffness entry, K, G and the expansion are covered;
+// the diagonals, K and G (energies) fall from level to level and by a factor of at least
+// 1 + 1 / kFeLevelFactor per halving, the estimate's assumption.
+template <std::size_t N>
+void check_estimate_covers(const FeHomogenised<N>& coarse, const FeHomogenised<N>& fine, const FeHomogenised<N>& next) {
+  const FeLevels<N> l = fe_levels(fine, coarse, "test");
+  const Stiffness<N>& a0 = coarse.stiffness;
+  const Stiffness<N>& a1 = fine.stiffness;
+  const Stiffness<N>& a2 = next.stiffness;
+  const double largest = largest_entry(a2);
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < N; ++j) {
+      CAPTURE(i, j, a0[i][j], a1[i][j], a2[i][j]);
+      const double scale = std::abs(a2[i][j]) >= 0.01 * largest ? std::abs(a2[i][j]) : largest;
+      CHECK(std::abs(a1[i][j] - a2[i][j]) / scale <= l.estimate.stiffness[i][j]);
+    }
+  auto check_energy = [](double e0, double e1, double e2, double estimate) {
+    CAPTURE(e0, e1, e2, estimate);
+    CHECK(e0 > e1);
+    CHECK(e1 > e2);
+    CHECK((e0 - e1) / (e1 - e2) >= 1.0 + 1.0 / kFeLevelFactor);
+    CHECK(e1 / e2 - 1.0 <= estimate);
+  };
+  for (std::size_t i = 0; i < N; ++i) check_energy(a0[i][i], a1[i][i], a2[i][i], l.estimate.stiffness[i][i]);
+  check_energy(bulk_modulus(a0), bulk_modulus(a1), bulk_modulus(a2), l.estimate.bulk_modulus);
+  check_energy(shear_modulus(a0), shear_modulus(a1), shear_modulus(a2), l.estimate.shear_modulus);
+  REQUIRE(l.estimate.expansion);
+  const auto& x1 = *fine.expansion;
+  const auto& x2 = *next.expansion;
+  const double scale = std::max({std::abs(x2[0]), std::abs(x2[1]), std::abs(x2[voigt_dimensions<N>() - 1])});
+  for (std::size_t k = 0; k < N; ++k) {
+    CAPTURE(k, x1[k], x2[k]);
+    CHECK(std::abs(x1[k] - x2[k]) / scale <= (*l.estimate.expansion)[k]);
+  }
+}
+
+std::vector<Phase> wc_co(double co_modulus) {
+  return {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.25, false, co_modulus, 0.31, {}}};
+}
+
+template <class Mesh>
+Mesh heated(Mesh m) {
+  m.phases[0].alpha = 5.2e-6;
+  m.phases[1].alpha = 13.8e-6;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("the finite elements' error estimate covers their error measured on the next nested level",
+          "[export][nested][fe]") {
+  SECTION("2D, contrasts 3.3 and 20") {
+    for (const double co_modulus : {211e9, 35e9}) {
+      CAPTURE(co_modulus);
+      TessellationOptions o;
+      o.width = 1.5;
+      o.height = 1.2;
+      o.grains = 12;
+      o.periodic = true;
+      o.lloyd_iterations = 3;
+      o.phases = wc_co(co_modulus);
+      Rng rng(7);
+      const Tessellation t = tessellate(o, rng);
+      const ExportMesh<2> m = heated(grain_export_mesh(t, mesh_tessellation(t, {.size = 0.15, .phase_size = {}})));
+      const ExportMesh<2> s1 = split_nested(m);
+      const FeNested<3> levels = fe_homogenise_nested(m, s1, false, true);
+      check_estimate_covers(levels.coarse, levels.fine, fe_homogenise_nested(s1, split_nested(s1), false, true).fine);
+    }
+  }
+  SECTION("3D") {
+    // A cell whose C12 and C13 changed less from the coarse level to the fine than from the
+    // fine to the next: their own changes alone estimated them below their error.
+    Tessellation3Options o;
+    o.grains = 6;
+    o.periodic = true;
+    o.lloyd_iterations = 3;
+    o.phases = wc_co(211e9);
+    Rng rng(3);
+    const Tessellation3 t = tessellate_3d(o, rng);
+    const ExportMesh<3> m =
+        heated(grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 30)})));
+    const ExportMesh<3> s1 = split_nested(m);
+    const FeNested<6> levels = fe_homogenise_nested(m, s1, true);
+    const FeNested<6> next = fe_homogenise_nested(s1, split_nested(s1), true);
+    check_estimate_covers(levels.coarse, levels.fine, next.fine);
   }
 }
