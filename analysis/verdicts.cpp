@@ -20,7 +20,7 @@ std::optional<std::string> outside(const std::string& what, double value, double
 }
 
 template <std::size_t N>
-StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBounds<N>& b) {
+StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBounds<N>& b, const std::string& what) {
   StiffnessVerdict<N> v;
   v.stiffness = symmetric_part(solved);
   v.symmetry_error = symmetry_error(solved);
@@ -33,28 +33,28 @@ StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBoun
   const double K = v.bulk_modulus, G = v.shear_modulus, t = v.tolerance;
   const char* upper = "the Hashin-Shtrikman upper bound";
   const char* lower = "the Hashin-Shtrikman lower bound";
-  for (const auto& w : {outside("effective.bulk_modulus", K, *b.bulk_upper, upper, true, t),
-                        outside("effective.bulk_modulus", K, *b.bulk_lower, lower, false, t),
-                        outside("effective.shear_modulus", G, *b.shear_upper, upper, true, t),
-                        outside("effective.shear_modulus", G, *b.shear_lower, lower, false, t)})
+  const std::string bulk = what + ".bulk_modulus", shear = what + ".shear_modulus";
+  for (const auto& w :
+       {outside(bulk, K, *b.bulk_upper, upper, true, t), outside(bulk, K, *b.bulk_lower, lower, false, t),
+        outside(shear, G, *b.shear_upper, upper, true, t), outside(shear, G, *b.shear_lower, lower, false, t)})
     if (w) v.broken_hashin_shtrikman.push_back(*w);
   v.inside_hashin_shtrikman = v.broken_hashin_shtrikman.empty();
   return v;
 }
 
 ModulusVerdict judge_modulus(double modulus, double voigt, double reuss, std::optional<double> hs_lower,
-                             std::optional<double> hs_upper) {
+                             std::optional<double> hs_upper, const std::string& what) {
   ModulusVerdict v;
-  for (const auto& w : {outside("effective.modulus", modulus, voigt, "the Voigt bound", true),
-                        outside("effective.modulus", modulus, reuss, "the Reuss bound", false)})
+  for (const auto& w : {outside(what, modulus, voigt, "the Voigt bound", true),
+                        outside(what, modulus, reuss, "the Reuss bound", false)})
     if (w) {
       v.inside_voigt_reuss = false;
       v.broken_voigt_reuss.push_back(*w);
     }
   if (!hs_upper || !hs_lower) return v;
   v.inside_hashin_shtrikman = true;
-  for (const auto& w : {outside("effective.modulus", modulus, *hs_upper, "the Hashin-Shtrikman upper bound", true),
-                        outside("effective.modulus", modulus, *hs_lower, "the Hashin-Shtrikman lower bound", false)})
+  for (const auto& w : {outside(what, modulus, *hs_upper, "the Hashin-Shtrikman upper bound", true),
+                        outside(what, modulus, *hs_lower, "the Hashin-Shtrikman lower bound", false)})
     if (w) {
       v.inside_hashin_shtrikman = false;
       v.broken_hashin_shtrikman.push_back(*w);
@@ -71,7 +71,7 @@ double levin_difference(const std::vector<double>& expansion, const std::vector<
   return difference / scale;
 }
 
-template StiffnessVerdict<3> judge_stiffness(const Stiffness<3>&, const TensorBounds<3>&);
-template StiffnessVerdict<6> judge_stiffness(const Stiffness<6>&, const TensorBounds<6>&);
+template StiffnessVerdict<3> judge_stiffness(const Stiffness<3>&, const TensorBounds<3>&, const std::string&);
+template StiffnessVerdict<6> judge_stiffness(const Stiffness<6>&, const TensorBounds<6>&, const std::string&);
 
 }  // namespace grainmesh

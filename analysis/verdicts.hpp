@@ -40,8 +40,10 @@ struct StiffnessVerdict {
   std::optional<bool> inside_hashin_shtrikman;  // when the bounds have them (two phases)
   std::vector<std::string> broken_hashin_shtrikman;  // the broken ones' sentences (outside)
 };
+// `what` names the tensor in the sentences ("effective": effective.bulk_modulus, ...).
 template <std::size_t N>
-StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBounds<N>& bounds);
+StiffnessVerdict<N> judge_stiffness(const Stiffness<N>& solved, const TensorBounds<N>& bounds,
+                                    const std::string& what = "effective");
 
 // The modulus of the thesis' mixed load judged against its Voigt and Reuss values (and
 // Hashin-Shtrikman's when given): the broken bounds' sentences (outside).
@@ -51,7 +53,7 @@ struct ModulusVerdict {
   std::vector<std::string> broken_voigt_reuss, broken_hashin_shtrikman;
 };
 ModulusVerdict judge_modulus(double modulus, double voigt, double reuss, std::optional<double> hs_lower = {},
-                             std::optional<double> hs_upper = {});
+                             std::optional<double> hs_upper = {}, const std::string& what = "effective.modulus");
 
 // How far an effective expansion lies from Levin's exact relation: the largest difference
 // of a component over Levin's largest component (components in the same order). Above

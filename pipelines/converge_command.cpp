@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/limit_bounds.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "pipelines/convergence_study.hpp"
@@ -18,11 +19,11 @@
 #include "pipelines/run_command.hpp"
 #include "pipelines/run_config.hpp"
 #include "pipelines/run_plan.hpp"
+#include "pipelines/solve_cell.hpp"
 
 namespace grainmesh {
 
 namespace {
-
 
 // The quantities a level's answer gives: the mixed modulus (and the biased volume average
 // beside it), or the periodic stiffness's normal entries (the diagonal, then those off it)
@@ -61,9 +62,10 @@ bool check_study(const Config& c, const ConvergeOptions& o) {
   return openfoam;
 }
 
-// Runs the levels into `dir`; a failed solve keeps the study so far as DIR.failed.
+// Runs the levels into `dir`, the finest level's answer into `finest`; a failed solve
+// keeps the study so far as DIR.failed.
 Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged, const ConvergeOptions& o,
-                  bool openfoam) {
+                  bool openfoam, std::optional<RunAnswer>& finest) {
   const std::filesystem::path dir = staged.dir();
   Levels l;
   std::vector<std::string>& names = l.names;
@@ -92,6 +94,7 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
       throw SolveError(what);
     }
     const auto q = std::visit([](const auto& a) { return quantities(a); }, *run.answer);
+    finest = std::move(run.answer);
     if (names.empty()) {
       for (const auto& [qn, v] : q) names.push_back(qn);
       values.resize(names.size());
@@ -115,7 +118,8 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   StagedOutput staged(out, "converge");
   const std::filesystem::path dir = staged.dir();
   const std::string ini = config_ini(c);
-  const Levels l = run_levels(c, ini, staged, o, openfoam);
+  std::optional<RunAnswer> finest;
+  const Levels l = run_levels(c, ini, staged, o, openfoam, finest);
   const Study st = study_of(l);
   write_text_file(dir / "convergence.csv", convergence_csv(l, st));
   write_convergence_png(dir / "convergence.png", l, st);
@@ -130,6 +134,10 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
     if (!estimates[i].asymptotic && !estimates[i].settled)
       warnings.add("converge: " + names[i] + " does not converge monotonically over the last three levels; its limit " +
                    "is the finest value (add levels)");
+  StudyLimits limits;
+  for (std::size_t i = 0; i < names.size(); ++i) limits.emplace_back(names[i], estimates[i].limit);
+  for (const std::string& broken : std::visit([&](const auto& a) { return limits_outside_bounds(a, limits); }, *finest))
+    warnings.add("converge: " + broken + ": the levels are not yet in the asymptotic range (add levels, or start finer)");
   write_report(staged, report, warnings);
   staged.commit();
   const char* elements = l.dimensions == 3 ? "tetrahedra" : "triangles";
