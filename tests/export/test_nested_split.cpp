@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -29,17 +31,24 @@ using namespace grainmesh;
 
 namespace {
 
-ExportMesh<2> cell_2d() {
+// A periodic plane cell of `grains` Lloyd-relaxed grains, meshed at element size `size`.
+ExportMesh<2> plane_cell(double width, double height, int grains, std::vector<Phase> phases, unsigned seed,
+                         double size) {
   TessellationOptions o;
-  o.width = 3.0;
-  o.height = 1.7;
-  o.grains = 30;
+  o.width = width;
+  o.height = height;
+  o.grains = grains;
   o.periodic = true;
   o.lloyd_iterations = 3;
-  o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
-  Rng rng(5);
+  o.phases = std::move(phases);
+  Rng rng(seed);
   const Tessellation t = tessellate(o, rng);
-  return grain_export_mesh(t, mesh_tessellation(t, {.size = 0.15, .phase_size = {}}));
+  return grain_export_mesh(t, mesh_tessellation(t, {.size = size, .phase_size = {}}));
+}
+
+ExportMesh<2> cell_2d() {
+  const std::vector<Phase> phases{Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
+  return plane_cell(3.0, 1.7, 30, phases, 5, 0.15);
 }
 
 ExportMesh<3> cell_3d() {
@@ -242,16 +251,7 @@ TEST_CASE("the finite elements' error estimate covers their error measured on th
   SECTION("2D, contrasts 3.3 and 20") {
     for (const double co_modulus : {211e9, 35e9}) {
       CAPTURE(co_modulus);
-      TessellationOptions o;
-      o.width = 1.5;
-      o.height = 1.2;
-      o.grains = 12;
-      o.periodic = true;
-      o.lloyd_iterations = 3;
-      o.phases = wc_co(co_modulus);
-      Rng rng(7);
-      const Tessellation t = tessellate(o, rng);
-      const ExportMesh<2> m = heated(grain_export_mesh(t, mesh_tessellation(t, {.size = 0.15, .phase_size = {}})));
+      const ExportMesh<2> m = heated(plane_cell(1.5, 1.2, 12, wc_co(co_modulus), 7, 0.15));
       const ExportMesh<2> s1 = split_nested(m);
       const FeNested<3> levels = fe_homogenise_nested(m, s1, false, true);
       check_estimate_covers(levels.coarse, levels.fine, fe_homogenise_nested(s1, split_nested(s1), false, true).fine);
