@@ -19,12 +19,12 @@ struct RichardsonEstimate {
 // meshes' noise, where no order can be observed.
 inline constexpr double kSettled = 1e-4;
 
-// From the values `f` on meshes of `cells` cells (coarse to fine, at least three; h taken
-// as cells^(-1 / dimensions), the last three meshes' ratio as their geometric mean):
+// From the values `f` on meshes refined by `ratio` (> 1) in their element size h from one
+// to the next (coarse to fine, at least three; nested refinement: 2), of the last three:
 //   p = ln((f2 - f1) / (f3 - f2)) / ln r,   limit = f3 + (f3 - f2) / (r^p - 1);
 // when the last three differ by less than kSettled (relative), the finest value.
-// Throws GeometryError for fewer than three levels.
-RichardsonEstimate richardson(const std::vector<double>& f, const std::vector<double>& cells, int dimensions = 2);
+// Throws GeometryError for fewer than three levels or a ratio not above 1.
+RichardsonEstimate richardson(const std::vector<double>& f, double ratio);
 
 // The first level (coarse to fine) whose value lies within `tolerance` (relative) of
 // `limit`, and stays so on every finer level; none when there is none.

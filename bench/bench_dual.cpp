@@ -128,7 +128,8 @@ double default_limit(const Family& f, Json& results) {
     values.push_back(r["modulus"].get<double>());
     cells.push_back(r["cells"].get<double>());
   }
-  const RichardsonEstimate e = richardson(values, cells);
+  // h ~ 1 / sqrt(cells): the levels' ratio in h, from the first to the last of the three.
+  const RichardsonEstimate e = richardson(values, std::pow(cells[2] / cells[0], 0.25));
   std::printf("default cell: polygons' modulus at 400, 800, 1600 triangles per grain %.5e %.5e %.5e: Richardson limit "
               "%.5e (order %.2f)\n",
               values[0], values[1], values[2], e.limit, e.order.value_or(NAN));

@@ -52,7 +52,12 @@ class PlaneCellRun final : public CellRun {
   }
 
   std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
-    e_ = export_mesh(*t_, *m_, foam_.cells);
+    if (plan_.refine == 0) {
+      e_ = export_mesh(*t_, *m_, foam_.cells);
+    } else {
+      ExportMesh<2> triangles = refined(grain_export_mesh(*t_, *m_), plan_.refine, mesh_job_.origin);
+      e_ = foam_.cells == FoamOptions::Cells::polygons ? polygon_cells(triangles) : std::move(triangles);
+    }
     if (foam_.cells == FoamOptions::Cells::polygons && plan_.pictures == Pictures::all)
       // The solved cells, as mesh_detail.png shows the triangles.
       write_mesh_png(dir / "cells_detail.png", e_->mesh,
@@ -64,8 +69,11 @@ class PlaneCellRun final : public CellRun {
 
   Json case_fields() const override {
     Json fields{{"case_format", foam_.binary ? "binary" : "ascii"}, {"plane_state", plane_state(foam_)}};
-    // Polygonal cells: how many the case has (mesh.cells counts the triangles they come from).
-    if (foam_.cells == FoamOptions::Cells::polygons) fields["case_cells"] = {{"shape", "polygons"}, {"cells", e_->mesh.cells()}};
+    // Polygonal or refined cells: how many the case has (mesh.cells counts the triangles as meshed).
+    if (foam_.cells == FoamOptions::Cells::polygons || plan_.refine > 0)
+      fields["case_cells"] = {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polygons" : "triangles"},
+                              {"cells", e_->mesh.cells()}};
+    if (plan_.refine > 0) fields["refine"] = plan_.refine;
     return fields;
   }
 
@@ -79,7 +87,9 @@ class PlaneCellRun final : public CellRun {
                   std::vector<std::string>& warnings) override {
     // The finite elements' coarse level (fe_coarse_mesh).
     std::optional<ExportMesh<2>> coarse;
-    if (plan_.solves_fe()) coarse = grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.triangles.size()));
+    if (plan_.solves_fe())
+      coarse = refined(grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.triangles.size())), plan_.refine,
+                       mesh_job_.origin);
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
                            .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_,

@@ -45,17 +45,19 @@ class SolidCellRun final : public CellRun {
   }
 
   std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
-    e_ = grain_export_mesh(*t_, *m_);
+    e_ = refined(grain_export_mesh(*t_, *m_), plan_.refine, mesh_job_.origin);
     foam_.binary = binary_case(plan_, e_->mesh.tets.size());
     return write_run_cases(dir, *e_, foam_, plan_.boundary, fm_);
   }
 
   Json case_fields() const override {
-    return {{"case_format", foam_.binary ? "binary" : "ascii"},
-            {"case_cells",
-             {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polyhedra" : "tetrahedra"},
-              {"cells", fm_.mesh.cells},
-              {"faces", fm_.mesh.faces()}}}};
+    Json fields{{"case_format", foam_.binary ? "binary" : "ascii"},
+                {"case_cells",
+                 {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polyhedra" : "tetrahedra"},
+                  {"cells", fm_.mesh.cells},
+                  {"faces", fm_.mesh.faces()}}}};
+    if (plan_.refine > 0) fields["refine"] = plan_.refine;
+    return fields;
   }
 
   std::string solving() const override {
@@ -97,7 +99,8 @@ class SolidCellRun final : public CellRun {
   // The finite elements' coarse level (fe_coarse_mesh); none when they do not solve.
   const ExportMesh<3>* fe_mesh() {
     if (!plan_.solves_fe()) return nullptr;
-    fe_mesh_ = grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.tets.size()));
+    fe_mesh_ = refined(grain_export_mesh(*t_, fe_coarse_mesh(*t_, mesh_job_, m_->mesh.tets.size())), plan_.refine,
+                       mesh_job_.origin);
     return &*fe_mesh_;
   }
   // The periodic load cases' count: six, and the thermal one.

@@ -25,20 +25,33 @@ namespace grainmesh {
 
 namespace {
 
+// A quantity a level's answer gives, and its error against the finite-element reference
+// where that was solved beside it (homogenise.reference = fe).
+struct Quantity {
+  std::string name;
+  double value = 0.0;
+  std::optional<double> reference_error;
+};
+
 // The quantities a level's answer gives: the mixed modulus (and the biased volume average
 // beside it), or the periodic stiffness's normal entries (the diagonal, then those off it)
 // and its shears' diagonal: C11, C22, C12, C66 in 2D.
 template <std::size_t N>
-std::vector<std::pair<std::string, double>> quantities(const Answer<N>& a) {
+std::vector<Quantity> quantities(const Answer<N>& a) {
   if (const auto* m = std::get_if<MixedAnswer<N>>(&a.effective))
-    return {{"modulus", m->modulus}, {"volume_average_modulus", m->volume_average_modulus}};
-  const Stiffness<N>& C = std::get<PeriodicAnswer<N>>(a.effective).verdict.stiffness;
+    return {{"modulus", m->modulus, {}}, {"volume_average_modulus", m->volume_average_modulus, {}}};
+  const PeriodicAnswer<N>& p = std::get<PeriodicAnswer<N>>(a.effective);
+  const Stiffness<N>& C = p.verdict.stiffness;
   constexpr std::size_t d = voigt_dimensions<N>();
-  std::vector<std::pair<std::string, double>> q;
-  for (std::size_t k = 0; k < d; ++k) q.emplace_back(stiffness_name<N>(k, k), C[k][k]);
+  std::vector<Quantity> q;
+  auto add = [&](std::size_t i, std::size_t j) {
+    q.push_back({stiffness_name<N>(i, j), C[i][j], {}});
+    if (p.reference) q.back().reference_error = p.reference->stiffness_error[i][j];
+  };
+  for (std::size_t k = 0; k < d; ++k) add(k, k);
   for (std::size_t i = 0; i < d; ++i)
-    for (std::size_t j = i + 1; j < d; ++j) q.emplace_back(stiffness_name<N>(i, j), C[i][j]);
-  for (std::size_t k = d; k < N; ++k) q.emplace_back(stiffness_name<N>(k, k), C[k][k]);
+    for (std::size_t j = i + 1; j < d; ++j) add(i, j);
+  for (std::size_t k = d; k < N; ++k) add(k, k);
   return q;
 }
 
@@ -46,19 +59,23 @@ std::vector<std::pair<std::string, double>> quantities(const Answer<N>& a) {
 std::string level_key(const Config& c) {
   return cell_dimensions(c) == 3 ? "mesh.tets_per_grain" : "mesh.triangles_per_grain";
 }
-// The study's checks: its levels, and no key that fixes an element size. Whether its levels
-// are solved by OpenFOAM: not when the finite elements answer (homogenise.solver = fe).
+// The study's checks: its levels, and no key that fixes an element size or the
+// refinement the levels set. Whether its levels are solved by OpenFOAM: not when the
+// finite elements answer (homogenise.solver = fe).
 bool check_study(const Config& c, const ConvergeOptions& o) {
-  if (o.levels < 3 || o.levels > 12)
-    throw ConfigError("converge: --levels " + std::to_string(o.levels) +
-                      ": give 3 to 12 (Richardson extrapolation needs three levels)");
+  if (o.levels < 3 || o.levels > kMaxRefine + 1)
+    throw ConfigError("converge: --levels " + std::to_string(o.levels) + ": give 3 to " + std::to_string(kMaxRefine + 1) +
+                      " (Richardson extrapolation needs three levels; each has " +
+                      (cell_dimensions(c) == 3 ? "8" : "4") + " times the cells of the one before)");
   if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
   const bool openfoam = read_run_plan(c, /*solve=*/true).solver == Solver::openfoam;
-  for (const auto& [key, value] : c.entries())
+  for (const auto& [key, value] : c.entries()) {
     if (key == "mesh.size" || key == "mesh.h" || key == "mesh.boundary_size" || key == "mesh.junction_size" ||
         (key.rfind("phase.", 0) == 0 && key.size() > 5 && key.compare(key.size() - 5, 5, ".size") == 0))
       c.fail(key, "fixes an element size, which would not follow the study's levels (" + level_key(c) +
-                      "); remove it to study convergence");
+                      " = --start); remove it to study convergence");
+    if (key == "mesh.refine") c.fail(key, "is what the study's levels set (0 to --levels - 1); remove it");
+  }
   return openfoam;
 }
 
@@ -73,12 +90,16 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
   std::vector<double>&cells = l.cells, &tpg = l.tpg, &seconds = l.seconds;
   Json& levels = l.json;
   l.dimensions = cell_dimensions(c);
+  const double children = l.dimensions == 3 ? 8.0 : 4.0;
   for (int k = 0; k < o.levels; ++k) {
-    const int n = o.start << k;
-    const std::string name = "tpg-" + std::to_string(n);
-    const Config level = Config::from_text(ini, c.source(), {level_key(c) + "=" + std::to_string(n)});
-    std::fprintf(stderr, "grainmesh converge: level %d of %d: %d %s per grain\n", k + 1, o.levels, n,
-                 l.dimensions == 3 ? "tetrahedra" : "triangles");
+    // The coarsest level meshed at --start elements per grain, each level after it that
+    // mesh split once more (mesh.refine): the same geometry at every level.
+    const double per_grain = o.start * std::pow(children, k);
+    const std::string name = "level-" + std::to_string(k);
+    const Config level = Config::from_text(
+        ini, c.source(), {level_key(c) + "=" + std::to_string(o.start), "mesh.refine=" + std::to_string(k)});
+    std::fprintf(stderr, "grainmesh converge: level %d of %d: %d %s per grain, split %d time%s\n", k + 1, o.levels,
+                 o.start, l.dimensions == 3 ? "tetrahedra" : "triangles", k, k == 1 ? "" : "s");
     RunResult run;
     try {
       run = run_run_command(level, dir / name, /*solve=*/openfoam, /*quiet=*/true, /*summary=*/false);
@@ -96,15 +117,25 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
     const auto q = std::visit([](const auto& a) { return quantities(a); }, *run.answer);
     finest = std::move(run.answer);
     if (names.empty()) {
-      for (const auto& [qn, v] : q) names.push_back(qn);
+      for (const Quantity& qi : q) names.push_back(qi.name);
       values.resize(names.size());
+      l.reference_errors.resize(names.size());
     }
-    for (std::size_t i = 0; i < q.size(); ++i) values[i].push_back(q[i].second);
+    Json reference_errors = Json::object();
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      values[i].push_back(q[i].value);
+      l.reference_errors[i].push_back(q[i].reference_error);
+      if (q[i].reference_error) reference_errors[q[i].name] = *q[i].reference_error;
+    }
     cells.push_back(static_cast<double>(run.solved_cells));
-    tpg.push_back(n);
+    tpg.push_back(per_grain);
     seconds.push_back(run.seconds);
-    levels.push_back(
-        {{per_grain_name(l.dimensions), n}, {"directory", name}, {"cells", cells.back()}, {"seconds", seconds.back()}});
+    levels.push_back({{per_grain_name(l.dimensions), per_grain},
+                      {"refine", k},
+                      {"directory", name},
+                      {"cells", cells.back()},
+                      {"seconds", seconds.back()}});
+    if (!reference_errors.empty()) levels.back()["reference_error"] = reference_errors;
   }
 
   return l;
@@ -141,11 +172,12 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   write_report(staged, report, warnings);
   staged.commit();
   const char* elements = l.dimensions == 3 ? "tetrahedra" : "triangles";
-  std::printf("grainmesh converge: %d levels (%d to %d %s per grain) in %s\n", o.levels, o.start,
-              o.start << (o.levels - 1), elements, out.string().c_str());
+  std::printf("grainmesh converge: %d nested levels (%d %s per grain, split up to %d times) in %s\n", o.levels, o.start,
+              elements, o.levels - 1, out.string().c_str());
   for (std::size_t i = 0; i < names.size(); ++i)
-    std::printf("  %s: limit %.6g (order %s), within 0.1 %% from %s %s per grain\n", names[i].c_str(),
-                estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
+    std::printf("  %s: limit %.6g (order %s; the finest level within %s %%), within 0.1 %% from %s %s per grain\n",
+                names[i].c_str(), estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
+                to_text(100.0 * st.errors[i], 2).c_str(),
                 within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none", elements);
 }
 

@@ -1,5 +1,9 @@
 #include "pipelines/convergence_study.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "common/format.hpp"
 #include "view/picture.hpp"
 
@@ -7,20 +11,37 @@ namespace grainmesh {
 
 const char* per_grain_name(int dimensions) { return dimensions == 3 ? "tets_per_grain" : "triangles_per_grain"; }
 
+namespace {
+
+// The finest level's estimated error, relative, and its basis (Study::errors).
+std::pair<double, const char*> finest_error(const std::vector<double>& f, const std::optional<double>& reference_error,
+                                            const RichardsonEstimate& e) {
+  const double finest = f.back();
+  if (reference_error) return {std::abs(*reference_error), "reference"};
+  if (e.asymptotic) return {std::abs(finest - e.limit) / std::abs(e.limit), "richardson"};
+  const auto [low, high] = std::minmax_element(f.begin(), f.end());
+  return {kUnorderedErrorFactor * (*high - *low) / std::abs(finest), "range"};
+}
+
+}  // namespace
 
 Study study_of(const Levels& l) {
   const std::vector<std::string>& names = l.names;
   const std::vector<std::vector<double>>& values = l.values;
-  const std::vector<double>&cells = l.cells, &tpg = l.tpg;
+  const std::vector<double>& tpg = l.tpg;
   Study st;
   Json& study = st.json;
   std::vector<RichardsonEstimate>& estimates = st.estimates;
   std::vector<std::optional<int>>& within = st.within;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    estimates.push_back(richardson(values[i], cells, l.dimensions));
+    estimates.push_back(richardson(values[i], kLevelRatio));
+    const auto [error, basis] = finest_error(values[i], l.reference_errors[i].back(), estimates.back());
+    st.errors.push_back(error);
     within.push_back(first_within(values[i], estimates.back().limit, kWithin));
     Json s{{"values", values[i]},
            {"limit", estimates.back().limit},
+           {"error_estimate", error},
+           {"error_basis", basis},
            {"asymptotic", estimates.back().asymptotic},
            {"settled", estimates.back().settled},
            {"order", estimates.back().order ? Json(*estimates.back().order) : Json(nullptr)},
@@ -53,6 +74,7 @@ std::string convergence_csv(const Levels& l, const Study& st) {
   };
   row("richardson_limit", [&](std::size_t i) { return to_text(estimates[i].limit, 10); });
   row("observed_order", [&](std::size_t i) { return estimates[i].order ? to_text(*estimates[i].order, 3) : std::string(); });
+  row("error_estimate", [&](std::size_t i) { return to_text(st.errors[i], 3); });
   row("coarsest_within_0.1_percent",
       [&](std::size_t i) { return within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]) : std::string(); });
 

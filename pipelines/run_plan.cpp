@@ -70,6 +70,14 @@ bool read_reference(const Config& c, bool solve) {
   return true;
 }
 
+// mesh.refine: how often the mesh is split in nested refinement before the solves.
+int read_refine(const Config& c) {
+  const long long refine = c.integer("mesh.refine", 0);
+  if (refine < 0 || refine > kMaxRefine)
+    c.fail("mesh.refine", "must be a count from 0 to " + std::to_string(kMaxRefine) + ", got " + c.text("mesh.refine"));
+  return static_cast<int>(refine);
+}
+
 void check_periodic_cell(const Config& c) {
   if (!c.flag("domain.periodic", false))
     c.fail("homogenise.boundary", "periodic needs a periodic cell: set domain.periodic = true");
@@ -99,7 +107,7 @@ const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
                                              "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
                                              "homogenise.boundary", "homogenise.solver", "homogenise.reference", "solve.processes", "output.pictures",
-                                             "output.cases"};
+                                             "output.cases", "mesh.refine"};
   return keys;
 }
 
@@ -186,6 +194,7 @@ RunPlan read_run_plan(const Config& c, bool solve) {
   s.boundary = read_boundary(c);
   s.solver = read_solver(c);
   s.fe_reference = read_reference(c, solve);
+  s.refine = read_refine(c);
   s.pictures = read_pictures(c);
   s.keep_cases = read_keep_cases(c, solve);
   return s;

@@ -30,6 +30,9 @@ struct CellJobs {
   MeshJob<D> mesh;
 };
 
+// The most nested refinements mesh.refine takes: 4^4 (8^4) times the cells.
+inline constexpr int kMaxRefine = 4;
+
 struct RunPlan {
   std::string source;        // the config's file ("default" for the embedded one)
   std::string fingerprint;   // config_fingerprint of the config
@@ -40,6 +43,7 @@ struct RunPlan {
   Boundary boundary = Boundary::mixed;
   Solver solver = Solver::openfoam;  // homogenise.solver: where a periodic cell's answer comes from
   bool fe_reference = false;  // homogenise.reference = fe: the finite-element reference beside the answer
+  int refine = 0;  // mesh.refine: the mesh split in nested refinement so often before the solves
   Pictures pictures = Pictures::all;
   bool solve = false;
   bool keep_cases = true;               // output.cases = keep (answers: dropped once solved)

@@ -86,7 +86,7 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
       {"tessellate", three, {"tessellation.grains=10", "phase.Co.fraction=0.01"}, "phase.Co.fraction: a fraction of 0.01 gives the phase none of the 10 grains"},
       {"tessellate", three, {"output.section=1"}, "output.section: must lie in (0, 1)"},
       {"tessellate", two, {"output.section=0.5"}, "output.section: only for 3D cells (with domain.depth)"},
-      {"converge", three, {"mesh.size=0.1"}, "mesh.size: fixes an element size, which would not follow the study's levels (mesh.tets_per_grain)"},
+      {"converge", three, {"mesh.size=0.1"}, "mesh.size: fixes an element size, which would not follow the study's levels (mesh.tets_per_grain = --start)"},
       {"run", three, {"solve.processes=0"}, "solve.processes: must be a count from 1 to 1024"},
       {"run", three, {"domain.periodic=false", "homogenise.boundary=periodic"}, "homogenise.boundary: periodic needs a periodic cell"},
       {"run", three, {"homogenise.boundary=periodic", "load.uniaxial=true"}, "load.uniaxial: not with homogenise.boundary = periodic"},
