@@ -149,7 +149,8 @@ FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coar
   const Stiffness<N> d = level_differences(c, f);
   for (std::size_t i = 0; i < N; ++i)
     for (std::size_t j = 0; j < N; ++j)
-      e.stiffness[i][j] = kFeLevelFactor * relative_error(f[i][j] + d[i][j], f[i][j], largest);
+      e.stiffness[i][j] =
+          (i == j ? kFeLevelFactor : kFeCouplingFactor) * relative_error(f[i][j] + d[i][j], f[i][j], largest);
   e.bulk_modulus = kFeLevelFactor * std::abs(bulk_modulus(c) / bulk_modulus(f) - 1.0);
   e.shear_modulus = kFeLevelFactor * std::abs(shear_modulus(c) / shear_modulus(f) - 1.0);
   if (fine.expansion && coarse.expansion) {
@@ -160,9 +161,10 @@ FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coar
     e.expansion = x;
   }
   e.basis = "the finite elements on two levels (" + how + "): " + to_text(kFeLevelFactor) +
-            " x their difference (an off-diagonal stiffness entry's relative difference no smaller than its "
-            "diagonals'), the fine level's error when each halving of the element size gains a factor of " +
-            to_text(1.0 + 1.0 / kFeLevelFactor) + " or more (docs/run.md, Error estimates)";
+            " x their difference, an off-diagonal stiffness entry's " + to_text(kFeCouplingFactor) +
+            " x (its relative difference no smaller than its diagonals'), the fine level's error when each halving "
+            "of the element size gains a factor of " + to_text(1.0 + 1.0 / kFeLevelFactor) + " (" +
+            to_text(1.0 + 1.0 / kFeCouplingFactor, 3) + ") or more (docs/run.md, Error estimates)";
   return l;
 }
 

@@ -102,9 +102,14 @@ struct FeLevels {
 // at least 1.67 on contrast-20 cells whose corners make the solution singular, about 3.5
 // at the default contrast: docs/benchmarks.md, fe_nested).
 inline constexpr double kFeLevelFactor = 2.0;
+// The same for an off-diagonal stiffness entry (a coupling, not an energy: it need not
+// fall from level to level, and converges more slowly): r >= 4/3 (measured 1.38 and 1.44
+// on C12 of the default cell at contrast 20, four nested levels: docs/benchmarks.md).
+inline constexpr double kFeCouplingFactor = 3.0;
 
 // The fine level's error estimate: each quantity's difference from the coarse level times
-// kFeLevelFactor, relative to the fine one by ReferenceAnswer's rule; `how` the levels.
+// kFeLevelFactor (an off-diagonal entry's times kFeCouplingFactor), relative to the fine
+// one by ReferenceAnswer's rule; `how` the levels.
 template <std::size_t N>
 FeLevels<N> fe_levels(const FeHomogenised<N>& fine, const FeHomogenised<N>& coarse, const std::string& how);
 
