@@ -52,6 +52,11 @@ struct FoamOptions {
   // The cells (export.cells): the mesh's triangles, or the polygons of its dual split at
   // grain boundaries (polygon_cells).
   enum class Cells { triangles, polygons } cells = Cells::triangles;
+  // 3D polyhedra (the dual): each face round a tetrahedron's edge (a ring of face and
+  // tetrahedron centroids about the edge's midpoint, not plane) split into the plane
+  // triangles it is made of, so that OpenFOAM's face areas and cell volumes are the
+  // polyhedra's exactly; false: one polygon per face.
+  bool plane_faces = false;
   // The linear solver of D's equation: automatic is multigrid (GAMG: fastest) in 2D and
   // conjugate gradients (PCG with DIC) in 3D, where GAMG blew up; the solve falls back on
   // conjugate gradients when multigrid diverges (analysis/solve.cpp).

@@ -298,10 +298,11 @@ std::vector<Between> dual_cells(const ExportMesh<3>& m, const MeshFaces& mf, Foa
 }
 
 // The dual's faces: two pieces per tetrahedron edge (between its ends' cells), two per
-// corner of a triangle in `splits`, chained. Each node's phase (of a tetrahedron it lies
-// in) into `node_phase`.
+// corner of a triangle in `splits`, chained (with `plane_faces` the pieces round an edge
+// each a face of its own). Each node's phase (of a tetrahedron it lies in) into
+// `node_phase`.
 std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, const std::vector<int>& cell,
-                                 const std::vector<Between>& splits, std::vector<int>& node_phase) {
+                                 const std::vector<Between>& splits, bool plane_faces, std::vector<int>& node_phase) {
   const std::vector<std::array<int, 4>>& T = m.mesh.tets;
   std::vector<Piece> pieces;
   pieces.reserve(12 * T.size() + 6 * splits.size());
@@ -343,7 +344,10 @@ std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, con
   for (auto it = pieces.begin(); it != pieces.end();) {
     auto end = it;
     while (end != pieces.end() && end->face() == it->face()) ++end;
-    chain(it, end, dual);
+    if (plane_faces && it->part == -1)
+      for (auto p = it; p != end; ++p) dual.push_back({{p->apex, p->from, p->to}, p->first, p->second});
+    else
+      chain(it, end, dual);
     it = end;
   }
   return dual;
@@ -389,7 +393,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   const std::vector<Between> splits = dual_cells(m, mf, out);
   const Nodes nodes(m.mesh, interface_points(m), std::move(mf.edges), std::move(mf.triangles));
   std::vector<int> node_phase(static_cast<std::size_t>(nodes.size()), 0);
-  const std::vector<DualFace> dual = dual_faces(m, nodes, out.corner_cell, splits, node_phase);
+  const std::vector<DualFace> dual = dual_faces(m, nodes, out.corner_cell, splits, o.plane_faces, node_phase);
   const std::vector<double> weight = interface_weights(m.phases);
 
   // The polyMesh: internal faces by owner and neighbour, then the sides'; points as

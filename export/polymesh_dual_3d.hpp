@@ -19,7 +19,9 @@ namespace grainmesh {
 // edge; a face between two cells of one point lies in the grain boundary (a quarter of a
 // triangle, plane, so each grain keeps its volume exactly), as does a face on a side of
 // the box; each is one polygon (its ring of corners, and the point or edge point it fans
-// from when the ring is open). Internal faces in OpenFOAM's order, boundary faces patch
+// from when the ring is open; with options.plane_faces a face round an edge is split into
+// its plane triangles, edge midpoint, face centroid and tetrahedron centroid). Internal
+// faces in OpenFOAM's order, boundary faces patch
 // by patch as build_polymesh (cyclic sides' faces the images of their partners'),
 // zones by add_zones; cells in the order of their points. Throws as build_polymesh,
 // and GeometryError where the dual's faces would not be simple (a grain boundary not

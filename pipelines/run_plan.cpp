@@ -107,7 +107,7 @@ const std::vector<std::string>& case_keys_3d() {
   static const std::vector<std::string> keys{"export.convert_to_meters", "export.format", "export.grain_zones",
                                              "export.cells", "load.displacement", "load.uniaxial", "load.delta_T",
                                              "homogenise.boundary", "homogenise.solver", "homogenise.reference", "solve.processes", "output.pictures",
-                                             "output.cases", "mesh.refine"};
+                                             "output.cases", "mesh.refine", "export.plane_faces"};
   return keys;
 }
 
@@ -133,6 +133,11 @@ FoamOptions read_run_foam_options(const Config& c, int dimensions) {
     if (cells != "polyhedra" && cells != "tetrahedra")
       c.fail("export.cells", "must be polyhedra or tetrahedra on 3D cells, got '" + cells + "'");
     o.cells = cells == "polyhedra" ? FoamOptions::Cells::polygons : FoamOptions::Cells::triangles;
+    o.plane_faces = c.flag("export.plane_faces", false);
+    if (o.plane_faces && o.cells != FoamOptions::Cells::polygons)
+      c.fail("export.plane_faces", "splits the faces of polyhedra; export.cells = tetrahedra has plane faces already");
+  } else if (c.has("export.plane_faces")) {
+    c.fail("export.plane_faces", "only for 3D cells' polyhedra (a 2D case's faces are plane)");
   }
   o.processes = read_solve_processes(c);
   o.delta_T = read_delta_T(c);
