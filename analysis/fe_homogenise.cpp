@@ -293,14 +293,18 @@ Eigen::MatrixXd mean_stresses(const Problem<D>& p, const Eigen::MatrixXd& u) {
 
 // Refuses a factor that would not fit: CHOLMOD's count of its nonzeros (known after the
 // analysis, before any is made), 8 bytes each and 60 % more for the supernodes' padding
-// and CHOLMOD's workspace, beside the matrix (three copies) and the loads' columns (right
-// sides and solutions). On the 3D example: 4.9 GiB estimated, 5.2 GiB measured (the
-// run's peak, OpenFOAM's stage included).
+// and CHOLMOD's workspace, beside the matrix (three copies), the loads' columns (right
+// sides and solutions) and the BLAS's own buffers (OpenBLAS takes 128 MiB per call of the
+// dense factorisation, and retries for ever where it cannot: under ulimit -v the run
+// would hang). On the 3D example: 4.9 GiB estimated, 5.2 GiB measured (the run's peak,
+// OpenFOAM's stage included).
+constexpr double kBlasBufferMiB = 256.0;
 void check_memory(const cholmod_common& analysed, const Eigen::SparseMatrix<double>& k, int loads, std::size_t unknowns,
                   const FeOptions& o) {
   constexpr double kMiB = 1024.0 * 1024.0;
   const double need = (1.6 * 8.0 * analysed.lnz + 3.0 * 12.0 * static_cast<double>(k.nonZeros()) +
-                       3.0 * 8.0 * static_cast<double>(loads) * static_cast<double>(unknowns)) / kMiB;
+                       3.0 * 8.0 * static_cast<double>(loads) * static_cast<double>(unknowns)) / kMiB +
+                      kBlasBufferMiB;
   const double have = o.memory_mib > 0.0 ? o.memory_mib : available_memory_mib();
   auto size = [](double mib) { return mib < 1024.0 ? to_text(mib, 3) + " MiB" : to_text(mib / 1024.0, 3) + " GiB"; };
   const std::string key = o.reference ? "homogenise.reference" : "homogenise.solver";

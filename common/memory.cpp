@@ -1,6 +1,7 @@
 #include "common/memory.hpp"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -74,6 +75,11 @@ double available_memory_mib() {
     const double max = number_in(dir / limit), used = number_in(dir / usage);
     if (max >= 0.0 && used >= 0.0) mib = std::min(mib, std::max(0.0, max - used) / (kKiBPerMiB * kKiBPerMiB));
   }
+  // The process's address-space limit (ulimit -v; RLIMIT_AS) less what it has mapped.
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
+    if (const double kib = number_in("/proc/self/status", "VmSize:"); kib >= 0.0)
+      mib = std::min(mib, std::max(0.0, static_cast<double>(as.rlim_cur) / kKiBPerMiB - kib) / kKiBPerMiB);
   return mib;
 }
 

@@ -29,7 +29,8 @@ class StageMemory {
 
 // The memory a stage may still take, in MiB: the machine's available memory (MemAvailable)
 // or, when less, what this process's control group (a SLURM job's, a container's: cgroup
-// v2 memory.max or v1 memory.limit_in_bytes) still allows; infinity when neither can be read.
+// v2 memory.max or v1 memory.limit_in_bytes) or its address-space limit (ulimit -v, less
+// what it has mapped) still allows; infinity when none can be read.
 double available_memory_mib();
 
 // Resident memory of process `pid` and every process below it, in MiB, now.

@@ -4,6 +4,7 @@
 #include <signal.h>
 
 #include <cstdio>
+#include <new>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -88,6 +89,11 @@ int main(int argc, char** argv) {
     wait_if_interrupted();  // an error the interrupt caused (a child it stopped) is not the run's
     std::fprintf(stderr, "%s%s\n", kErrorPrefix.data(), e.what());
     return exit_code_of(e);
+  } catch (const std::bad_alloc&) {
+    wait_if_interrupted();
+    std::fprintf(stderr, "%sout of memory: the run needs more than this process may take (the machine's, its control "
+                 "group's or ulimit -v's limit); mesh coarser, or fewer grains\n", kErrorPrefix.data());
+    return kExitInternal;
   } catch (const std::exception& e) {
     wait_if_interrupted();
     std::fprintf(stderr, "grainmesh: internal error: %s\n", e.what());

@@ -396,3 +396,43 @@ TEST_CASE("a case that fails one of checkMesh's checks is a warning, not a silen
   CHECK(nlohmann::json::parse(test::read_file(dir / "ok/report.json"))["mesh_check"]["failed_checks"] == 0);
   CHECK(ok.err.find("checkMesh") == std::string::npos);
 }
+
+#ifndef GRAINMESH_SANITIZED
+// (Release build only: AddressSanitizer reserves terabytes of address space and cannot run
+// under an address-space limit at all.)
+TEST_CASE("under ulimit -v, finite elements too big for what is left are refused naming the key, and running out of "
+          "memory anywhere is one line; nothing written either way",
+          "[cli][safety][fe]") {
+  test::ScratchDir dir("memory_limit");
+  auto limit = [](double mib) { return "prlimit --as=" + std::to_string(static_cast<long long>(mib * 1024 * 1024)); };
+  // A 12-grain 3D cell meshed fine: the mesh takes little, the second-order elements'
+  // factor a few hundred MiB (measured: the run's peak 340 MB resident without a limit;
+  // under 450 MiB of address space about 170 MiB are left when the factor is analysed).
+  const auto fe = test::run_grainmesh({"run", test::example("grains_3d_wc_co").string(), "-o", (dir / "fe").string(),
+                                       "--quiet", "--set", "homogenise.boundary=periodic", "--set",
+                                       "tessellation.grains=12", "--set", "mesh.tets_per_grain=3000", "--set",
+                                       "output.pictures=none"},
+                                      {}, limit(450));
+  INFO(fe.err);
+  CHECK(fe.exit_code == 2);
+  CHECK(fe.err.find("homogenise.solver = fe: the finite elements on this mesh") != std::string::npos);
+  CHECK(fe.err.find("available: set homogenise.solver = openfoam") != std::string::npos);
+  // The default cell split three times (312,576 triangles) under 700 MiB: out of memory
+  // before the finite elements' check (or refused by it, on a machine that maps less).
+  const auto big = test::run_grainmesh({"run", "-o", (dir / "big").string(), "--quiet", "--set",
+                                        "homogenise.boundary=periodic", "--set", "mesh.triangles_per_grain=25", "--set",
+                                        "mesh.refine=3", "--set", "output.pictures=none"},
+                                       {}, limit(700));
+  INFO(big.err);
+  CHECK((big.exit_code == 1 || big.exit_code == 2));
+  CHECK((big.err.find("grainmesh: error: out of memory: the run needs more") != std::string::npos ||
+         big.err.find("homogenise.solver = fe: the finite elements on this mesh") != std::string::npos));
+  for (const test::CommandResult* r : {&fe, &big}) {
+    // The error, one line, last.
+    const auto at = r->err.find("grainmesh: error: ");
+    REQUIRE(at != std::string::npos);
+    CHECK(r->err.find('\n', at) == r->err.size() - 1);
+  }
+  CHECK(test::entries(dir.path()) == 0);
+}
+#endif
