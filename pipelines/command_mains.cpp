@@ -84,8 +84,10 @@ int run_main(const std::vector<std::string>& args) {
 int converge_main(const std::vector<std::string>& args) {
   po::options_description desc("grainmesh converge [CONFIG] -o DIR [--levels K] [--start N] [--set KEY=VALUE ...]");
   desc.add_options()("config", po::value<std::string>(), "run config (INI); none = the embedded default")(
-      "levels", po::value<int>()->default_value(ConvergeOptions{}.levels), "mesh densities (3 or more)")(
-      "start", po::value<int>()->default_value(ConvergeOptions{}.start), "triangles per grain of the coarsest");
+      "levels", po::value<int>()->default_value(ConvergeOptions{}.levels),
+      "nested levels, 3 to 5 (each splits every element of the one before)")(
+      "start", po::value<int>()->default_value(ConvergeOptions{}.start),
+      "triangles (tetrahedra) per grain of the coarsest level");
   add_output_options(desc, "the study's directory (replaced only when it holds an earlier study)");
   const auto parsed = parse_options("converge", desc, {"config"}, args);
   if (!parsed) return kExitOk;

@@ -40,7 +40,7 @@ constexpr const char* kUsage =
     "  run [CONFIG] -o OUT [--solve] [--set KEY=VALUE ...]\n"
     "      tessellate, mesh and export in one go (without CONFIG: the thesis' cell, data/default.ini)\n"
     "  converge [CONFIG] -o DIR [--levels K] [--start N] [--set KEY=VALUE ...]\n"
-    "      mesh convergence of the effective properties: K densities from N triangles per grain, doubling\n"
+    "      mesh convergence of the effective properties: meshed at N elements per grain, K nested levels\n"
     "  sweep SWEEP.ini -o DIR [--jobs N] [--shard I/N] [--solve] [--set KEY=VALUE ...]\n"
     "  sweep --collect DIR\n"
     "      runs over the cartesian product of the [sweep] lists; resumes; DIR/summary.csv\n"
