@@ -93,7 +93,7 @@ class PlaneCellRun final : public CellRun {
     const SolveInput<2> in{.dir = dir, .staged = staged, .t = *t_, .e = *e_, .pm = pm_, .foam = foam_,
                            .deadline = jobs_.tessellate.options.deadline, .picture_width = picture_width(),
                            .all_pictures = plan_.pictures == Pictures::all, .section_z = 0.0, .unit = unit_,
-                           .fe_mesh = coarse ? &*coarse : nullptr, .solver = plan_.solver,
+                           .fe_mesh = coarse ? &*coarse : nullptr, .refine = plan_.refine, .solver = plan_.solver,
                            .fe_mesh_file = plan_.pictures != Pictures::none && plan_.keep_cases};
     if (!plan_.solve) return homogenise_fe(in, warnings);
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);

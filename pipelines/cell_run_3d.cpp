@@ -74,7 +74,7 @@ class SolidCellRun final : public CellRun {
                            .deadline = jobs_.tessellate.options.deadline,
                            .picture_width = pictures() ? mesh_job_.picture_width : 0, .all_pictures = false,
                            .section_z = section_z_, .unit = unit_,
-                           .fe_mesh = fe_mesh(), .solver = plan_.solver,
+                           .fe_mesh = fe_mesh(), .refine = plan_.refine, .solver = plan_.solver,
                            .fe_mesh_file = pictures() && plan_.keep_cases};
     if (!plan_.solve) return homogenise_fe(in, warnings);
     return plan_.boundary == Boundary::mixed ? homogenise_mixed(in, warnings) : homogenise_periodic(in, warnings);

@@ -64,8 +64,8 @@ std::string level_key(const Config& c) {
 // finite elements answer (homogenise.solver = fe).
 bool check_study(const Config& c, const ConvergeOptions& o) {
   if (o.levels < 3 || o.levels > kMaxRefine + 1)
-    throw ConfigError("converge: --levels " + std::to_string(o.levels) + ": give 3 to " + std::to_string(kMaxRefine + 1) +
-                      " (Richardson extrapolation needs three levels; each has " +
+    throw ConfigError("converge: --levels " + std::to_string(o.levels) + ": give 3 to " +
+                      std::to_string(kMaxRefine + 1) + " (Richardson extrapolation needs three levels; each has " +
                       (cell_dimensions(c) == 3 ? "8" : "4") + " times the cells of the one before)");
   if (o.start < 4 || o.start > 100000) throw ConfigError("converge: --start " + std::to_string(o.start) + ": give 4 to 100000");
   const bool openfoam = read_run_plan(c, /*solve=*/true).solver == Solver::openfoam;
@@ -176,7 +176,8 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
               elements, o.levels - 1, out.string().c_str());
   for (std::size_t i = 0; i < names.size(); ++i)
     std::printf("  %s: limit %.6g (order %s; the finest level within %s %%), within 0.1 %% from %s %s per grain\n",
-                names[i].c_str(), estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
+                names[i].c_str(), estimates[i].limit,
+                estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
                 to_text(100.0 * st.errors[i], 2).c_str(),
                 within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none", elements);
 }

@@ -62,6 +62,7 @@ struct SolveInput {
   // meshed coarser (fe_coarse_mesh); they solve on it and on its nested refinement
   // (fe_cell_answer). None without them.
   const ExportMesh<D>* fe_mesh = nullptr;
+  int refine = 0;                    // mesh.refine: how often fe_mesh (and e) was split after meshing
   Solver solver = Solver::openfoam;  // homogenise.solver: whose answer is reported
   bool fe_mesh_file = false;         // the finite elements' fine level written as fe_mesh.vtu
 };

@@ -45,7 +45,7 @@ StateStresses state_stresses(const std::string& state, const SolvedState<3>& s, 
 }  // namespace
 
 CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, solver, fe_mesh_file] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, refine, solver, fe_mesh_file] = in;
 
   const MixedHomogenised<3> h = solve_mixed(dir / "case", e, pm, foam, deadline, staged.failed_dir() / "case");
   if (picture_width > 0) {
@@ -60,7 +60,7 @@ CellAnswer<2> homogenise_mixed(const SolveInput<2>& in, std::vector<std::string>
 }
 
 CellAnswer<2> homogenise_periodic(const SolveInput<2>& in, std::vector<std::string>& warnings) {
-  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, solver, fe_mesh_file] = in;
+  const auto& [dir, staged, t, e, pm, foam, deadline, picture_width, all_pictures, section_z, unit, fe_mesh, refine, solver, fe_mesh_file] = in;
 
   const std::vector<LoadCase<3>> loads = periodic_load_cases(e, foam);
   const PeriodicHomogenised<3> h =

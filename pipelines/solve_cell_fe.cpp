@@ -39,11 +39,12 @@ CellAnswer<D> fe_cell_answer(const SolveInput<D>& in, const std::vector<double>&
   constexpr std::size_t N = voigt_size(D);
   const ExportMesh<D> fine = split_nested(*in.fe_mesh);
   const FeNested<N> solved_levels = fe_solve(in, fine);
-  const FeLevels<N> levels = fe_levels(solved_levels.fine, solved_levels.coarse,
-                                       D == 2 ? "the cell meshed at twice the run's element size or more, each triangle "
-                                                "then split in four"
-                                              : "the cell meshed at twice the run's element size or more, each "
-                                                "tetrahedron then split in eight");
+  std::string how = D == 2 ? "the cell meshed at twice the run's element size or more, each triangle then "
+                                   "split in four"
+                                 : "the cell meshed at twice the run's element size or more, each tetrahedron then "
+                                   "split in eight";
+  if (in.refine > 0) how.append(" ").append(std::to_string(in.refine + 1)).append(" times");
+  const FeLevels<N> levels = fe_levels(solved_levels.fine, solved_levels.coarse, how);
   if (in.fe_mesh_file) write_fe_mesh(in.dir / "fe_mesh.vtu", fine, phase_names(in.t.phases));
   if (in.solver == Solver::openfoam) {
     add_reference(std::get<PeriodicAnswer<N>>(solved->effective), levels, advice, warnings);
