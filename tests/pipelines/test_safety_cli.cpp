@@ -401,7 +401,7 @@ TEST_CASE("a case that fails one of checkMesh's checks is a warning, not a silen
 // (Release build only: AddressSanitizer reserves terabytes of address space and cannot run
 // under an address-space limit at all.)
 TEST_CASE("under ulimit -v, finite elements too big for what is left are refused naming the key, and running out of "
-          "memory anywhere is one line; nothing written either way",
+          "memory anywhere is one line, nothing written either way",
           "[cli][safety][fe]") {
   test::ScratchDir dir("memory_limit");
   auto limit = [](double mib) { return "prlimit --as=" + std::to_string(static_cast<long long>(mib * 1024 * 1024)); };
