@@ -9,6 +9,7 @@
 #include "pipelines/cell_run.hpp"
 #include "pipelines/directory.hpp"
 #include "pipelines/mesh_outputs.hpp"
+#include "pipelines/refined_mesh.hpp"
 #include "pipelines/run_cases.hpp"
 #include "pipelines/tessellation_outputs.hpp"
 #include "view/picture.hpp"

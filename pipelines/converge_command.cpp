@@ -25,12 +25,13 @@ namespace grainmesh {
 
 namespace {
 
-// A quantity a level's answer gives, and its error against the finite-element reference
-// where that was solved beside it (homogenise.reference = fe).
+// A quantity a level's answer gives and, where the finite-element reference was solved
+// beside it (homogenise.reference = fe), its error against it and the answer's error
+// estimate from it (the error plus the reference's own estimate: add_reference).
 struct Quantity {
   std::string name;
   double value = 0.0;
-  std::optional<double> reference_error;
+  std::optional<double> reference_error, reference_estimate;
 };
 
 // The quantities a level's answer gives: the mixed modulus (and the biased volume average
@@ -39,14 +40,17 @@ struct Quantity {
 template <std::size_t N>
 std::vector<Quantity> quantities(const Answer<N>& a) {
   if (const auto* m = std::get_if<MixedAnswer<N>>(&a.effective))
-    return {{"modulus", m->modulus, {}}, {"volume_average_modulus", m->volume_average_modulus, {}}};
+    return {{"modulus", m->modulus, {}, {}}, {"volume_average_modulus", m->volume_average_modulus, {}, {}}};
   const PeriodicAnswer<N>& p = std::get<PeriodicAnswer<N>>(a.effective);
   const Stiffness<N>& C = p.verdict.stiffness;
   constexpr std::size_t d = voigt_dimensions<N>();
   std::vector<Quantity> q;
   auto add = [&](std::size_t i, std::size_t j) {
-    q.push_back({stiffness_name<N>(i, j), C[i][j], {}});
-    if (p.reference) q.back().reference_error = p.reference->stiffness_error[i][j];
+    q.push_back({stiffness_name<N>(i, j), C[i][j], {}, {}});
+    if (p.reference && p.error_estimate) {
+      q.back().reference_error = p.reference->stiffness_error[i][j];
+      q.back().reference_estimate = p.error_estimate->stiffness[i][j];
+    }
   };
   for (std::size_t k = 0; k < d; ++k) add(k, k);
   for (std::size_t i = 0; i < d; ++i)
@@ -119,12 +123,12 @@ Levels run_levels(const Config& c, const std::string& ini, StagedOutput& staged,
     if (names.empty()) {
       for (const Quantity& qi : q) names.push_back(qi.name);
       values.resize(names.size());
-      l.reference_errors.resize(names.size());
+      l.reference_estimates.resize(names.size());
     }
     Json reference_errors = Json::object();
     for (std::size_t i = 0; i < q.size(); ++i) {
       values[i].push_back(q[i].value);
-      l.reference_errors[i].push_back(q[i].reference_error);
+      l.reference_estimates[i].push_back(q[i].reference_estimate);
       if (q[i].reference_error) reference_errors[q[i].name] = *q[i].reference_error;
     }
     cells.push_back(static_cast<double>(run.solved_cells));

@@ -14,10 +14,10 @@ const char* per_grain_name(int dimensions) { return dimensions == 3 ? "tets_per_
 namespace {
 
 // The finest level's estimated error, relative, and its basis (Study::errors).
-std::pair<double, const char*> finest_error(const std::vector<double>& f, const std::optional<double>& reference_error,
+std::pair<double, const char*> finest_error(const std::vector<double>& f, const std::optional<double>& reference,
                                             const RichardsonEstimate& e) {
   const double finest = f.back();
-  if (reference_error) return {std::abs(*reference_error), "reference"};
+  if (reference) return {*reference, "reference"};
   if (e.asymptotic) return {std::abs(finest - e.limit) / std::abs(e.limit), "richardson"};
   const auto [low, high] = std::minmax_element(f.begin(), f.end());
   return {kUnorderedErrorFactor * (*high - *low) / std::abs(finest), "range"};
@@ -35,7 +35,7 @@ Study study_of(const Levels& l) {
   std::vector<std::optional<int>>& within = st.within;
   for (std::size_t i = 0; i < names.size(); ++i) {
     estimates.push_back(richardson(values[i], kLevelRatio));
-    const auto [error, basis] = finest_error(values[i], l.reference_errors[i].back(), estimates.back());
+    const auto [error, basis] = finest_error(values[i], l.reference_estimates[i].back(), estimates.back());
     st.errors.push_back(error);
     within.push_back(first_within(values[i], estimates.back().limit, kWithin));
     Json s{{"values", values[i]},

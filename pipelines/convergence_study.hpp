@@ -24,9 +24,10 @@ inline constexpr double kLevelRatio = 2.0;
 struct Levels {
   std::vector<std::string> names;
   std::vector<std::vector<double>> values;  // [quantity][level]
-  // [quantity][level]: the level's error against the finite-element reference solved
-  // beside it (homogenise.reference = fe), relative; none without it.
-  std::vector<std::vector<std::optional<double>>> reference_errors;
+  // [quantity][level]: the level's error estimate from the finite-element reference
+  // solved beside it (homogenise.reference = fe: its error against it plus the
+  // reference's own estimate), relative; none without it.
+  std::vector<std::vector<std::optional<double>>> reference_estimates;
   std::vector<double> cells, tpg, seconds;
   int dimensions = 2;
   Json json = Json::array();
@@ -42,7 +43,7 @@ const char* per_grain_name(int dimensions);
 inline constexpr double kUnorderedErrorFactor = 3.0;
 
 // Each quantity's Richardson estimate, the finest level's estimated error (relative: its
-// error against the reference where that was solved beside it, else its distance from the
+// estimate from the reference where that was solved beside it, else its distance from the
 // limit, or where the last three levels do not converge monotonically
 // kUnorderedErrorFactor times the levels' range) and the coarsest level within kWithin of
 // its limit; `json` the report's study (`error_basis`: reference, richardson or range).
