@@ -69,10 +69,12 @@ FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2
 FeNested<6> fe_homogenise_nested(const ExportMesh<3>& coarse, const ExportMesh<3>& fine, bool thermal,
                                  const FeOptions& o = {});
 
-// The threads the finite elements' dense kernels may take (OpenBLAS's, where it is the
-// BLAS; another BLAS is left as it is): 1 where runs share the cores (sweep --jobs 2 or
-// more), since two runs' threads waiting on each other took a third longer (the 3D
-// example's finite elements, two side by side: 30 s each, 20 s single-threaded).
+// The threads the finite elements may take: their dense kernels' (OpenBLAS's, where it is
+// the BLAS; another BLAS is left as it is) and the fine level's conjugate gradients' (the
+// loads in groups side by side; all cores until limited): 1 where runs share the cores
+// (sweep --jobs 2 or more), since two runs' threads waiting on each other took a third
+// longer (the 3D example's finite elements, two side by side: 30 s each, 20 s
+// single-threaded).
 void limit_fe_threads(int threads);
 
 }  // namespace grainmesh

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 
 #include "common/errors.hpp"
@@ -136,19 +137,23 @@ std::vector<int> node_unknowns(const ExportMesh<D>& m, const Nodes<D>& n, std::s
   return first;
 }
 
-// Numbers the unknown nodes (first[node] / D, their D components riding together) in a
-// fill-reducing order made on the mesh's corners alone, a graph a tenth the size of the
-// nodes' (2D): CHOLMOD's analysis of the corners' graph (AMD, or METIS's nested dissection
-// where it does better); each edge's midside node then follows the first of its two
-// corners, which keeps every separator a separator. The factor needs no ordering of its own.
+constexpr double kLast = std::numeric_limits<double>::infinity();
+
+// The unknown nodes' class (first[node] / D), -1 for none.
+int class_of(const std::vector<int>& first, int node, int d) {
+  return first[static_cast<std::size_t>(node)] < 0 ? -1 : first[static_cast<std::size_t>(node)] / d;
+}
+
+// Each corner class's place in a fill-reducing order made on the mesh's corners alone, a
+// graph a tenth the size of the nodes' (2D): CHOLMOD's analysis of the corners' graph
+// (its nested dissection); classes that are no corner's stay kLast.
 template <int D>
-void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<int>& first) {
-  const auto classes = unknowns / static_cast<std::size_t>(D);
-  auto class_of = [&](int node) { return first[static_cast<std::size_t>(node)] < 0 ? -1 : first[static_cast<std::size_t>(node)] / D; };
+std::vector<double> corner_places(const Nodes<D>& n, std::size_t classes, const std::vector<int>& first) {
   std::vector<int> corner_index(classes, -1), corner_class;
   for (const auto& element : n.element)
     for (int i = 0; i <= D; ++i)
-      if (const int c = class_of(element[static_cast<std::size_t>(i)]); c >= 0 && corner_index[static_cast<std::size_t>(c)] < 0) {
+      if (const int c = class_of(first, element[static_cast<std::size_t>(i)], D);
+          c >= 0 && corner_index[static_cast<std::size_t>(c)] < 0) {
         corner_index[static_cast<std::size_t>(c)] = static_cast<int>(corner_class.size());
         corner_class.push_back(c);
       }
@@ -157,7 +162,8 @@ void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<int>& f
   for (const auto& element : n.element)
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j <= D; ++j) {
-        const int a = class_of(element[static_cast<std::size_t>(i)]), b = class_of(element[static_cast<std::size_t>(j)]);
+        const int a = class_of(first, element[static_cast<std::size_t>(i)], D);
+        const int b = class_of(first, element[static_cast<std::size_t>(j)], D);
         if (a < 0 || b < 0) continue;
         const int ia = corner_index[static_cast<std::size_t>(a)], ib = corner_index[static_cast<std::size_t>(b)];
         if (ia >= ib) pairs.emplace_back(ia, ib, 1.0);
@@ -176,22 +182,64 @@ void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<int>& f
     cholmod_finish(&common);
     throw GeometryError("finite-element reference: CHOLMOD could not order the unknowns");
   }
-  // Each class's place: a corner's its position in the order, a midside node's just after
-  // the first of its corners (a class of nodes, images of one another: the first of all).
-  constexpr double kLast = std::numeric_limits<double>::infinity();
   std::vector<double> place(classes, kLast);
   const auto* order = static_cast<const int*>(symbolic->Perm);  // order[new] = old
   for (int k = 0; k < corners; ++k) place[static_cast<std::size_t>(corner_class[static_cast<std::size_t>(order[k])])] = k;
   cholmod_free_factor(&symbolic, &common);
   cholmod_finish(&common);
+  return place;
+}
+
+// The same for a nested split of the coarse level `coarse` (element 2^D c + k inside
+// coarse element c): its corners are the coarse level's nodes, each placed where the coarse
+// level numbered that node's unknowns (an order made for the coarse factor, at no cost).
+template <int D>
+std::vector<double> nested_places(const ExportMesh<D>& m, const Nodes<D>& n, std::size_t classes,
+                                  const std::vector<int>& first, const ExportMesh<D>& coarse,
+                                  const FeNodes<D>& coarse_nodes) {
+  using Point = std::remove_cvref_t<decltype(mesh_points(m)[0])>;
+  constexpr auto edges = Simplex<D>::edges();
+  const auto& points = mesh_points(m);
+  const auto& coarse_points = mesh_points(coarse);
+  std::vector<double> place(classes, kLast);
+  for (std::size_t f = 0; f < n.element.size(); ++f) {
+    const std::size_t c = f >> D;
+    const auto corners = element_corners(coarse, c);
+    std::array<Point, Simplex<D>::kNodes> at;  // the coarse element's nodes' positions
+    for (std::size_t b = 0; b <= D; ++b) at[b] = coarse_points[static_cast<std::size_t>(corners[b])];
+    for (std::size_t e = 0; e < edges.size(); ++e)
+      at[D + 1 + e] = 0.5 * (at[static_cast<std::size_t>(edges[e][0])] + at[static_cast<std::size_t>(edges[e][1])]);
+    for (int i = 0; i <= D; ++i) {
+      const int node = n.element[f][static_cast<std::size_t>(i)];
+      const int k = class_of(first, node, D);
+      if (k < 0) continue;
+      const Point& x = points[static_cast<std::size_t>(node)];
+      auto distance2 = [&](std::size_t b) { return dot(at[b] - x, at[b] - x); };
+      std::size_t nearest = 0;
+      for (std::size_t b = 1; b < at.size(); ++b)
+        if (distance2(b) < distance2(nearest)) nearest = b;
+      const int coarse_class = class_of(coarse_nodes.first, coarse_nodes.element[c][nearest], D);
+      double& at_k = place[static_cast<std::size_t>(k)];
+      if (coarse_class >= 0) at_k = std::min(at_k, static_cast<double>(coarse_class));
+    }
+  }
+  return place;
+}
+
+// Numbers the unknown nodes (first[node] / D, their D components riding together) from
+// their corners' places: each edge's midside node follows the first of its two corners,
+// which keeps every separator a separator. The factor needs no ordering of its own.
+template <int D>
+void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<double> place, std::vector<int>& first) {
+  const auto classes = unknowns / static_cast<std::size_t>(D);
   constexpr auto edges = Simplex<D>::edges();
   for (const auto& element : n.element)
     for (std::size_t e = 0; e < edges.size(); ++e) {
-      const int c = class_of(element[D + 1 + e]);
+      const int c = class_of(first, element[D + 1 + e], D);
       if (c < 0) continue;
       double after = kLast;
       for (const int end : {edges[e][0], edges[e][1]})
-        if (const int k = class_of(element[static_cast<std::size_t>(end)]); k >= 0)
+        if (const int k = class_of(first, element[static_cast<std::size_t>(end)], D); k >= 0)
           after = std::min(after, place[static_cast<std::size_t>(k)] + 0.5);
       place[static_cast<std::size_t>(c)] = std::min(place[static_cast<std::size_t>(c)], after);
     }
@@ -207,11 +255,15 @@ void order_unknowns(const Nodes<D>& n, std::size_t unknowns, std::vector<int>& f
 }
 
 template <int D>
-FeNodes<D> nodes_of(const ExportMesh<D>& m) {
+FeNodes<D> nodes_of(const ExportMesh<D>& m, const ExportMesh<D>* coarse, const FeNodes<D>* coarse_nodes) {
   Nodes<D> n = quadratic_nodes(m);
   FeNodes<D> out;
   out.first = node_unknowns(m, n, out.unknowns);
-  order_unknowns(n, out.unknowns, out.first);
+  const std::size_t classes = out.unknowns / static_cast<std::size_t>(D);
+  order_unknowns(n, out.unknowns,
+                 coarse ? nested_places(m, n, classes, out.first, *coarse, *coarse_nodes)
+                        : corner_places(n, classes, out.first),
+                 out.first);
   out.element = std::move(n.element);
   out.count = n.count;
   return out;
@@ -219,7 +271,55 @@ FeNodes<D> nodes_of(const ExportMesh<D>& m) {
 
 }  // namespace
 
-FeNodes<2> fe_nodes(const ExportMesh<2>& m) { return nodes_of(m); }
-FeNodes<3> fe_nodes(const ExportMesh<3>& m) { return nodes_of(m); }
+FeNodes<2> fe_nodes(const ExportMesh<2>& m) { return nodes_of<2>(m, nullptr, nullptr); }
+FeNodes<3> fe_nodes(const ExportMesh<3>& m) { return nodes_of<3>(m, nullptr, nullptr); }
+
+FeNodes<2> fe_nodes(const ExportMesh<2>& fine, const ExportMesh<2>& coarse, const FeNodes<2>& coarse_nodes) {
+  return nodes_of(fine, &coarse, &coarse_nodes);
+}
+
+FeNodes<3> fe_nodes(const ExportMesh<3>& fine, const ExportMesh<3>& coarse, const FeNodes<3>& coarse_nodes) {
+  return nodes_of(fine, &coarse, &coarse_nodes);
+}
+
+template <int D>
+NodeGraph node_graph(const FeNodes<D>& n) {
+  const std::vector<int>& first = n.first;
+  const int nodes = static_cast<int>(n.unknowns) / D;
+  auto node_of = [&](int node) {
+    const int f = first[static_cast<std::size_t>(node)];
+    return f < 0 ? -1 : f / D;
+  };
+  std::vector<int> start(static_cast<std::size_t>(nodes) + 1, 0), elements;
+  for (const auto& element : n.element)
+    for (const int a : element)
+      if (const int i = node_of(a); i >= 0) ++start[static_cast<std::size_t>(i) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  elements.resize(static_cast<std::size_t>(start.back()));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t c = 0; c < n.element.size(); ++c)
+    for (const int a : n.element[c])
+      if (const int i = node_of(a); i >= 0)
+        elements[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = static_cast<int>(c);
+  NodeGraph g;
+  g.outer.reserve(static_cast<std::size_t>(nodes) + 1);
+  g.inner.reserve(elements.size() * Simplex<D>::kNodes / 2);
+  std::vector<int> seen(static_cast<std::size_t>(nodes), -1);
+  for (int j = 0; j < nodes; ++j) {
+    g.outer.push_back(static_cast<int>(g.inner.size()));
+    for (int e = start[static_cast<std::size_t>(j)]; e < start[static_cast<std::size_t>(j) + 1]; ++e)
+      for (const int a : n.element[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)])])
+        if (const int i = node_of(a); i >= j && seen[static_cast<std::size_t>(i)] != j) {
+          seen[static_cast<std::size_t>(i)] = j;
+          g.inner.push_back(i);
+        }
+    std::sort(g.inner.begin() + g.outer.back(), g.inner.end());
+  }
+  g.outer.push_back(static_cast<int>(g.inner.size()));
+  return g;
+}
+
+template NodeGraph node_graph(const FeNodes<2>&);
+template NodeGraph node_graph(const FeNodes<3>&);
 
 }  // namespace grainmesh

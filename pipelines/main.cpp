@@ -62,6 +62,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainmesh::ask_for_huge_pages(argv);  // may exec the program again, so before anything else
   grainmesh::keep_freed_memory();  // the mesher's page faults halved (common/allocator.hpp)
   grainmesh::install_interrupt_handling();  // before any thread starts: Ctrl-C leaves nothing behind
   const std::vector<std::string> args(argv + 1, argv + argc);
