@@ -178,12 +178,17 @@ void run_converge_command(const Config& c, const std::filesystem::path& out, con
   const char* elements = l.dimensions == 3 ? "tetrahedra" : "triangles";
   std::printf("grainmesh converge: %d nested levels (%d %s per grain, split up to %d times) in %s\n", o.levels, o.start,
               elements, o.levels - 1, out.string().c_str());
-  for (std::size_t i = 0; i < names.size(); ++i)
-    std::printf("  %s: limit %.6g (order %s; the finest level within %s %%), within 0.1 %% from %s %s per grain\n",
-                names[i].c_str(), estimates[i].limit,
-                estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
-                to_text(100.0 * st.errors[i], 2).c_str(),
-                within[i] ? to_text(tpg[static_cast<std::size_t>(*within[i])]).c_str() : "none", elements);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string from = within[i] ? "within 0.1 % of it from " + to_text(tpg[static_cast<std::size_t>(*within[i])]) +
+                                             " " + elements + " per grain"
+                                       : "no level within 0.1 % of it";
+    const char* basis = st.bases[i] == "reference"    ? "against the finite elements"
+                        : st.bases[i] == "richardson" ? "from the limit"
+                                                      : "from the levels' spread";
+    std::printf("  %s: limit %.6g (order %s; the finest level within %s %% %s), %s\n", names[i].c_str(),
+                estimates[i].limit, estimates[i].order ? to_text(*estimates[i].order, 3).c_str() : "-",
+                to_text(100.0 * st.errors[i], 2).c_str(), basis, from.c_str());
+  }
 }
 
 }  // namespace grainmesh

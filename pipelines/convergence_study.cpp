@@ -37,6 +37,7 @@ Study study_of(const Levels& l) {
     estimates.push_back(richardson(values[i], kLevelRatio));
     const auto [error, basis] = finest_error(values[i], l.reference_estimates[i].back(), estimates.back());
     st.errors.push_back(error);
+    st.bases.push_back(basis);
     within.push_back(first_within(values[i], estimates.back().limit, kWithin));
     Json s{{"values", values[i]},
            {"limit", estimates.back().limit},

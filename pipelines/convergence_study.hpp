@@ -50,6 +50,7 @@ inline constexpr double kUnorderedErrorFactor = 3.0;
 struct Study {
   std::vector<RichardsonEstimate> estimates;
   std::vector<double> errors;
+  std::vector<std::string> bases;  // each error's: "reference", "richardson" or "range"
   std::vector<std::optional<int>> within;
   Json json = Json::object();
 };

@@ -2,6 +2,7 @@
 // `export` turns a mesh.vtu into polygons (and writes them, which `check` and `export`
 // read back), and an unknown value is refused.
 #include <cmath>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -102,16 +103,21 @@ TEST_CASE("export.cells: grainmesh export makes polygons of a mesh.vtu, and a ba
                       dir / "bad");
 }
 
-TEST_CASE("grainmesh converge with polygonal cells counts the case's cells", "[cli][dual][openfoam]") {
+TEST_CASE("grainmesh converge with polygonal cells counts the case's cells, and with the finite elements as "
+          "OpenFOAM's reference states each level's error against them",
+          "[cli][dual][openfoam][converge]") {
   test::ScratchDir dir("polygon_converge");
   const auto r = run_grainmesh({"converge", "-o", (dir / "c").string(), "--levels", "3", "--start", "8", "--set",
-                                "export.cells=polygons"});
+                                "export.cells=polygons", "--set", "homogenise.boundary=periodic", "--set",
+                                "homogenise.solver=openfoam", "--set", "homogenise.reference=fe"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const Json study = Json::parse(test::read_file(dir / "c/report.json"));
   REQUIRE(study.contains("levels"));
+  std::vector<Json> runs;
   for (const Json& level : study["levels"]) {
-    const Json run = Json::parse(test::read_file(dir / "c" / level["directory"].get<std::string>() / "report.json"));
+    runs.push_back(Json::parse(test::read_file(dir / "c" / level["directory"].get<std::string>() / "report.json")));
+    const Json& run = runs.back();
     CHECK(level["cells"].get<double>() == run["case_cells"]["cells"].get<double>());
     // The dual of the mesh split `refine` times: a cell per node (more where a grain
     // boundary splits it), fewer than the triangles, more than half as many.
@@ -119,6 +125,23 @@ TEST_CASE("grainmesh converge with polygonal cells counts the case's cells", "[c
     CHECK(level["cells"].get<double>() < triangles);
     CHECK(level["cells"].get<double>() > 0.5 * triangles);
   }
+  // Each level's error against the finite elements is its run's; the study's estimate is
+  // the finest level's own (its difference from the reference plus the reference's
+  // estimate), and OpenFOAM's error shrinks level by level.
+  for (const char* q : {"C11", "C22", "C12", "C66"}) {
+    CAPTURE(q);
+    const Json& st = study["study"][q];
+    CHECK(st["error_basis"] == "reference");
+    const Json& finest = runs.back()["effective"];
+    CHECK(st["error_estimate"].get<double>() == finest["error_estimate"]["stiffness"][q].get<double>());
+    CHECK(st["error_estimate"].get<double>() >= std::abs(finest["discretisation_error"]["stiffness"][q].get<double>()));
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const double error = study["levels"][k]["reference_error"][q].get<double>();
+      CHECK(error == runs[k]["effective"]["discretisation_error"]["stiffness"][q].get<double>());
+      if (k > 0) CHECK(std::abs(error) < std::abs(study["levels"][k - 1]["reference_error"][q].get<double>()));
+    }
+  }
+  CHECK(r.out.find(" % against the finite elements), ") != std::string::npos);  // the summary says so
 }
 
 TEST_CASE("polygonal cells on one material: the exact modulus and uniform phase statistics", "[cli][dual][openfoam][physics]") {
