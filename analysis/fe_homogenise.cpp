@@ -13,7 +13,6 @@
 #include <cmath>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "analysis/bounds.hpp"
@@ -22,6 +21,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/memory.hpp"
+#include "common/side_by_side.hpp"
 
 namespace grainmesh {
 
@@ -456,8 +456,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   const Problem<D> pf(fine, pc);
   const auto [kf, ff] = assemble(pf);
   const Eigen::SparseMatrix<double> pr = prolongation(pc, pf);
-  const int threads = two_grid_threads > 0 ? two_grid_threads.load()
-                                           : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const int threads = two_grid_threads > 0 ? two_grid_threads.load() : cores();
   TwoGridSolve s;
   {
     const BlasThreads one_blas_thread(1);

@@ -286,10 +286,7 @@ template <int D>
 NodeGraph node_graph(const FeNodes<D>& n) {
   const std::vector<int>& first = n.first;
   const int nodes = static_cast<int>(n.unknowns) / D;
-  auto node_of = [&](int node) {
-    const int f = first[static_cast<std::size_t>(node)];
-    return f < 0 ? -1 : f / D;
-  };
+  auto node_of = [&](int node) { return class_of(first, node, D); };
   std::vector<int> start(static_cast<std::size_t>(nodes) + 1, 0), elements;
   for (const auto& element : n.element)
     for (const int a : element)

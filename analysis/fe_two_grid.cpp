@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <mutex>
+#include <numeric>
 #include <vector>
 
 #include "common/side_by_side.hpp"
@@ -193,7 +194,7 @@ TwoGridSolve two_grid_solve(const Eigen::SparseMatrix<double>& k_lower, const Ei
     return coarse_solve(r);
   };
   std::vector<int> order(static_cast<std::size_t>(groups));
-  for (int g = 0; g < groups; ++g) order[static_cast<std::size_t>(g)] = g;
+  std::iota(order.begin(), order.end(), 0);
   auto first = [&](int g) { return g * columns / groups; };
   side_by_side(order, std::min(threads, groups), [&](int g) {
     const int begin = first(g), width = first(g + 1) - begin;

@@ -4,20 +4,19 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <thread>
 
 #include "analysis/foam_fields.hpp"
 #include "analysis/solve_monitor.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/process.hpp"
+#include "common/side_by_side.hpp"
 #include "common/text_file.hpp"
 
 namespace grainmesh {
 
 int solves_side_by_side(int processes) {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return std::max(1, cores / std::max(1, processes));
+  return std::max(1, cores() / std::max(1, processes));
 }
 
 namespace {

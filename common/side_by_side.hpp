@@ -10,6 +10,9 @@
 
 namespace grainmesh {
 
+// The machine's cores, at least one.
+inline int cores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
 // Runs job(k) for every k of `order` (a permutation of 0 .. n-1, the order they start in),
 // up to `parallel` at a time, each thread taking the next as it finishes one. When jobs
 // throw, all are still run, then the lowest k's exception is rethrown.

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -18,6 +17,7 @@
 #include "analysis/answer.hpp"
 #include "analysis/fe_homogenise.hpp"
 #include "analysis/voigt.hpp"
+#include "common/side_by_side.hpp"
 #include "checkmesh.hpp"
 #include "export/export_mesh.hpp"
 #include "export/foam_case.hpp"
@@ -183,7 +183,7 @@ TEST_CASE("the nested levels' fine solve by two-grid conjugate gradients is the 
     // ctest; else to its rounding, where groups that depended on the threads gave 1e-11).
     limit_fe_threads(1);
     const FeNested<3> one = fe_homogenise_nested(m, fine, false, true);
-    limit_fe_threads(static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
+    limit_fe_threads(cores());
     check_close(one.fine.stiffness, nested.fine.stiffness, 1e-13);
     const double alpha = (*nested.fine.expansion)[0];
     for (std::size_t i = 0; i < 3; ++i)
