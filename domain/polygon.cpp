@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -88,17 +89,41 @@ namespace {
 
 // Polygons with more edges than this get a grid.
 constexpr std::size_t kGridEdges = 64;
+// Closer to the boundary than this times the polygon's extent, the sign is the crossing
+// test's: there the distances are rounding, and which edge is nearest a guess.
+constexpr double kNearBoundary = 1e-9;
+// Two distances closer than this times the extent are a tie (rounding is 1e-16 of it).
+constexpr double kTie = 1e-12;
+
+// True when the ring runs counterclockwise: its lowest (then leftmost) vertex is a strictly
+// convex corner of it, so the turn there says, exactly.
+bool counterclockwise(const std::vector<Vec2>& ring) {
+  const std::size_t n = ring.size();
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (ring[i].y < ring[low].y || (ring[i].y == ring[low].y && ring[i].x < ring[low].x)) low = i;
+  return orient2d(ring[(low + n - 1) % n], ring[low], ring[(low + 1) % n]) > 0;
+}
 
 }  // namespace
 
 PolygonDistance::PolygonDistance(const PolygonRings& rings) {
   validate_polygon(rings);
-  for (const auto& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) {
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const std::vector<Vec2>& ring = rings[r];
+    // The inside lies left of the edges of a counterclockwise outer ring or a clockwise hole.
+    const int inside = counterclockwise(ring) == (r == 0) ? 1 : -1;
+    const std::size_t first = a_.size(), n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
       a_.push_back(ring[i]);
-      b_.push_back(ring[(i + 1) % ring.size()]);
+      b_.push_back(ring[(i + 1) % n]);
+      next_.push_back(first + (i + 1) % n);
+      prev_.push_back(first + (i + n - 1) % n);
+      inside_.push_back(static_cast<signed char>(inside));
       bounds_.extend(ring[i]);
     }
+  }
+  extent_ = std::max(bounds_.width(), bounds_.height());
   if (a_.size() <= kGridEdges) return;
   // About two edges per cell.
   const double side = std::max(bounds_.width(), bounds_.height());
@@ -123,30 +148,70 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
   });
 }
 
-double PolygonDistance::unsigned_distance(Vec2 p) const {
-  double best = std::numeric_limits<double>::infinity();
+PolygonDistance::Nearest PolygonDistance::nearest(Vec2 p) const {
+  Nearest best{std::numeric_limits<double>::infinity(), 0, true};
+  // Distances within `tie` of the best are equal to rounding: if such an edge's nearest
+  // point is another than the best's (not the same corner), which edge is nearest is
+  // uncertain. `slack` is that band in squared distances.
+  const double tie = kTie * extent_;
+  double slack = 0.0;
+  Vec2 best_point{};
+  auto nearest_point = [&](std::size_t e) {
+    const Vec2 a = a_[e], b = b_[e];
+    const double t = dot(p - a, b - a) / dot(b - a, b - a);
+    return t <= 0.0 ? a : (t >= 1.0 ? b : a + t * (b - a));
+  };
+  auto consider = [&](std::size_t e) {
+    const double d2 = segment_distance2(p, a_[e], b_[e]);
+    if (d2 > best.d2 + slack) return;
+    const bool clearly_nearer = d2 < best.d2 - slack;
+    const Vec2 q = nearest_point(e);
+    if (!clearly_nearer && !(q == best_point)) best.certain = false;
+    if (clearly_nearer || d2 < best.d2) {
+      if (clearly_nearer) best.certain = true;
+      best = {d2, e, best.certain};
+      best_point = q;
+      slack = tie * (2.0 * std::sqrt(d2) + tie);
+    }
+  };
   if (grid_.empty()) {
-    for (std::size_t e = 0; e < a_.size(); ++e) best = std::min(best, segment_distance2(p, a_[e], b_[e]));
-    return std::sqrt(best);
+    for (std::size_t e = 0; e < a_.size(); ++e) consider(e);
+    return best;
   }
   // Square rings of cells around p's (clamped) cell, until the ring is farther than the
   // best distance found: every edge in a nearer cell has been seen.
   const int qx = grid_.clamped_column(p.x), qy = grid_.clamped_row(p.y);
   // How far p lies outside the grid along each axis: rings count from the clamped cell.
-  const double out_x = std::max({bounds_.lo.x - p.x, 0.0, p.x - bounds_.hi.x});
-  const double out_y = std::max({bounds_.lo.y - p.y, 0.0, p.y - bounds_.hi.y});
+  const double out_x = std::max(0.0, std::max(bounds_.lo.x - p.x, p.x - bounds_.hi.x));
+  const double out_y = std::max(0.0, std::max(bounds_.lo.y - p.y, p.y - bounds_.hi.y));
   const int rings = std::max(grid_.nx, grid_.ny);
   for (int r = 0; r <= rings; ++r) {
     // A cell of ring r is r columns or r rows from the clamped cell: along that axis at
     // least (r - 1) cells plus p's distance outside, along the other p's distance outside.
     const double step = std::max(0, r - 1) * grid_.cell;
     const double reach = std::min(std::hypot(out_x + step, out_y), std::hypot(out_x, out_y + step));
-    if (r > 0 && reach > 0.0 && reach * reach > best) break;
+    if (r > 0 && reach > 0.0 && reach * reach > best.d2) break;
     grid_.for_ring(qx, qy, r, [&](int x, int y) {
-      for (int e : cells_[grid_.index(x, y)]) best = std::min(best, segment_distance2(p, a_[e], b_[e]));
+      for (int e : cells_[grid_.index(x, y)]) consider(static_cast<std::size_t>(e));
     });
   }
-  return std::sqrt(best);
+  return best;
+}
+
+bool PolygonDistance::inside_by_nearest(Vec2 p, std::size_t e) const {
+  const Vec2 a = a_[e], b = b_[e];
+  // Where along e the nearest point lies: an end, or between (then e's side decides).
+  const int side = inside_[e];  // orientations times this: > 0 toward the inside
+  const double t = dot(p - a, b - a);
+  std::size_t first = e, second = e;  // the corner's edges, into and out of it
+  if (t <= 0.0) first = prev_[e];
+  else if (t >= dot(b - a, b - a)) second = next_[e];
+  else return side * orient2d(a, b, p) > 0;
+  // The corner at the vertex first's end = second's start: inside a convex corner is on
+  // the inner side of both edges, inside a reflex one on the inner side of either.
+  const Vec2 u = a_[first], v = a_[second], w = b_[second];
+  const bool in_first = side * orient2d(u, v, p) > 0, in_second = side * orient2d(v, w, p) > 0;
+  return side * orient2d(u, v, w) > 0 ? in_first && in_second : in_first || in_second;
 }
 
 bool PolygonDistance::contains(Vec2 p) const {
@@ -175,8 +240,13 @@ bool PolygonDistance::contains(Vec2 p) const {
 }
 
 double PolygonDistance::operator()(Vec2 p) const {
-  const double d = unsigned_distance(p);
-  return contains(p) ? -d : d;
+  const Nearest n = nearest(p);
+  const double d = std::sqrt(n.d2);
+  if (!bounds_.contains(p)) return d;
+  // Within rounding of the boundary, or where another edge is as near to rounding (a
+  // needle thinner than rounding), the nearest edge is not certain: the crossing test decides.
+  if (d <= kNearBoundary * extent_ || !n.certain) return contains(p) ? -d : d;
+  return inside_by_nearest(p, n.edge) ? -d : d;
 }
 
 }  // namespace grainmesh

@@ -66,7 +66,9 @@ double FeatureSize::at(Vec2 x, double cap) const {
   auto visit = [&](int bx, int by) {
     const std::size_t b = grid_.index(bx, by);
     // The distance from x to the bin bounds what its sources can give.
-    const double dx = std::max({0.0, bx - fx, fx - (bx + 1)}), dy = std::max({0.0, by - fy, fy - (by + 1)});
+    // (std::max of two: the sanitizer build keeps an initializer list on the stack, 10x slower.)
+    const double dx = std::max(0.0, std::max(bx - fx, fx - (bx + 1)));
+    const double dy = std::max(0.0, std::max(by - fy, fy - (by + 1)));
     if (least_[b] + gradient_ * cell * std::sqrt(dx * dx + dy * dy) >= h) return;
     for (int k : binned_[b]) h = std::min(h, sources_[k].h + gradient_ * norm(x - sources_[k].p));
   };

@@ -151,11 +151,21 @@ namespace {
 
 // Triangles of `tris` that the open segment ab passes through, found by sampling it.
 std::size_t triangles_crossed(const TriMesh& mesh, const std::vector<int>& tris, Vec2 a, Vec2 b) {
+  // Only triangles whose box meets the segment's can hold a sample.
+  std::vector<int> near;
+  for (int t : tris) {
+    const auto& v = mesh.triangles[t];
+    Box box;
+    for (int k : v) box.extend(mesh.points[k]);
+    if (box.lo.x <= std::max(a.x, b.x) && box.hi.x >= std::min(a.x, b.x) && box.lo.y <= std::max(a.y, b.y) &&
+        box.hi.y >= std::min(a.y, b.y))
+      near.push_back(t);
+  }
   std::set<int> hit;
   constexpr int kSamples = 400;
   for (int s = 1; s < kSamples; ++s) {
     const Vec2 x = a + (static_cast<double>(s) / kSamples) * (b - a);
-    for (int t : tris) {
+    for (int t : near) {
       const auto& v = mesh.triangles[t];
       const Vec2 p = mesh.points[v[0]], q = mesh.points[v[1]], r = mesh.points[v[2]];
       if (signed_area2(p, q, x) >= 0 && signed_area2(q, r, x) >= 0 && signed_area2(r, p, x) >= 0) {
