@@ -34,13 +34,17 @@ inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
-// Squared distance from p to the segment ab (a point when a == b).
-inline double segment_distance2(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a, ap = p - a;
+// Where along the segment ab its point nearest p lies: a + t (b - a), t in [0, 1]; exactly
+// 0 or 1 when that point is an end (0 when a == b).
+inline double segment_parameter(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
   const double l2 = norm2(ab);
-  const double t = l2 > 0.0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
-  return norm2(ap - t * ab);
+  return l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
 }
+// Squared distance from p to the segment ab at its parameter t (segment_parameter).
+inline double segment_distance2(Vec2 p, Vec2 a, Vec2 b, double t) { return norm2((p - a) - t * (b - a)); }
+// Squared distance from p to the segment ab (a point when a == b).
+inline double segment_distance2(Vec2 p, Vec2 a, Vec2 b) { return segment_distance2(p, a, b, segment_parameter(p, a, b)); }
 
 // Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise.
 // Floating point; use orient2d() where the sign must be right.

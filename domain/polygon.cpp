@@ -126,9 +126,8 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
   extent_ = std::max(bounds_.width(), bounds_.height());
   if (a_.size() <= kGridEdges) return;
   // About two edges per cell.
-  const double side = std::max(bounds_.width(), bounds_.height());
   const int n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(a_.size()) / 2.0)), 1, 2048);
-  const double cell = side / n;
+  const double cell = extent_ / n;
   grid_ = GridFrame{.lo = bounds_.lo,
                     .cell = cell,
                     .nx = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell))),
@@ -149,27 +148,22 @@ PolygonDistance::PolygonDistance(const PolygonRings& rings) {
 }
 
 PolygonDistance::Nearest PolygonDistance::nearest(Vec2 p) const {
-  Nearest best{std::numeric_limits<double>::infinity(), 0, true};
+  Nearest best{std::numeric_limits<double>::infinity(), 0, 0.0, true};
   // Distances within `tie` of the best are equal to rounding: if such an edge's nearest
   // point is another than the best's (not the same corner), which edge is nearest is
   // uncertain. `slack` is that band in squared distances.
   const double tie = kTie * extent_;
   double slack = 0.0;
   Vec2 best_point{};
-  auto nearest_point = [&](std::size_t e) {
-    const Vec2 a = a_[e], b = b_[e];
-    const double t = dot(p - a, b - a) / dot(b - a, b - a);
-    return t <= 0.0 ? a : (t >= 1.0 ? b : a + t * (b - a));
-  };
   auto consider = [&](std::size_t e) {
-    const double d2 = segment_distance2(p, a_[e], b_[e]);
+    const Vec2 a = a_[e], b = b_[e];
+    const double t = segment_parameter(p, a, b), d2 = segment_distance2(p, a, b, t);
     if (d2 > best.d2 + slack) return;
     const bool clearly_nearer = d2 < best.d2 - slack;
-    const Vec2 q = nearest_point(e);
+    const Vec2 q = t == 0.0 ? a : (t == 1.0 ? b : a + t * (b - a));
     if (!clearly_nearer && !(q == best_point)) best.certain = false;
     if (clearly_nearer || d2 < best.d2) {
-      if (clearly_nearer) best.certain = true;
-      best = {d2, e, best.certain};
+      best = {d2, e, t, clearly_nearer || best.certain};
       best_point = q;
       slack = tie * (2.0 * std::sqrt(d2) + tie);
     }
@@ -198,15 +192,14 @@ PolygonDistance::Nearest PolygonDistance::nearest(Vec2 p) const {
   return best;
 }
 
-bool PolygonDistance::inside_by_nearest(Vec2 p, std::size_t e) const {
-  const Vec2 a = a_[e], b = b_[e];
-  // Where along e the nearest point lies: an end, or between (then e's side decides).
+bool PolygonDistance::inside_by_nearest(Vec2 p, const Nearest& n) const {
+  const std::size_t e = n.edge;
   const int side = inside_[e];  // orientations times this: > 0 toward the inside
-  const double t = dot(p - a, b - a);
+  // The nearest point an end of e (a corner), or between (then e's side decides).
   std::size_t first = e, second = e;  // the corner's edges, into and out of it
-  if (t <= 0.0) first = prev_[e];
-  else if (t >= dot(b - a, b - a)) second = next_[e];
-  else return side * orient2d(a, b, p) > 0;
+  if (n.t == 0.0) first = prev_[e];
+  else if (n.t == 1.0) second = next_[e];
+  else return side * orient2d(a_[e], b_[e], p) > 0;
   // The corner at the vertex first's end = second's start: inside a convex corner is on
   // the inner side of both edges, inside a reflex one on the inner side of either.
   const Vec2 u = a_[first], v = a_[second], w = b_[second];
@@ -246,7 +239,7 @@ double PolygonDistance::operator()(Vec2 p) const {
   // Within rounding of the boundary, or where another edge is as near to rounding (a
   // needle thinner than rounding), the nearest edge is not certain: the crossing test decides.
   if (d <= kNearBoundary * extent_ || !n.certain) return contains(p) ? -d : d;
-  return inside_by_nearest(p, n.edge) ? -d : d;
+  return inside_by_nearest(p, n) ? -d : d;
 }
 
 }  // namespace grainmesh

@@ -46,13 +46,14 @@ class PolygonDistance {
   struct Nearest {
     double d2;
     std::size_t edge;
+    double t;  // where along the edge its nearest point lies (segment_parameter)
     // False when another edge with another nearest point is as near to rounding (a needle
     // thinner than rounding, two edges nearly touching): the edge's side cannot tell.
     bool certain;
   };
   Nearest nearest(Vec2 p) const;
-  // Whether p, whose nearest boundary point lies on edge e, is strictly inside.
-  bool inside_by_nearest(Vec2 p, std::size_t e) const;
+  // Whether p, whose nearest boundary point `n` found, is strictly inside.
+  bool inside_by_nearest(Vec2 p, const Nearest& n) const;
 
   // Edge e runs from a[e] to b[e] as its ring was given; stored flat for the hot loop.
   // next_[e] is the edge after e in its ring, prev_[e] the one before; inside_[e] is +1

@@ -152,14 +152,14 @@ namespace {
 // Triangles of `tris` that the open segment ab passes through, found by sampling it.
 std::size_t triangles_crossed(const TriMesh& mesh, const std::vector<int>& tris, Vec2 a, Vec2 b) {
   // Only triangles whose box meets the segment's can hold a sample.
+  Box segment;
+  segment.extend(a);
+  segment.extend(b);
   std::vector<int> near;
   for (int t : tris) {
-    const auto& v = mesh.triangles[t];
     Box box;
-    for (int k : v) box.extend(mesh.points[k]);
-    if (box.lo.x <= std::max(a.x, b.x) && box.hi.x >= std::min(a.x, b.x) && box.lo.y <= std::max(a.y, b.y) &&
-        box.hi.y >= std::min(a.y, b.y))
-      near.push_back(t);
+    for (int k : mesh.triangles[t]) box.extend(mesh.points[k]);
+    if (!intersection(box, segment).empty()) near.push_back(t);
   }
   std::set<int> hit;
   constexpr int kSamples = 400;
