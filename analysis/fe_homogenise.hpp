@@ -60,9 +60,12 @@ FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOpt
 // The same on two nested levels: `coarse`, and `fine` = split_nested(coarse) (fine element
 // 2^D c + k a child of coarse element c). The coarse level is factorised; the fine level
 // solved by conjugate gradients preconditioned by a two-grid cycle on the coarse factor
-// (fe_two_grid.hpp), from the coarse solution, to a residual of 1e-10 of each load's —
+// (fe_two_grid.hpp), from the coarse solution, to a residual of 1e-6 of each load's —
 // the answer as the fine level's factor gives it, without its fill (3D: a fraction of the
-// operations); factorised instead when 200 cycles do not reach it. Throws as
+// operations); factorised instead when 200 cycles do not reach it. The coarse factor is
+// made beside the fine level's assembly (on two threads where limit_fe_threads allows),
+// on one BLAS thread: the same answer to the bit on any number of threads. `seconds`:
+// the coarse level's to its answer, the fine level's from there. Throws as
 // fe_homogenise, and GeometryError when `fine` has not 2^D times coarse's elements.
 FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2>& fine, bool plane_stress,
                                  bool thermal, const FeOptions& o = {});
