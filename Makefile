@@ -2,6 +2,8 @@
 # Debian package (scripts/install-deps.sh), configure with CMake and build; only what
 # changed is rebuilt (and ccache keeps rebuilds after `make clean` cheap).
 BUILD_DIR ?= build
+# cmake --build runs make again inside: without this every level says where it went.
+MAKEFLAGS += --no-print-directory
 JOBS ?= $(shell nproc)
 RUN_OUT ?= out
 
@@ -32,12 +34,13 @@ san-configure: deps
 san-build: san-configure
 	@cmake --build $(SAN_DIR) -j $(JOBS)
 
-# The default pipeline: the thesis' two-phase cell (data/default.ini, embedded in the
-# binary) tessellated, meshed and exported, then the case checked and solved by OpenFOAM.
-run: build
-	./$(BUILD_DIR)/grainmesh run -o $(RUN_OUT)/run
-	$(RUN_OUT)/run/case/Allrun
-	@echo "make run: everything in $(RUN_OUT)/run: tessellation.{json,png}, mesh.{vtu,png}, case/ (checked and solved: case/log.*; open case/case.foam in ParaView), config.ini, report.json"
+# The default pipeline: the program and the Python module built (the tests are make
+# test's), the thesis' two-phase cell (data/default.ini, embedded in the binary)
+# tessellated, meshed, exported, solved by OpenFOAM and homogenised: its answer last.
+run: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target grainmesh grainmesh_python
+	./$(BUILD_DIR)/grainmesh run -o $(RUN_OUT)/run --solve
+	@echo "make run: pictures in $(RUN_OUT)/run/*.png, ParaView's results.vtu, the case in case/ (open case/case.foam), every number in report.json; from Python: PYTHONPATH=$(BUILD_DIR)/python (docs/python.md)"
 
 # grainmesh and its cluster scripts into PREFIX/bin (grainmesh, grainmesh-slurm-sweep,
 # grainmesh-slurm-cluster); DESTDIR stages them for a package.

@@ -5,8 +5,6 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -17,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/blas_threads.hpp"
 #include "analysis/bounds.hpp"
 #include "analysis/fe_nodes.hpp"
 #include "analysis/fe_two_grid.hpp"
@@ -343,13 +342,6 @@ FeHomogenised<voigt_size(D)> effective(const Problem<D>& p, const Eigen::MatrixX
   return out;
 }
 
-// OpenBLAS's threads, where it is the BLAS: looked up, not linked (the BLAS is whichever
-// libblas.so.3 the system chose).
-void set_blas_threads(int threads) {
-  using Set = void (*)(int);
-  if (auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(threads);
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -408,29 +400,6 @@ Eigen::SparseMatrix<double> prolongation(const Problem<D>& coarse, const Problem
   out.setFromTriplets(entries.begin(), entries.end());
   return out;
 }
-
-// OpenBLAS's threads (where it is the BLAS) limited while it lives. Its threads spin
-// between calls (sched_yield) on the cores they share: the cycles' coarse solves, small
-// triangular ones, gain nothing from them and lost the conjugate gradients' second thread
-// to them (the 1,000-grain cell's cycles: 3.0 s with them, 2.2 s without).
-class BlasThreads {
- public:
-  explicit BlasThreads(int threads) {
-    using Get = int (*)();
-    if (auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"))) {
-      before_ = get();
-      set_blas_threads(threads);
-    }
-  }
-  ~BlasThreads() {
-    if (before_ > 0) set_blas_threads(before_);
-  }
-  BlasThreads(const BlasThreads&) = delete;
-  BlasThreads& operator=(const BlasThreads&) = delete;
-
- private:
-  int before_ = 0;
-};
 
 // The fine level's conjugate gradients: each load's residual to 1e-6 of its norm, in at
 // most 200 cycles; beyond, the fine level is factorised. The effective stiffness is

@@ -14,11 +14,15 @@ namespace grainmesh {
 
 namespace {
 
+// A modulus in GPa, to four digits as the report's Pa (the summary's unit: the report keeps Pa).
+std::string gpa(double pa) { return to_text(pa / 1e9, 4); }
+
 template <std::size_t N>
 void print_mixed(const MixedAnswer<N>& a) {
   // 2D: the modulus in the plane state; 3D: under uniaxial strain (C11 of an isotropic cell).
-  std::printf("  solved: %s %.4g Pa", N == 3 ? "effective modulus" : "modulus under uniaxial strain", a.modulus);
-  if (a.bounds) std::printf(" (Reuss %.4g, Voigt %.4g)", a.bounds->reuss, a.bounds->voigt);
+  std::printf("  solved: %s %s GPa", N == 3 ? "effective modulus" : "modulus under uniaxial strain",
+              gpa(a.modulus).c_str());
+  if (a.bounds) std::printf(" (Reuss %s, Voigt %s)", gpa(a.bounds->reuss).c_str(), gpa(a.bounds->voigt).c_str());
   std::printf(", %d corrections\n", a.run.corrections);
 }
 
@@ -45,30 +49,32 @@ void print_periodic(const PeriodicAnswer<N>& a, bool stresses) {
     entries.append(entries.empty() ? "" : ", ")
         .append(stiffness_name<N>(i, j))
         .append(" ")
-        .append(to_text(C[i][j], 4))
+        .append(gpa(C[i][j]))
         .append(plus_minus(estimate([&](const ErrorEstimate<N>& e) { return e.stiffness[i][j]; })));
   }
   const std::string moduli =
-      "K " + to_text(a.verdict.bulk_modulus, 4) + plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.bulk_modulus; })) +
-      ", G " + to_text(a.verdict.shear_modulus, 4) +
+      "K " + gpa(a.verdict.bulk_modulus) +
+      plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.bulk_modulus; })) +
+      ", G " + gpa(a.verdict.shear_modulus) +
       plus_minus(estimate([](const ErrorEstimate<N>& e) { return e.shear_modulus; }));
   if (a.solver == Solver::fe)
-    std::printf("  answer (finite elements, %zu unknowns, %.2f s): %s Pa; %s Pa\n", a.fe->fine.unknowns,
+    std::printf("  answer (finite elements, %zu unknowns, %.2f s): %s GPa; %s GPa\n", a.fe->fine.unknowns,
                 a.fe->seconds(), entries.c_str(), moduli.c_str());
   else
-    std::printf("  solved: %s Pa; %s Pa; symmetric to %.1e (%zu load cases, at most %d corrections)\n",
+    std::printf("  solved: %s GPa; %s GPa; symmetric to %.1e (%zu load cases, at most %d corrections)\n",
                 entries.c_str(), moduli.c_str(), a.verdict.symmetry_error, a.cases.size(), a.corrections());
   if (!x) std::printf("  error estimate: not measured (homogenise.reference = fe measures it)\n");
   if (a.openfoam && a.openfoam->reference)
-    std::printf("  OpenFOAM's load cases: K %.4g, G %.4g Pa, within %.2g %% of the answer (farthest: %s; "
+    std::printf("  OpenFOAM's load cases: K %s, G %s GPa, within %.2g %% of the answer (farthest: %s; "
                 "effective.openfoam)\n",
-                a.openfoam->verdict.bulk_modulus, a.openfoam->verdict.shear_modulus,
+                gpa(a.openfoam->verdict.bulk_modulus).c_str(), gpa(a.openfoam->verdict.shear_modulus).c_str(),
                 100.0 * a.openfoam->reference->farthest_error, a.openfoam->reference->farthest.c_str());
   if (a.reference) {
     const ReferenceAnswer<N>& r = *a.reference;
-    std::printf("  reference (finite elements, %zu unknowns, %.2f s): K %.4g, G %.4g Pa; the answer within %.2g %% of it "
+    std::printf("  reference (finite elements, %zu unknowns, %.2f s): K %s, G %s GPa; the answer within %.2g %% of it "
                 "(farthest: %s)\n",
-                r.fe.fine.unknowns, r.fe.seconds(), r.bulk_modulus, r.shear_modulus, 100.0 * r.farthest_error, r.farthest.c_str());
+                r.fe.fine.unknowns, r.fe.seconds(), gpa(r.bulk_modulus).c_str(), gpa(r.shear_modulus).c_str(),
+                100.0 * r.farthest_error, r.farthest.c_str());
   }
   if (!a.thermal) return;
   const ThermalAnswer<N>& t = *a.thermal;

@@ -98,7 +98,10 @@ void refuse_unsolved_over_solved(const fs::path& final_dir, bool solve, bool for
   bool solved = false;
   try {
     const nlohmann::json report = nlohmann::json::parse(read_text_file(final_dir / "report.json"));
-    solved = report.is_object() && report.value(kReportCommand, "") == "run" && report.contains("effective");
+    // Solved by OpenFOAM (`solved`; reports before it: any answer). A periodic cell's finite
+    // elements answer without --solve too: such a run is replaced by its like.
+    solved = report.is_object() && report.value(kReportCommand, "") == "run" &&
+             report.value("solved", report.contains("effective"));
   } catch (const std::exception&) {
     return;  // not a report this check can read: claim_output judges the directory
   }

@@ -64,8 +64,9 @@ void check_output_replaceable(const std::filesystem::path& final_dir, const std:
 // it (remove_stale_siblings).
 void claim_output(const std::filesystem::path& final_dir, const std::string& kind);
 
-// A run without --solve into an OUT that holds a solved run would replace its answer with
-// none: refused (IoError naming OUT and what to do) unless `force`.
+// A run without --solve into an OUT that holds a run solved by OpenFOAM would replace its
+// answer (or its fields and stresses) with none: refused (IoError naming OUT and what to
+// do) unless `force`. A run answered without --solve (the finite elements) is not.
 void refuse_unsolved_over_solved(const std::filesystem::path& final_dir, bool solve, bool force);
 
 // The keys of report.json that say which command wrote a directory and what it holds

@@ -21,10 +21,12 @@ packages=(
   libopenblas0-pthread                  # ... its dense blocks: CHOLMOD on the reference BLAS is 20x slower
   slurm-wlm                             # a one-node SLURM cluster for the sweep's job-array test
   clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
+  python3-dev python3-pybind11 python3-numpy   # the Python module (python/)
+  python3-pytest python3-meshio python3-matplotlib python3-vtk9  # its tests and examples
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(gmsh)                      # make bench's peer mesher (2D and 3D)
-  packages+=(python3-sfepy python3-vtk9) # make bench's peer of the finite-element reference
+  packages+=(python3-sfepy)             # make bench's peer of the finite-element reference (VTK's Python above)
 fi
 
 missing=()

@@ -12,6 +12,7 @@
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -24,6 +25,8 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
+#include <utility>
 
 #include "common/errors.hpp"
 
@@ -51,10 +54,11 @@ class ErrorCatcher final : public vtkCommand {
 };
 
 // Writes `data` with VTK's XML writer W as raw appended binary (smaller and faster than
-// base64), compressed. Throws IoError naming the file and `kind` (VTU, VTP).
-enum class Compression { lz4, zlib };
+// base64), compressed with zlib: what every reader takes (meshio 5.0 knows no LZ4).
+// Throws IoError naming the file and `kind` (VTU, VTP).
+constexpr int kZlibLevel = 1;  // zlib's fastest (docs/python.md, *Files other tools read*)
 template <typename W, typename D>
-void write_xml(const std::filesystem::path& file, D* data, const char* kind, Compression compression) {
+void write_xml(const std::filesystem::path& file, D* data, const char* kind) {
   vtkNew<W> writer;
   vtkNew<ErrorCatcher> errors;
   errors->watch(writer);
@@ -62,8 +66,8 @@ void write_xml(const std::filesystem::path& file, D* data, const char* kind, Com
   writer->SetInputData(data);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
-  if (compression == Compression::lz4) writer->SetCompressorTypeToLZ4();
-  else writer->SetCompressorTypeToZLib();
+  writer->SetCompressorTypeToZLib();
+  writer->SetCompressionLevel(kZlibLevel);
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors->message.empty())
     throw IoError(file.string() + ": cannot write " + kind + " file" + (errors->message.empty() ? "" : ": " + errors->message));
 }
@@ -79,6 +83,21 @@ void add_cell_array(vtkUnstructuredGrid* grid, const std::filesystem::path& file
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
   for (std::size_t k = 0; k < values.size(); ++k) a->SetValue(static_cast<vtkIdType>(k), values[k]);
   grid->GetCellData()->AddArray(a);
+}
+
+// Each list of labels as a field-data array of bytes (UInt8): the labels in UTF-8, each
+// ended by a NUL. A string array would be VTK's own form, but meshio (5.0) refuses the
+// file at it; bytes every reader takes (docs/python.md says how to decode them).
+void add_labels(vtkDataObject* data, const std::vector<FieldLabels>& labels) {
+  for (const FieldLabels& l : labels) {
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetName(l.name.c_str());
+    for (const std::string& label : l.labels) {
+      for (const char c : label) bytes->InsertNextValue(static_cast<unsigned char>(c));
+      bytes->InsertNextValue(0);
+    }
+    data->GetFieldData()->AddArray(bytes);
+  }
 }
 
 // The cell fields (`cells` cells) and labels of write_vtu into the grid. Throws IoError
@@ -107,13 +126,7 @@ void add_fields(vtkUnstructuredGrid* grid, const std::filesystem::path& file, st
         },
         f.values);
   }
-  for (const FieldLabels& l : labels) {
-    vtkNew<vtkStringArray> array;
-    array->SetName(l.name.c_str());
-    array->SetNumberOfValues(static_cast<vtkIdType>(l.labels.size()));
-    for (std::size_t i = 0; i < l.labels.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), l.labels[i]);
-    grid->GetFieldData()->AddArray(array);
-  }
+  add_labels(grid, labels);
 }
 
 // write_vtu, for triangles and for cells.
@@ -137,7 +150,7 @@ void write_grid(const std::filesystem::path& file, const Mesh& mesh, const std::
     grid->InsertNextCell(ring.size() == 3 ? VTK_TRIANGLE : VTK_POLYGON, static_cast<vtkIdType>(ids.size()), ids.data());
   }
   add_fields(grid, file, cells, fields, labels);
-  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::lz4);
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU");
 }
 
 }  // namespace
@@ -189,7 +202,7 @@ void write_tessellation_vtp(const std::filesystem::path& file, const Tessellatio
     for (std::size_t c = 0; c < ordered.size(); ++c) array->SetValue(static_cast<vtkIdType>(c), ordered[c][k]);
     poly->GetCellData()->AddArray(array);
   }
-  write_xml<vtkXMLPolyDataWriter>(file, poly.Get(), "VTP", Compression::zlib);
+  write_xml<vtkXMLPolyDataWriter>(file, poly.Get(), "VTP");
 }
 
 namespace {
@@ -218,14 +231,72 @@ void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
   }
   for (const auto& [name, values] : ints) add_cell_array<vtkIntArray>(grid, file, name, *values, mesh.tets.size());
   for (const auto& [name, values] : reals) add_cell_array<vtkDoubleArray>(grid, file, name, *values, mesh.tets.size());
-  for (const FieldLabels& l : labels) {
-    vtkNew<vtkStringArray> names;
-    names->SetName(l.name.c_str());
-    for (const std::string& n : l.labels) names->InsertNextValue(n);
-    grid->GetFieldData()->AddArray(names);
-  }
-  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
+  add_labels(grid, labels);
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU");
 }
+
+namespace {
+
+// Polyhedra in the order meshio (5.0) reads right: by their number of corners, stably.
+// meshio makes a block of each number in the order they first come but hands out the cell
+// arrays in ascending order of it, so any other order scrambles them; VTK and ParaView
+// take any order.
+std::vector<std::size_t> polyhedra_order(const std::vector<std::vector<vtkIdType>>& corners) {
+  std::vector<std::size_t> order(corners.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return corners[a].size() < corners[b].size();
+  });
+  return order;
+}
+
+// Inserts polyhedron c (its sorted corners, its faces as [n, ids...]) for each c of `order`.
+using IdLists = std::vector<std::vector<vtkIdType>>;
+void insert_polyhedra(vtkUnstructuredGrid* grid, const std::vector<std::size_t>& order, const IdLists& corners,
+                      const IdLists& faces, const std::vector<vtkIdType>& face_count) {
+  grid->Allocate(static_cast<vtkIdType>(order.size()));
+  for (const std::size_t c : order)
+    grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(corners[c].size()), corners[c].data(), face_count[c],
+                         faces[c].data());
+}
+
+// `fields` with their cells taken in `order`.
+std::vector<CellField> reordered(const std::vector<CellField>& fields, const std::vector<std::size_t>& order) {
+  std::vector<CellField> out;
+  for (const CellField& f : fields) {
+    CellField g{f.name, {}, f.components};
+    std::visit(
+        [&](const auto& values) {
+          std::decay_t<decltype(values)> v;
+          const std::size_t k = static_cast<std::size_t>(std::max(f.components, 1));
+          if (values.size() != k * order.size()) {
+            v = values;  // add_fields names the field that has not one value per cell
+          } else {
+            v.reserve(values.size());
+            for (const std::size_t c : order) v.insert(v.end(), values.begin() + c * k, values.begin() + (c + 1) * k);
+          }
+          g.values = std::move(v);
+        },
+        f.values);
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+// The corners of each polyhedron given by its faces as [n, ids...]: each once, ascending.
+std::vector<std::vector<vtkIdType>> corners_of(const std::vector<std::vector<vtkIdType>>& faces) {
+  std::vector<std::vector<vtkIdType>> corners(faces.size());
+  for (std::size_t c = 0; c < faces.size(); ++c) {
+    for (std::size_t k = 0; k < faces[c].size(); k += static_cast<std::size_t>(faces[c][k]) + 1)
+      corners[c].insert(corners[c].end(), faces[c].begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                        faces[c].begin() + static_cast<std::ptrdiff_t>(k) + 1 + faces[c][k]);
+    std::sort(corners[c].begin(), corners[c].end());
+    corners[c].erase(std::unique(corners[c].begin(), corners[c].end()), corners[c].end());
+  }
+  return corners;
+}
+
+}  // namespace
 
 void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels) {
@@ -245,51 +316,48 @@ void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const st
       ++count[c];
     }
   }
-  grid->Allocate(static_cast<vtkIdType>(mesh.cells));
-  std::vector<vtkIdType> ids;
-  for (std::size_t c = 0; c < stream.size(); ++c) {
-    ids.clear();
-    for (std::size_t k = 0; k < stream[c].size(); k += static_cast<std::size_t>(stream[c][k]) + 1)
-      ids.insert(ids.end(), stream[c].begin() + static_cast<std::ptrdiff_t>(k) + 1,
-                 stream[c].begin() + static_cast<std::ptrdiff_t>(k) + 1 + stream[c][k]);
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(ids.size()), ids.data(), count[c], stream[c].data());
-  }
-  add_fields(grid, file, static_cast<std::size_t>(mesh.cells), fields, labels);
-  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::lz4);
+  // In meshio's order (polyhedra_order), each cell's index in `cell`: OpenFOAM's.
+  const std::vector<std::vector<vtkIdType>> corners = corners_of(stream);
+  const std::vector<std::size_t> order = polyhedra_order(corners);
+  insert_polyhedra(grid, order, corners, stream, count);
+  std::vector<int> index(order.begin(), order.end());
+  add_cell_array<vtkIntArray>(grid, file, "cell", index, order.size());
+  add_fields(grid, file, static_cast<std::size_t>(mesh.cells), reordered(fields, order), labels);
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU");
 }
 
 void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
   vtkNew<vtkUnstructuredGrid> grid;
   set_points(grid, t.vertices);
-  grid->Allocate(static_cast<vtkIdType>(t.regions.size()));
-  std::vector<int> grain, phase, region;
+  std::vector<std::vector<vtkIdType>> stream(t.regions.size());  // each region's faces as [n, ids...]
+  std::vector<vtkIdType> count(t.regions.size());
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
-    std::vector<vtkIdType> ids, stream;  // the polyhedron's points; its faces as [n, ids...]
     for (int f : t.regions[r].faces) {
       const Face3& face = t.faces[f];
-      stream.push_back(static_cast<vtkIdType>(face.ring.size()));
-      const std::size_t at = stream.size();
-      stream.insert(stream.end(), face.ring.begin(), face.ring.end());
-      if (face.back != static_cast<int>(r)) std::reverse(stream.begin() + static_cast<std::ptrdiff_t>(at), stream.end());
-      ids.insert(ids.end(), face.ring.begin(), face.ring.end());
+      stream[r].push_back(static_cast<vtkIdType>(face.ring.size()));
+      const std::size_t at = stream[r].size();
+      stream[r].insert(stream[r].end(), face.ring.begin(), face.ring.end());
+      if (face.back != static_cast<int>(r))
+        std::reverse(stream[r].begin() + static_cast<std::ptrdiff_t>(at), stream[r].end());
     }
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    grid->InsertNextCell(VTK_POLYHEDRON, static_cast<vtkIdType>(ids.size()), ids.data(),
-                         static_cast<vtkIdType>(t.regions[r].faces.size()), stream.data());
+    count[r] = static_cast<vtkIdType>(t.regions[r].faces.size());
+  }
+  // In meshio's order (polyhedra_order), each region's index in `region`.
+  const std::vector<std::vector<vtkIdType>> corners = corners_of(stream);
+  const std::vector<std::size_t> order = polyhedra_order(corners);
+  insert_polyhedra(grid, order, corners, stream, count);
+  std::vector<int> grain, phase, region;
+  for (const std::size_t r : order) {
     grain.push_back(t.regions[r].grain);
     phase.push_back(t.regions[r].phase);
     region.push_back(static_cast<int>(r));
   }
   for (const auto& [name, values] : {std::pair{"grain", &grain}, {"phase", &phase}, {"region", &region}})
     add_cell_array<vtkIntArray>(grid, file, name, *values, t.regions.size());
-  vtkNew<vtkStringArray> names;
-  names->SetName("phase_names");
-  for (const Phase& p : t.phases) names->InsertNextValue(p.name);
-  grid->GetFieldData()->AddArray(names);
-  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU", Compression::zlib);
+  FieldLabels names{"phase_names", {}};
+  for (const Phase& p : t.phases) names.labels.push_back(p.name);
+  add_labels(grid, {names});
+  write_xml<vtkXMLUnstructuredGridWriter>(file, grid.Get(), "VTU");
 }
 
 namespace {
@@ -389,10 +457,20 @@ VtuContents read_vtu(const std::filesystem::path& file) {
   }
   vtkFieldData* fd = grid->GetFieldData();
   for (int a = 0; fd != nullptr && a < fd->GetNumberOfArrays(); ++a) {
-    auto* strings = vtkStringArray::SafeDownCast(fd->GetAbstractArray(a));
-    if (strings == nullptr) continue;
-    FieldLabels l{strings->GetName() ? strings->GetName() : "", {}};
-    for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i) l.labels.push_back(strings->GetValue(i));
+    vtkAbstractArray* array = fd->GetAbstractArray(a);
+    FieldLabels l{array->GetName() ? array->GetName() : "", {}};
+    if (auto* strings = vtkStringArray::SafeDownCast(array)) {  // files written before the bytes
+      for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i) l.labels.push_back(strings->GetValue(i));
+    } else if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(array)) {
+      std::string label;
+      for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i) {
+        if (const unsigned char c = bytes->GetValue(i); c != 0) label += static_cast<char>(c);
+        else l.labels.push_back(std::exchange(label, {}));
+      }
+      if (!label.empty()) throw IoError(file.string() + ": field data '" + l.name + "': labels not ended by NUL");
+    } else {
+      continue;
+    }
     out.labels.push_back(std::move(l));
   }
   return out;

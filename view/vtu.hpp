@@ -25,8 +25,8 @@ struct CellField {
   int components = 1;
 };
 
-// Names stored with the grid (VTK field data, a string array): e.g. the phases' names,
-// which the integer `phase` array numbers.
+// Names stored with the grid (VTK field data: bytes, each name in UTF-8 ended by a NUL, a
+// form meshio reads too): e.g. the phases' names, which the integer `phase` array numbers.
 struct FieldLabels {
   std::string name;
   std::vector<std::string> labels;
@@ -45,9 +45,10 @@ void write_vtu(const std::filesystem::path& file, const CellMesh& mesh, const st
 void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const std::vector<CellField>& fields,
                const std::vector<FieldLabels>& labels = {});
 
-// Reads a VTU written by write_vtu: points, cells (triangles and polygons), every cell array (integer arrays
-// as int, the rest as double) and every string array of the field data; 3D cells
-// (polyhedra, tetrahedra) by their volumes alone. Throws IoError.
+// Reads a VTU written by write_vtu: points, cells (triangles and polygons), every cell
+// array (integer arrays as int, the rest as double) and every list of labels in the field
+// data (bytes, or a string array as older files have); 3D cells (polyhedra, tetrahedra) by
+// their volumes alone. Throws IoError.
 struct VtuContents {
   CellMesh mesh;  // triangles and polygons as written
   // Each 3D cell's volume from its faces as written (the divergence theorem, each face

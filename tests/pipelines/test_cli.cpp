@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "helpers.hpp"
+#include "view/vtu.hpp"
 
 using namespace grainmesh;
 using test::entries;
@@ -162,7 +163,8 @@ TEST_CASE("a 2D mesh.vtu names its phases, as the 3D one does", "[cli][vtu]") {
   REQUIRE(run_grainmesh({"run", "-o", (dir / "out").string(), "--set", "tessellation.grains=10", "--set",
                          "output.pictures=none"})
               .exit_code == 0);
-  const std::string vtu = test::read_file(dir / "out/mesh.vtu");
-  CHECK(vtu.find("phase_names") != std::string::npos);
-  CHECK(vtu.find("particulate") != std::string::npos);
+  const VtuContents vtu = read_vtu(dir / "out/mesh.vtu");
+  REQUIRE(vtu.labels.size() == 1);
+  CHECK(vtu.labels[0].name == "phase_names");
+  CHECK(vtu.labels[0].labels == std::vector<std::string>{"particulate", "matrix"});
 }

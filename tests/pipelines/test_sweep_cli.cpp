@@ -355,4 +355,11 @@ TEST_CASE("run without --solve does not replace a solved run's answer unless --f
   CHECK(nlohmann::json::parse(test::read_file(dir / "out/report.json")).contains("effective"));  // untouched
   CHECK(run({"run", "-o", out, "--quiet", "--force"}).exit_code == 0);
   CHECK_FALSE(nlohmann::json::parse(test::read_file(dir / "out/report.json")).contains("effective"));
+  // A periodic cell answered by the finite elements without --solve: run again the same way.
+  const std::string fe = (dir / "fe").string();
+  for (int k = 0; k < 2; ++k) {
+    INFO("run " << k);
+    REQUIRE(run({"run", "-o", fe, "--quiet", "--set", "homogenise.boundary=periodic"}).exit_code == 0);
+    CHECK(nlohmann::json::parse(test::read_file(dir / "fe/report.json")).contains("effective"));
+  }
 }
