@@ -6,13 +6,15 @@ import csv
 import json
 import os
 
-import meshio
-import numpy as np
+# numpy and meshio (Debian's python3-numpy, python3-meshio) are imported where a mesh is
+# read: the commands and reports need neither (a Python without them still runs them).
 
 
 def labels(field):
     """A list of names as grainmesh writes them in a VTU's field data: bytes, each name in
     UTF-8 ended by a NUL (docs/python.md, Files other tools read)."""
+    import numpy as np
+
     return bytes(np.asarray(field, dtype=np.uint8)).decode("utf-8").split("\0")[:-1]
 
 
@@ -24,6 +26,9 @@ class Mesh:
     `phase` numbers index); `meshio`: meshio's own Mesh."""
 
     def __init__(self, path):
+        import meshio
+        import numpy as np
+
         self.path = os.fspath(path)
         self.meshio = meshio.read(self.path)
         self.points = self.meshio.points
