@@ -10,8 +10,8 @@ and checks (docs/python.md).
 
 from .commands import (ConfigError, Error, FileError, GeometryError, SolveError, TimeLimitError, command, converge,
                        export, mesh, run, sweep, tessellate)
-from .config import default_config
+from .config import default_config, read_config
 from .results import Mesh, Run, Sweep, read_mesh
 
 __all__ = ["ConfigError", "Error", "FileError", "GeometryError", "SolveError", "TimeLimitError", "command", "converge",
-           "export", "mesh", "run", "sweep", "tessellate", "default_config", "Mesh", "Run", "Sweep", "read_mesh"]
+           "export", "mesh", "run", "sweep", "tessellate", "default_config", "read_config", "Mesh", "Run", "Sweep", "read_mesh"]

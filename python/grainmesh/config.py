@@ -8,12 +8,23 @@ import os
 from . import _grainmesh
 
 
-def default_config():
-    """The config `run` uses without one (data/default.ini): {section: {key: value text}}."""
-    parser = configparser.ConfigParser(interpolation=None, comment_prefixes=("#", ";"))
+def _parsed(text):
+    """{section: {key: value text}} of a config file's text (comments dropped)."""
+    parser = configparser.ConfigParser(interpolation=None, comment_prefixes=("#", ";"), inline_comment_prefixes=("#",))
     parser.optionxform = str  # keys keep their case (phase.WC)
-    parser.read_string(_grainmesh.default_config)
+    parser.read_string(text)
     return {section: dict(parser[section]) for section in parser.sections()}
+
+
+def default_config():
+    """The config `run` uses without one (data/default.ini), as a dict to change."""
+    return _parsed(_grainmesh.default_config)
+
+
+def read_config(path):
+    """A config file as a dict to change and hand back (its values as text)."""
+    with open(path, encoding="utf-8") as f:
+        return _parsed(f.read())
 
 
 def value_text(value):
