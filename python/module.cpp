@@ -17,7 +17,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -106,9 +105,10 @@ void relay(const char* stream, std::string& text, bool all) {
   const std::size_t end = all ? text.size() : text.rfind('\n') + 1;  // npos + 1 = 0: no whole line
   std::string lines;
   for (std::size_t at = 0; at < end;) {
-    const std::size_t next = std::min(end, text.find('\n', at) + 1);
+    const std::size_t newline = text.find('\n', at);
+    const std::size_t next = newline < end ? newline + 1 : end;
     if (text.compare(at, kErrorPrefix.size(), kErrorPrefix) != 0) lines.append(text, at, next - at);
-    at = next == 0 ? end : next;
+    at = next;
   }
   text.erase(0, end);
   if (lines.empty()) return;
@@ -116,10 +116,11 @@ void relay(const char* stream, std::string& text, bool all) {
   py::module_::import("sys").attr(stream).attr("flush")();
 }
 
-// Runs `binary ARGS...` (the grainmesh program) in a child process; returns its exit code (128 + the signal that
-// ended it) and everything it wrote to stderr. What it prints is relayed to sys.stdout and
-// sys.stderr unless `quiet`. On Ctrl-C (or any signal Python raises on) the child is sent
-// SIGINT, waited for (it removes what it had begun), and the Python exception raised.
+// Runs `binary ARGS...` (the grainmesh program) in a child process; returns its exit code
+// (128 + the signal that ended it) and everything it wrote to stderr. What it prints is
+// relayed to sys.stdout and sys.stderr unless `quiet`. On Ctrl-C (or any signal Python
+// raises on) the child is sent SIGINT, waited for (it removes what it had begun), and the
+// Python exception raised.
 py::tuple command(const std::string& binary, const std::vector<std::string>& args, bool quiet) {
   Pipe out, err;
   const pid_t pid = start(binary, args, out, err);

@@ -170,9 +170,9 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   const fs::path ini = dir / "sweep.ini";
   write_text_file(ini, test::read_file(cfg) +
                             "\n[sweep]\nphase.Co.fraction = 0.1, 0.25\nrealisations = 2\n[homogenise]\nboundary = periodic\n"
-                            "[mesh]\ntets_per_grain = 50\n");
+                            "[mesh]\ntets_per_grain = 30\n");
   const auto s = run_grainmesh({"sweep", ini.string(), "-o", (dir / "s").string(), "--solve", "--set",
-                                "tessellation.grains=12", "--set", "load.delta_T=-500", "--set",
+                                "tessellation.grains=8", "--set", "load.delta_T=-500", "--set",
                                 "phase.WC.alpha=5.2e-6", "--set", "phase.Co.alpha=13.8e-6"});
   INFO(s.err);
   REQUIRE(s.exit_code == 0);

@@ -89,3 +89,21 @@ def test_ctrl_c_raises_keyboard_interrupt_within_a_second_and_leaves_nothing(tmp
     assert raised - sent < 1.0
     assert not out.exists()
     assert os.listdir(tmp_path) == []
+
+
+def test_the_stage_commands_and_converge_from_python(tmp_path):
+    config = grainmesh.default_config()
+    config["tessellation"]["grains"] = 12
+    t = grainmesh.tessellate(config, tmp_path / "t", quiet=True)
+    assert len(t.tessellation["grains"]) == 12
+    m = grainmesh.mesh(tmp_path / "t" / "tessellation.json", tmp_path / "m", set={"mesh.triangles_per_grain": 30},
+                       quiet=True)
+    assert set(np.unique(m.mesh.cell_data["grain"])) == set(range(12))
+    case = grainmesh.export(tmp_path / "m" / "mesh.vtu", tmp_path / "c", quiet=True)
+    assert os.path.exists(os.path.join(case, "system", "controlDict"))
+    study = grainmesh.converge(config, tmp_path / "cv", levels=3, start=12, quiet=True,
+                               set={"homogenise.boundary": "periodic"})
+    assert len(study.report["levels"]) == 3
+    with pytest.raises(grainmesh.ConfigError, match="levels"):
+        grainmesh.converge(config, tmp_path / "bad", levels=9, quiet=True)
+    assert not (tmp_path / "bad").exists()
