@@ -80,10 +80,11 @@ class _Config:
         if self.config is None:
             return self
         if isinstance(self.config, dict):
+            text = ini_text(self.config)  # a bad value raises before anything is written
             self.dir = tempfile.mkdtemp(prefix="grainmesh-config-")
             self.path = os.path.join(self.dir, "config.ini")
             with open(self.path, "w", encoding="utf-8") as f:
-                f.write(ini_text(self.config))
+                f.write(text)
         elif isinstance(self.config, (str, os.PathLike)):
             self.path = os.fspath(self.config)
         else:

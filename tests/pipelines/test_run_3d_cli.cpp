@@ -142,11 +142,16 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   test::ScratchDir dir("run3d_study");
   const std::string cfg = test::example("grains_3d_wc_co").string();
   // A study of three nested levels on a small periodic cell, solved by OpenFOAM (small: the
-  // sanitizer build runs it too; the finite elements' third level would solve 512 times
-  // the first mesh's tetrahedra in second order).
+  // sanitizer build runs it too, on half the grains and without judging the limits, which
+  // need the twelve; the finite elements' third level would solve 512 times the first
+  // mesh's tetrahedra in second order).
+#ifdef GRAINMESH_SANITIZED
+  const std::string grains = "tessellation.grains=6";
+#else
+  const std::string grains = "tessellation.grains=12";
+#endif
   const auto c = run_grainmesh({"converge", cfg, "-o", (dir / "c").string(), "--levels", "3", "--start", "10", "--set",
-                                "tessellation.grains=12", "--set", "homogenise.boundary=periodic", "--set",
-                                "homogenise.solver=openfoam"});
+                                grains, "--set", "homogenise.boundary=periodic", "--set", "homogenise.solver=openfoam"});
   INFO(c.err);
   REQUIRE(c.exit_code == 0);
   const auto study = nlohmann::json::parse(test::read_file(dir / "c" / "report.json"));
@@ -157,11 +162,13 @@ TEST_CASE("grainmesh converge and sweep take 3D configs: levels in tetrahedra pe
   }
   // The polyhedra: the dual of eight times the tetrahedra of the level before.
   CHECK(study["levels"][2]["cells"].get<double>() > 4 * study["levels"][1]["cells"].get<double>());
+#ifndef GRAINMESH_SANITIZED
   for (const char* q : {"C11", "C22", "C33", "C12", "C13", "C23", "C44", "C55", "C66"}) {
     CAPTURE(q);
     const double finest = study["study"][q]["values"][2].get<double>(), limit = study["study"][q]["limit"].get<double>();
     CHECK(std::abs(limit / finest - 1.0) < 0.02);
   }
+#endif
   CHECK(test::read_file(dir / "c" / "convergence.csv").rfind("level,tets_per_grain,cells,seconds,C11,C22,C33", 0) == 0);
 
   // A sweep over the Co fraction, two realisations each, cooled, collected: the 3D
