@@ -237,11 +237,13 @@ void write_tet_vtu(const std::filesystem::path& file, const TetMesh& mesh,
 
 namespace {
 
+using IdLists = std::vector<std::vector<vtkIdType>>;  // a list of point ids per cell
+
 // Polyhedra in the order meshio (5.0) reads right: by their number of corners, stably.
 // meshio makes a block of each number in the order they first come but hands out the cell
 // arrays in ascending order of it, so any other order scrambles them; VTK and ParaView
 // take any order.
-std::vector<std::size_t> polyhedra_order(const std::vector<std::vector<vtkIdType>>& corners) {
+std::vector<std::size_t> polyhedra_order(const IdLists& corners) {
   std::vector<std::size_t> order(corners.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -251,7 +253,6 @@ std::vector<std::size_t> polyhedra_order(const std::vector<std::vector<vtkIdType
 }
 
 // Inserts polyhedron c (its sorted corners, its faces as [n, ids...]) for each c of `order`.
-using IdLists = std::vector<std::vector<vtkIdType>>;
 void insert_polyhedra(vtkUnstructuredGrid* grid, const std::vector<std::size_t>& order, const IdLists& corners,
                       const IdLists& faces, const std::vector<vtkIdType>& face_count) {
   grid->Allocate(static_cast<vtkIdType>(order.size()));
@@ -284,8 +285,8 @@ std::vector<CellField> reordered(const std::vector<CellField>& fields, const std
 }
 
 // The corners of each polyhedron given by its faces as [n, ids...]: each once, ascending.
-std::vector<std::vector<vtkIdType>> corners_of(const std::vector<std::vector<vtkIdType>>& faces) {
-  std::vector<std::vector<vtkIdType>> corners(faces.size());
+IdLists corners_of(const IdLists& faces) {
+  IdLists corners(faces.size());
   for (std::size_t c = 0; c < faces.size(); ++c) {
     for (std::size_t k = 0; k < faces[c].size(); k += static_cast<std::size_t>(faces[c][k]) + 1)
       corners[c].insert(corners[c].end(), faces[c].begin() + static_cast<std::ptrdiff_t>(k) + 1,
@@ -303,7 +304,7 @@ void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const st
   vtkNew<vtkUnstructuredGrid> grid;
   set_points(grid, mesh.points3d);
   // Each cell's faces as [n, ids...], turned outward: an owner's as stored, a neighbour's reversed.
-  std::vector<std::vector<vtkIdType>> stream(static_cast<std::size_t>(mesh.cells));
+  IdLists stream(static_cast<std::size_t>(mesh.cells));
   std::vector<vtkIdType> count(static_cast<std::size_t>(mesh.cells), 0);
   for (int f = 0; f < mesh.faces(); ++f) {
     const auto begin = mesh.face_points.begin() + mesh.face_start[f], end = mesh.face_points.begin() + mesh.face_start[f + 1];
@@ -317,7 +318,7 @@ void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const st
     }
   }
   // In meshio's order (polyhedra_order), each cell's index in `cell`: OpenFOAM's.
-  const std::vector<std::vector<vtkIdType>> corners = corners_of(stream);
+  const IdLists corners = corners_of(stream);
   const std::vector<std::size_t> order = polyhedra_order(corners);
   insert_polyhedra(grid, order, corners, stream, count);
   std::vector<int> index(order.begin(), order.end());
@@ -329,7 +330,7 @@ void write_vtu(const std::filesystem::path& file, const PolyMesh& mesh, const st
 void write_tessellation_vtu(const std::filesystem::path& file, const Tessellation3& t) {
   vtkNew<vtkUnstructuredGrid> grid;
   set_points(grid, t.vertices);
-  std::vector<std::vector<vtkIdType>> stream(t.regions.size());  // each region's faces as [n, ids...]
+  IdLists stream(t.regions.size());  // each region's faces as [n, ids...]
   std::vector<vtkIdType> count(t.regions.size());
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     for (int f : t.regions[r].faces) {
@@ -343,7 +344,7 @@ void write_tessellation_vtu(const std::filesystem::path& file, const Tessellatio
     count[r] = static_cast<vtkIdType>(t.regions[r].faces.size());
   }
   // In meshio's order (polyhedra_order), each region's index in `region`.
-  const std::vector<std::vector<vtkIdType>> corners = corners_of(stream);
+  const IdLists corners = corners_of(stream);
   const std::vector<std::size_t> order = polyhedra_order(corners);
   insert_polyhedra(grid, order, corners, stream, count);
   std::vector<int> grain, phase, region;
