@@ -181,7 +181,7 @@ Registry& registry() {
 
 }  // namespace
 
-void install_interrupt_handling() {
+void install_interrupt_handling(std::string message) {
   const sigset_t set = interrupt_signals();
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
   struct sigaction freeze {};
@@ -189,6 +189,7 @@ void install_interrupt_handling() {
   sigemptyset(&freeze.sa_mask);
   sigaction(freeze_signal(), &freeze, nullptr);
   auto* r = new Registry;  // lives as long as the process (the handling thread uses it until exit)
+  r->message = std::move(message);
   g_registry = r;
   g_interrupted = false;
   std::thread(wait_for_signals, r).detach();

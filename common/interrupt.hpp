@@ -18,7 +18,9 @@ namespace grainmesh {
 // Blocks SIGINT, SIGTERM and SIGHUP in this thread (and so in the threads it starts) and
 // starts the thread that waits for them. In a process just forked from one that had
 // called it, call it again: the parent's registrations are the parent's, and are forgotten.
-void install_interrupt_handling();
+// `message` is what the line printed on an interrupt says (set_interrupt_message), in
+// place from the first moment a signal can be handled.
+void install_interrupt_handling(std::string message = "nothing was written");
 
 // What the line printed on an interrupt says after "grainmesh: interrupted; " (by default
 // "nothing was written").

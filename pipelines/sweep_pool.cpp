@@ -63,12 +63,13 @@ PoolResult run_pool(const std::vector<const SweepRun*>& todo, const SweepPlan& p
         // A killed sweep takes its runs with it: none finishes behind a resumed sweep's back,
         // and each removes what it was writing (SIGTERM, handled as an interrupt).
         die_with_parent(parent, SIGTERM);
-        install_interrupt_handling();
-        set_interrupt_message("nothing written to " + (dir / r->name).string());
-        if (o.jobs > 1) limit_fe_threads(1);  // the runs share the cores
-        // The run: its output to its log, its errors as its exit code.
+        // The run: its output to its log, its errors as its exit code. Its output goes there
+        // before its interrupt handling starts (the signals stay blocked until then), so an
+        // interrupt it reports is in its log, and the sweep's line is the only one on stderr.
         if (!std::freopen((dir / "logs" / (r->name + ".log")).c_str(), "w", stdout)) _exit(4);
         dup2(STDOUT_FILENO, STDERR_FILENO);
+        install_interrupt_handling("nothing written to " + (dir / r->name).string());
+        if (o.jobs > 1) limit_fe_threads(1);  // the runs share the cores
         int code = 0;
         try {
           run_run_command(Config::from_text(plan.base_text, source, r->overrides), dir / r->name, o.solve, true);

@@ -401,6 +401,21 @@ TEST_CASE("grainmesh sweep interrupted at random moments keeps its finished runs
   const auto t0 = Clock::now();
   REQUIRE(signal_after(spawn_grainmesh(args, dir / "err"), SIGKILL, 600.0) == 0);
   const double full = seconds_since(t0);
+  // Interrupted as its first runs start (the moment its plan is written): a run that has
+  // just been forked reports its interrupt in its log, never on the sweep's stderr.
+  for (int trial = 0; trial < 4; ++trial) {
+    fs::remove_all(out);
+    const pid_t pid = spawn_grainmesh(args, dir / "err");
+    for (const auto since = Clock::now(); !fs::exists(out / "plan.json") && seconds_since(since) < 60.0;)
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+    const int status = signal_after(pid, SIGINT, 0.002 * trial);
+    const std::string err = test::read_file(dir / "err");
+    INFO("trial " << trial << " as the runs start: " << err);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 130);
+    CHECK(err == "grainmesh: interrupted; the runs that finished are kept in " + out.string() +
+                     "; run the sweep again to finish it\n");
+  }
   fs::remove_all(out);
   std::mt19937_64 rng(12);
   for (int trial = 0; trial < 3; ++trial) {
