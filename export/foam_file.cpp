@@ -7,13 +7,6 @@
 
 namespace grainmesh {
 
-// The shortest text that reads back as the same double.
-std::string number_text(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
 std::string constraint_entry(const PolyMesh::Patch& p) {
   if (p.type == "symmetryPlane" || p.type == "empty" || p.type == "cyclic") return "type " + p.type + ";";
   return "";

@@ -13,13 +13,11 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "common/geometry.hpp"
 #include "export/polymesh.hpp"
 
 namespace grainmesh {
-
-// The shortest text that reads back as the same double.
-std::string number_text(double v);
 
 // One OpenFOAM file, ASCII or binary (labels int32, scalars double, little-endian).
 class FoamFile {

@@ -60,7 +60,7 @@ std::unique_ptr<CellRun> make_cell_run(const RunPlan& plan, const CellJobs<3>& j
 // Whether a case of `cells` cells is written binary: export.format's choice when given,
 // binary above kBinaryCaseAboveCells otherwise.
 inline bool binary_case(const RunPlan& plan, std::size_t cells) {
-  return plan.format_given ? plan.foam.binary : plan.foam.binary || cells > kBinaryCaseAboveCells;
+  return plan.formats.binary.value_or(cells > kBinaryCaseAboveCells);
 }
 
 }  // namespace grainmesh

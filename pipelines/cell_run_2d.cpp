@@ -64,6 +64,15 @@ class PlaneCellRun final : public CellRun {
       write_mesh_png(dir / "cells_detail.png", e_->mesh,
                      {.width_px = picture_width(), .fill_by = e_->phase, .outline_by = e_->grain,
                       .view = detail_view(*t_), .legend = phase_names(t_->phases), .scale_bar = true, .length_unit = unit_});
+    if (plan_.formats.mesh_files()) {
+      // The triangles the case is made of (its polygons' triangles when it has polygons).
+      const bool triangles = foam_.cells == FoamOptions::Cells::triangles;
+      const ElementMesh elements = triangles ? element_mesh(*e_)
+                                             : element_mesh(refined(grain_export_mesh(*t_, *m_), plan_.refine,
+                                                                    mesh_job_.origin));
+      mesh_files_ = write_element_files(dir, elements, plan_.formats,
+                                        {.plane_stress = foam_.plane_stress, .length_unit = unit_});
+    }
     foam_.binary = binary_case(plan_, e_->mesh.cells());
     return write_run_cases(dir, *e_, foam_, plan_.boundary, pm_);
   }
@@ -75,6 +84,7 @@ class PlaneCellRun final : public CellRun {
       fields["case_cells"] = {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polygons" : "triangles"},
                               {"cells", e_->mesh.cells()}};
     if (plan_.refine > 0) fields["refine"] = plan_.refine;
+    if (!mesh_files_.empty()) fields["mesh_files"] = mesh_files_;
     return fields;
   }
 
@@ -123,6 +133,7 @@ class PlaneCellRun final : public CellRun {
   std::optional<ExportMesh<2>> e_;
   PolyMesh pm_;
   Json mesh_fields_;  // report.json's mesh
+  std::vector<std::string> mesh_files_;  // mesh.msh, mesh.inp as export.format asks
 };
 
 }  // namespace

@@ -47,6 +47,8 @@ class SolidCellRun final : public CellRun {
 
   std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
     e_ = refined(grain_export_mesh(*t_, *m_), plan_.refine, mesh_job_.origin);
+    if (plan_.formats.mesh_files())
+      mesh_files_ = write_element_files(dir, element_mesh(*e_), plan_.formats, {.length_unit = unit_});
     foam_.binary = binary_case(plan_, e_->mesh.tets.size());
     return write_run_cases(dir, *e_, foam_, plan_.boundary, fm_);
   }
@@ -58,6 +60,7 @@ class SolidCellRun final : public CellRun {
                   {"cells", fm_.mesh.cells},
                   {"faces", fm_.mesh.faces()}}}};
     if (plan_.refine > 0) fields["refine"] = plan_.refine;
+    if (!mesh_files_.empty()) fields["mesh_files"] = mesh_files_;
     return fields;
   }
 
@@ -119,6 +122,7 @@ class SolidCellRun final : public CellRun {
   FoamMesh3 fm_;
   double section_z_ = 0.0;
   Json mesh_fields_;
+  std::vector<std::string> mesh_files_;  // mesh.msh, mesh.inp as export.format asks
 };
 
 }  // namespace

@@ -12,9 +12,11 @@
 #include "export/foam_case.hpp"
 #include "mesh/quality.hpp"
 #include "pipelines/config_keys.hpp"
+#include "pipelines/element_files.hpp"
 #include "pipelines/material_units.hpp"
 #include "pipelines/report.hpp"
 #include "view/mesh_description.hpp"
+#include "view/picture.hpp"
 #include "view/vtu.hpp"
 
 namespace grainmesh {
@@ -34,9 +36,7 @@ FoamOptions read_foam_options(const Config& c) {
   if (!(o.convert_to_meters > 0.0) || !std::isfinite(o.convert_to_meters))
     c.fail("export.convert_to_meters", "must be positive, got " + c.text("export.convert_to_meters"));
   o.cyclic = c.flag("export.cyclic", false);
-  const std::string format = c.has("export.format") ? c.text("export.format") : "ascii";
-  if (format != "ascii" && format != "binary") c.fail("export.format", "must be ascii or binary, got '" + format + "'");
-  o.binary = format == "binary";
+  o.binary = read_export_formats(c).binary.value_or(false);
   o.grain_zones = c.flag("export.grain_zones", false);
   const std::string cells = c.has("export.cells") ? c.text("export.cells") : "triangles";
   if (cells != "triangles" && cells != "polygons") c.fail("export.cells", "must be triangles or polygons, got '" + cells + "'");
@@ -115,6 +115,9 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
   if (!triangles && o.cells == FoamOptions::Cells::triangles)
     c.fail("export.cells", "is triangles, but " + mesh_file.string() + " holds polygonal cells: set polygons to export them as they are");
   const ExportMesh<2> m = o.cells == FoamOptions::Cells::polygons && triangles ? polygon_cells(read) : read;
+  const ExportFormats formats = read_export_formats(c);
+  if (formats.mesh_files() && !triangles)
+    c.fail("export.format", "gmsh and abaqus files take triangles, but " + mesh_file.string() + " holds polygonal cells");
   Warnings warnings;
   for (const std::string& w : check_load(foam_cell(m), o)) warnings.add(w);
   const auto start = std::chrono::steady_clock::now();
@@ -125,6 +128,10 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
   std::vector<CellField> fields{{"grain", m.grain}, {"phase", m.phase}};
   if (const std::optional<TriMesh> tri = as_triangles(m.mesh)) fields.push_back({"quality", triangle_quality(*tri)});
   write_vtu(staged.dir() / "mesh.vtu", m.mesh, fields);
+  const std::vector<std::string> mesh_files =
+      formats.mesh_files() ? write_element_files(staged.dir(), element_mesh(read), formats,
+                                                 {.plane_stress = o.plane_stress, .length_unit = length_unit_name(o.convert_to_meters)})
+                           : std::vector<std::string>{};
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<int> cells_per_phase(m.phases.size(), 0);
   for (int p : m.phase) ++cells_per_phase[p];
@@ -140,6 +147,7 @@ void run_export_command(const std::filesystem::path& mesh_file, const Config& c,
               {"phases", phases},
               {"cyclic", o.cyclic && m.periodic},
               {"format", o.binary ? "binary" : "ascii"},
+              {"mesh_files", mesh_files},
               {"convert_to_meters", o.convert_to_meters},
               {"load",
                {{"displacement", o.displacement},

@@ -195,7 +195,7 @@ RunPlan read_run_plan(const Config& c, bool solve) {
     s.warnings = check_load(FoamCell{foam_phases(o.phases), {o.width, o.height, 0.0}, o.periodic}, s.foam);
     s.resolved_ini = config_ini(c, {plane_state_note(s.foam)});
   }
-  s.format_given = c.has("export.format");
+  s.formats = read_export_formats(c);
   s.boundary = read_boundary(c);
   s.solver = read_solver(c);
   s.fe_reference = read_reference(c, solve);

@@ -12,6 +12,7 @@
 #include "analysis/homogenise.hpp"
 #include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/element_files.hpp"
 #include "pipelines/mesh_job.hpp"
 #include "pipelines/tessellate_job.hpp"
 
@@ -39,7 +40,7 @@ struct RunPlan {
   std::string resolved_ini;  // config.ini: the config as resolved, with what the defaults meant
   std::variant<CellJobs<2>, CellJobs<3>> cell;
   FoamOptions foam;
-  bool format_given = false;  // export.format given: a large case is not made binary
+  ExportFormats formats;  // export.format: the case's encoding when given (else binary when large), mesh files
   Boundary boundary = Boundary::mixed;
   Solver solver = Solver::openfoam;  // homogenise.solver: where a periodic cell's answer comes from
   bool fe_reference = false;  // homogenise.reference = fe: the finite-element reference beside the answer

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages grainmesh builds and tests with, only those missing.
-# With --bench, also the peers `make bench` compares against (Gmsh; SfePy, read through VTK's Python).
+# With --bench, also the peer `make bench` compares against (SfePy, read through VTK's Python).
 # Idempotent: a second run installs nothing and takes well under a second.
 set -euo pipefail
 
@@ -23,9 +23,9 @@ packages=(
   clang libclang-rt-dev                 # the sanitizer build and libFuzzer (make test, make fuzz)
   python3-dev python3-pybind11 python3-numpy   # the Python module (python/)
   python3-pytest python3-meshio python3-matplotlib python3-vtk9  # its tests and examples
+  gmsh                                  # gmsh -check reads the mesh.msh files the tests write (make bench's peer too)
 )
 if [[ "${1:-}" == "--bench" ]]; then
-  packages+=(gmsh)                      # make bench's peer mesher (2D and 3D)
   packages+=(python3-sfepy)             # make bench's peer of the finite-element reference (VTK's Python above)
 fi
 

@@ -77,7 +77,8 @@ TEST_CASE("bad export input gives one line naming what is wrong and no case", "[
       {{"export", vtu, "--set", "phase.WC.nu=0.5"}, 2, "phase.WC.nu: must lie in (-1, 0.5), got 0.5"},
       {{"export", vtu, "--set", "phase.WC.E=-1"}, 2, "phase.WC.E: must be positive"},
       {{"export", vtu, "--set", "phase.Ni.E=1e9"}, 2, "phase.Ni.E: the mesh has no phase named 'Ni'"},
-      {{"export", vtu, "--set", "export.format=hdf5"}, 2, "export.format: must be ascii or binary"},
+      {{"export", vtu, "--set", "export.format=hdf5"}, 2, "export.format: must be a list of ascii or binary (the OpenFOAM case), gmsh"},
+      {{"export", vtu, "--set", "export.format=binary, ascii"}, 2, "export.format: names the case's encoding twice"},
       {{"export", vtu, "--set", "export.convert_to_meters=0"}, 2, "export.convert_to_meters: must be positive"},
       {{"export", vtu, "--set", "export.cyclic=maybe"}, 2, "export.cyclic"},
   };
