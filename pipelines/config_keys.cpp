@@ -18,6 +18,8 @@ std::vector<ConfigKey> cell_keys() {
       {"tessellation.grain_size", T, "-", "instead of grains: the mean equivalent-circle (2D) or -sphere (3D) diameter"},
       {"tessellation.seeds", T, "-", "instead of drawing them: the generator points, 'x y, x y, ...' (2D) or 'x y z, ...' (3D)",
        R"md(instead of drawing them: the generator points, `x y, x y, ...` (in the cell); `grains` may be left out or must match)md"},
+      {"tessellation.neper", T, "-", "a Neper tessellation file (.tess, format 3.4; 2D or 3D, not periodic) read instead of drawing grains",
+       R"md(A Neper tessellation (`neper -T ... -format tess`, the format 3.4 Neper 4 writes; 2D or 3D, a `square` or `cube` domain, not periodic yet) read instead of drawing the grains: its cells become the grains with their seeds, the cell is its domain (moved to the origin; `domain.width`, `.height`, `.depth` may be left out, and must match when given; `domain.periodic = false` is required), and the phases are assigned by our rules (`phase.*.fraction`, `tessellation.arrangement`, `tessellation.seed`). The keys that would draw grains (`tessellation.grains`, `.grain_size`, `.seeds`, `.lloyd_iterations`, `.size_cv`, `.min_edge`, `.phase_mode`, `.contiguity`) are refused with it. A path relative to the working directory. See docs/tessellate.md, Neper tessellations)md"},
       {"tessellation.seed", T, "1", "the only source of randomness: the same seed gives the same bytes"},
       {"tessellation.lloyd_iterations", T, "0", "centroidal (Lloyd) relaxation steps; 3 or more give no 2D corner below 30 degrees"},
       {"tessellation.size_cv", T, "0", "above 0: a Laguerre tessellation, lognormal radii of this coefficient of variation",

@@ -10,6 +10,7 @@
 #include "pipelines/config_keys.hpp"
 #include "pipelines/config_values.hpp"
 #include "pipelines/phase_checks.hpp"
+#include "tessellate/neper_import.hpp"
 #include "tessellate/tessellate.hpp"
 #include "tessellate/tessellate_3d.hpp"
 
@@ -82,23 +83,66 @@ void refuse_2d_only(const Config& c) {
     c.fail("tessellation.phase_mode", "3D cells have grain mode only so far, got '" + c.text("tessellation.phase_mode") + "'");
 }
 
+// tessellation.neper: the file read and checked against the config, its domain the cell;
+// the keys that would draw the grains refused. False when the key is not given.
+template <class Job>
+bool read_neper_input(const Config& c, Job& job, int dimensions) {
+  if (!c.has("tessellation.neper")) return false;
+  const std::filesystem::path file = c.text("tessellation.neper");
+  for (const char* key : {"tessellation.grains", "tessellation.grain_size", "tessellation.seeds",
+                          "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
+                          "tessellation.phase_mode", "tessellation.contiguity"})
+    if (c.has(key)) c.fail(key, "the grains come from tessellation.neper (" + file.string() + "): remove it");
+  int dims = 0;
+  try {
+    dims = neper_dimensions(file);
+    if (dims == dimensions) job.neper.tess = read_neper_tess(file);
+  } catch (const std::exception& e) {
+    c.fail("tessellation.neper", e.what());
+  }
+  job.neper.file = file;
+  const NeperTess& n = job.neper.tess;
+  const Vec3 size = n.domain.hi - n.domain.lo;
+  const std::string sizes = to_text(size.x) + " x " + to_text(size.y) + (dims == 3 ? " x " + to_text(size.z) : "");
+  if (dims != dimensions) {
+    const std::string fix = dims == 3 ? "set domain.depth (its domain is " + sizes + ")" : "leave domain.depth out";
+    c.fail("domain.depth", file.string() + " is a " + std::to_string(dims) + "D tessellation: " + fix);
+  }
+  auto& o = job.options;
+  const char* keys[3] = {"domain.width", "domain.height", "domain.depth"};
+  for (int a = 0; a < dimensions; ++a)
+    if (c.has(keys[a]) && std::abs(c.number(keys[a]) - size[a]) > 1e-9 * size[a])
+      c.fail(keys[a], "must be the domain of " + file.string() + ", " + sizes);
+  o.width = size.x;
+  o.height = size.y;
+  if constexpr (requires { o.depth; }) o.depth = size.z;
+  if (n.periodic) c.fail("tessellation.neper", file.string() + ": periodic Neper tessellations are not read yet");
+  if (c.flag("domain.periodic", true))
+    c.fail("domain.periodic", file.string() + " is not periodic: set domain.periodic = false");
+  o.periodic = false;
+  o.grains = n.cells();
+  return true;
+}
+
 // The keys a plane and a solid cell's job share: the box (its depth in 3D), periodicity,
 // grain count, seed, the diagram's settings, the phases, the pictures' width, time limit.
 template <class Job>
 void read_shared_keys(const Config& c, Job& job) {
   job.origin = c.origin();
   auto& o = job.options;
-  o.width = positive(c, "domain.width");
-  o.height = positive(c, "domain.height");
-  Vec3 box{o.width, o.height, 0.0};
   constexpr bool solid = requires { o.depth; };
-  if constexpr (solid) box.z = o.depth = positive(c, "domain.depth");
-  o.periodic = c.flag("domain.periodic", true);
-  const GrainCount count = read_grain_count(c, box, solid ? 3 : 2);
-  o.grains = count.grains;
-  for (const Vec3& p : count.seeds) {
-    if constexpr (solid) o.seeds.push_back(p);
-    else o.seeds.push_back({p.x, p.y});
+  if (!read_neper_input(c, job, solid ? 3 : 2)) {
+    o.width = positive(c, "domain.width");
+    o.height = positive(c, "domain.height");
+    Vec3 box{o.width, o.height, 0.0};
+    if constexpr (solid) box.z = o.depth = positive(c, "domain.depth");
+    o.periodic = c.flag("domain.periodic", true);
+    const GrainCount count = read_grain_count(c, box, solid ? 3 : 2);
+    o.grains = count.grains;
+    for (const Vec3& p : count.seeds) {
+      if constexpr (solid) o.seeds.push_back(p);
+      else o.seeds.push_back({p.x, p.y});
+    }
   }
   job.seed = c.unsigned_integer("tessellation.seed", 1);
   const DiagramSettings d = read_diagram_settings(c, o.min_edge);
@@ -148,6 +192,9 @@ TessellateJob<3> read_tessellate_job<3>(const Config& c) {
 
 Tessellation run_tessellate_job(const TessellateJob<2>& job) {
   Rng rng(job.seed);
+  if (!job.neper.file.empty())
+    return plane_tessellation(job.neper.tess, job.options.phases, job.options.arrangement, rng,
+                              job.neper.file.string());
   Tessellation t;
   try {
     t = tessellate(job.options, rng);
@@ -163,6 +210,9 @@ Tessellation run_tessellate_job(const TessellateJob<2>& job) {
 
 Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
   Rng rng(job.seed);
+  if (!job.neper.file.empty())
+    return solid_tessellation(job.neper.tess, job.options.phases, job.options.arrangement, rng,
+                              job.neper.file.string());
   Tessellation3 t;
   try {
     t = tessellate_3d(job.options, rng);

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "pipelines/config.hpp"
 #include "pipelines/phase_checks.hpp"
 #include "pipelines/report.hpp"
+#include "tessellate/neper_tess.hpp"
 #include "tessellate/tessellation.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
@@ -20,12 +22,20 @@ namespace grainmesh {
 template <int D>
 struct TessellateJob;
 
+// tessellation.neper: a Neper tessellation read instead of one drawn (the cell is its
+// domain; the phases still by our rules).
+struct NeperInput {
+  std::filesystem::path file;  // empty: none
+  NeperTess tess;
+};
+
 template <>
 struct TessellateJob<2> {
   TessellationOptions options;
   std::uint64_t seed = 1;
   int picture_width = 1200;  // pixels
   ConfigOrigin origin;       // names the key at fault in errors found while tessellating
+  NeperInput neper;
 };
 
 template <>
@@ -35,6 +45,7 @@ struct TessellateJob<3> {
   int picture_width = 1200;  // pixels
   double section = 0.5;      // the section's height, as a fraction of the depth
   ConfigOrigin origin;       // names the key at fault in errors found while tessellating
+  NeperInput neper;
 };
 
 // Reads and checks a tessellation config of a D-dimensional cell (3: domain.depth set,

@@ -301,9 +301,6 @@ std::vector<CutPolygon> grain_polygons(TorusGraph& g, const std::vector<int>& ce
 void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector<CutPolygon>& polys,
                          const std::vector<int>& grain_cell, int matrix_grain, const std::vector<int>& cells,
                          const std::vector<std::vector<int>>& neighbours, const TessellationOptions& o) {
-  const double W = o.width, H = o.height;
-  TessellationStats& st = t.stats;
-  // Grains and statistics.
   const int grains = static_cast<int>(polys.size());
   t.grains.resize(grains + (matrix_grain >= 0 ? 1 : 0));
   std::vector<int> cell_to_grain(g.rings.size(), -1);
@@ -327,6 +324,18 @@ void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector
     for (int k = 0; k < grains; ++k)
       for (int nb : neighbours[k]) t.grains[k].neighbours.push_back(cell_to_grain[cells[nb]]);
   }
+  measure_tessellation(t);
+}
+
+}  // namespace
+
+
+
+
+void measure_tessellation(Tessellation& t) {
+  TessellationStats& st = t.stats;
+  const auto grains = static_cast<int>(std::count_if(t.grains.begin(), t.grains.end(),
+                                                     [](const Grain& g) { return !g.matrix; }));
   for (const Region& r : t.regions) t.grains[r.grain].area += region_area(t, r);
   std::vector<double> areas, diameters;
   for (int k = 0; k < grains; ++k) {
@@ -341,10 +350,10 @@ void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector
   double sharpest = 2.0 * std::numbers::pi;
   for (const Region& r : t.regions) sharpest = std::min(sharpest, region_sharpest(t, r));
   st.sharpest_corner_deg = sharpest / kDegree;
-  st.phases.assign(o.phases.size(), {});
-  for (std::size_t p = 0; p < o.phases.size(); ++p) st.phases[p].target_fraction = target_fraction(o.phases, static_cast<int>(p));
+  st.phases.assign(t.phases.size(), {});
+  for (std::size_t p = 0; p < t.phases.size(); ++p) st.phases[p].target_fraction = target_fraction(t.phases, static_cast<int>(p));
   for (const Grain& gr : t.grains) {
-    st.phases[gr.phase].achieved_fraction += gr.area / (W * H);
+    st.phases[gr.phase].achieved_fraction += gr.area / (t.width * t.height);
     st.phases[gr.phase].grains += gr.matrix ? 0 : 1;
   }
   validate(t);
@@ -355,11 +364,6 @@ void finish_tessellation(Tessellation& t, const TorusGraph& g, const std::vector
     st.phases[p].mean_free_path = descriptors[p].mean_free_path;
   }
 }
-
-}  // namespace
-
-
-
 
 Tessellation tessellate(const TessellationOptions& o, Rng& rng) {
   check_options(o);

@@ -263,7 +263,9 @@ Extremes extremes(const Tessellation3& t) {
   return x;
 }
 
-void measure(Tessellation3& t) {
+}  // namespace
+
+void measure_tessellation(Tessellation3& t) {
   Tessellation3Stats& st = t.stats;
   st.grains = static_cast<int>(t.grains.size());
   std::vector<double> volumes, diameters;
@@ -303,6 +305,8 @@ void measure(Tessellation3& t) {
     s.mean_free_path = std::nan("");
   }
 }
+
+namespace {
 
 // Lloyd's relaxation of `seeds` (o.lloyd_iterations steps, each seed to its cell's
 // centroid); the moments of the diagram it leaves.
@@ -395,7 +399,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
   for (Grain3& g : t.grains) g.phase = label[g.id];
   for (Region3& r : t.regions) r.phase = t.grains[r.grain].phase;
   if (o.periodic) t.partners = box_partners(t);
-  measure(t);
+  measure_tessellation(t);
   validate(t);
   return t;
 }

@@ -12,4 +12,9 @@ namespace grainmesh {
 // cannot be met, TimeLimitError when the deadline passes, GeometryError otherwise.
 Tessellation3 tessellate_3d(const Tessellation3Options& options, Rng& rng);
 
+// The statistics of a tessellation whose grains (phases, volumes, faces, neighbours) and
+// regions are set: sizes, shortest edge, smallest face, sharpest dihedral, the phases'
+// fractions and contiguity. Shared by the tessellations read from files (neper_import).
+void measure_tessellation(Tessellation3& t);
+
 }  // namespace grainmesh

@@ -1,0 +1,209 @@
+#include "tessellate/neper_tess.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "common/text_file.hpp"
+
+namespace grainmesh {
+
+namespace {
+
+// The file's words in order, with what went wrong named after the file.
+class Words {
+ public:
+  Words(std::string text, std::filesystem::path file) : text_(std::move(text)), file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw GeometryError(file_.string() + ": " + what); }
+  // The next word ("" at the end).
+  std::string next() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+    const std::size_t start = at_;
+    while (at_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+    return text_.substr(start, at_ - start);
+  }
+  std::string peek() {
+    const std::size_t keep = at_;
+    std::string w = next();
+    at_ = keep;
+    return w;
+  }
+  void expect(const std::string& word, const std::string& where) {
+    const std::string w = next();
+    if (w != word) fail("expected " + word + " " + where + ", found '" + w + "'");
+  }
+  double number(const std::string& what) {
+    const std::string w = next();
+    char* end = nullptr;
+    const double v = std::strtod(w.c_str(), &end);
+    if (w.empty() || *end != '\0') fail("expected a number (" + what + "), found '" + w + "'");
+    return v;
+  }
+  int integer(const std::string& what, long lo = std::numeric_limits<int>::min(),
+              long hi = std::numeric_limits<int>::max()) {
+    const std::string w = next();
+    char* end = nullptr;
+    const long v = std::strtol(w.c_str(), &end, 10);
+    if (w.empty() || *end != '\0') fail("expected an integer (" + what + "), found '" + w + "'");
+    if (v < lo || v > hi)
+      fail(what + " " + w + " out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(v);
+  }
+  // Skips words up to the next that starts with `mark` ("*": any section, "**": a field).
+  void skip_to(const std::string& mark) {
+    while (!peek().empty() && peek().rfind(mark, 0) != 0) next();
+  }
+
+ private:
+  std::string text_;
+  std::filesystem::path file_;
+  std::size_t at_ = 0;
+};
+
+Vec3 point(Words& w, const std::string& what) {
+  Vec3 p;
+  p.x = w.number(what + " x");
+  p.y = w.number(what + " y");
+  p.z = w.number(what + " z");
+  return p;
+}
+
+// ***tess, **format 3.4, **general DIM standard: the dimension.
+int read_header(Words& w) {
+  if (w.next() != "***tess") w.fail("not a Neper tessellation (it does not start with ***tess)");
+  w.expect("**format", "after ***tess");
+  const std::string format = w.next();
+  if (format != kNeperFormat)
+    w.fail("format " + format + " is not read (grainmesh reads the format Neper 4 writes, " + kNeperFormat + ")");
+  w.expect("**general", "after the format");
+  const int dim = w.integer("dimension");
+  if (dim != 2 && dim != 3) w.fail("a " + std::to_string(dim) + "D tessellation: grainmesh reads 2D and 3D ones");
+  const std::string type = w.next();
+  if (type != "standard") w.fail("a tessellation of type '" + type + "' (grainmesh reads standard ones)");
+  return dim;
+}
+
+// Each entry's id must be its rank + 1.
+void check_id(Words& w, int id, int k, const std::string& what) {
+  if (id != k + 1) w.fail(what + " " + std::to_string(k + 1) + " has id " + std::to_string(id));
+}
+
+void read_cells(Words& w, NeperTess& t) {
+  const int n = w.integer("the number of cells", 1);
+  t.seeds.assign(n, Vec3{});
+  bool seeds = false;
+  for (std::string s = w.peek(); s.rfind("*", 0) == 0 && s.rfind("**", 0) != 0; s = w.peek()) {
+    w.next();
+    if (s != "*seed") {
+      w.skip_to("*");  // *id, *ori, *crysym, ...: not needed
+      continue;
+    }
+    for (int k = 0; k < n; ++k) {
+      check_id(w, w.integer("seed id"), k, "seed");
+      t.seeds[k] = point(w, "seed");
+      w.number("seed weight");
+    }
+    seeds = true;
+  }
+  if (!seeds) w.fail("**cell has no *seed");
+}
+
+void read_field(Words& w, NeperTess& t, const std::string& field) {
+  const auto count = [&](const std::string& what) { return w.integer("the number of " + what, 0); };
+  if (field == "**vertex") {
+    const int n = count("vertices");
+    for (int k = 0; k < n; ++k) {
+      check_id(w, w.integer("vertex id"), k, "vertex");
+      t.vertices.push_back(point(w, "vertex"));
+      w.integer("vertex state");
+    }
+  } else if (field == "**edge") {
+    const int n = count("edges");
+    for (int k = 0; k < n * 4; ++k) w.integer("an edge's entry");  // id v1 v2 state: the faces give the rings
+  } else if (field == "**face") {
+    const int n = count("faces"), vertices = static_cast<int>(t.vertices.size());
+    for (int k = 0; k < n; ++k) {
+      check_id(w, w.integer("face id"), k, "face");
+      std::vector<int> ring(w.integer("a face's vertex count", 3, vertices));
+      for (int& v : ring) v = w.integer("a face's vertex", 1, vertices) - 1;
+      const int edges = w.integer("a face's edge count", 3);
+      for (int e = 0; e < edges; ++e) w.integer("a face's edge");
+      for (int e = 0; e < 4; ++e) w.number("a face's equation");
+      w.integer("face state");
+      w.integer("face point");
+      point(w, "face point");
+      t.faces.push_back(std::move(ring));
+    }
+  } else if (field == "**polyhedron") {
+    const int n = count("polyhedra"), faces = static_cast<int>(t.faces.size());
+    for (int k = 0; k < n; ++k) {
+      check_id(w, w.integer("polyhedron id"), k, "polyhedron");
+      std::vector<int> list(w.integer("a polyhedron's face count", 4, faces));
+      for (int& f : list) {
+        f = w.integer("a polyhedron's face", -faces, faces);
+        if (f == 0) w.fail("a polyhedron's face 0");
+      }
+      t.polyhedra.push_back(std::move(list));
+    }
+  } else if (field == "**domain") {
+    w.expect("*general", "after **domain");
+    t.domain_type = w.next();
+    w.expect("*vertex", "after the domain's type");
+    const int n = count("domain vertices");
+    t.domain = Box3{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+    for (int k = 0; k < n; ++k) {
+      check_id(w, w.integer("domain vertex id"), k, "domain vertex");
+      const Vec3 p = point(w, "domain vertex");
+      for (int a = 0; a < 3; ++a) {
+        t.domain.lo[a] = std::min(t.domain.lo[a], p[a]);
+        t.domain.hi[a] = std::max(t.domain.hi[a], p[a]);
+      }
+      w.next();  // label
+      const int m = w.integer("a domain vertex's tessellation vertices", 0);
+      for (int j = 0; j < m; ++j) w.integer("a domain vertex's tessellation vertex");
+    }
+    w.skip_to("**");  // *edge, *face
+  } else if (field == "**periodicity" || field == "**periodic") {
+    t.periodic = true;
+    w.skip_to("**");
+  } else {
+    w.skip_to("**");  // **scale, ...
+  }
+}
+
+NeperTess parse(Words& w) {
+  NeperTess t;
+  t.dimensions = read_header(w);
+  w.expect("**cell", "after **general");
+  read_cells(w, t);
+  for (std::string field = w.next(); field != "***end"; field = w.next()) {
+    if (field.empty()) w.fail("ends before ***end");
+    if (field.rfind("**", 0) != 0) w.fail("expected a field (**NAME), found '" + field + "'");
+    read_field(w, t, field);
+  }
+  if (t.vertices.empty() || t.faces.empty()) w.fail("has no **vertex or no **face");
+  if (t.domain_type.empty()) w.fail("has no **domain");
+  const std::size_t cells = t.dimensions == 2 ? t.faces.size() : t.polyhedra.size();
+  if (cells != t.seeds.size())
+    w.fail(std::to_string(t.seeds.size()) + " cells but " + std::to_string(cells) +
+           (t.dimensions == 2 ? " faces" : " polyhedra"));
+  return t;
+}
+
+}  // namespace
+
+NeperTess read_neper_tess(const std::filesystem::path& file) {
+  Words w(read_text_file(file, "Neper tessellation"), file);
+  return parse(w);
+}
+
+int neper_dimensions(const std::filesystem::path& file) {
+  Words w(read_text_file(file, "Neper tessellation"), file);
+  return read_header(w);
+}
+
+}  // namespace grainmesh
