@@ -105,7 +105,7 @@ void check_sides(const gm::ElementMesh& m, std::size_t facets_per_side) {
 
 }  // namespace
 
-TEST_CASE("A plane cell's side facets lie on their side and face out; each high-side point is tied once to its root",
+TEST_CASE("A plane cell's side facets lie on their side and face out and each high-side point is tied once to its root",
           "[export][element_mesh]") {
   const gm::ElementMesh m = square();
   CHECK(m.elements.size() == 8);
@@ -127,7 +127,7 @@ TEST_CASE("A plane cell's side facets lie on their side and face out; each high-
   CHECK(gm::grains_of(m) == std::vector<int>{0, 1});
 }
 
-TEST_CASE("A solid cell's side facets face out; its high corner, edges and faces are tied straight to the low corner",
+TEST_CASE("A solid cell's side facets face out and its high corner, edges and faces go straight to its low corner",
           "[export][element_mesh]") {
   const gm::ElementMesh m = cube();
   check_sides(m, 2);
