@@ -93,15 +93,14 @@ bool read_neper_input(const Config& c, Job& job, int dimensions) {
                           "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
                           "tessellation.phase_mode", "tessellation.contiguity"})
     if (c.has(key)) c.fail(key, "the grains come from tessellation.neper (" + file.string() + "): remove it");
-  int dims = 0;
   try {
-    dims = neper_dimensions(file);
-    if (dims == dimensions) job.neper.tess = read_neper_tess(file);
+    job.neper.tess = read_neper_tess(file);
   } catch (const std::exception& e) {
     c.fail("tessellation.neper", e.what());
   }
   job.neper.file = file;
   const NeperTess& n = job.neper.tess;
+  const int dims = n.dimensions;
   const Vec3 size = n.domain.hi - n.domain.lo;
   const std::string sizes = to_text(size.x) + " x " + to_text(size.y) + (dims == 3 ? " x " + to_text(size.z) : "");
   if (dims != dimensions) {

@@ -68,7 +68,10 @@ Tessellation plane_tessellation(const NeperTess& n, const std::vector<Phase>& ph
   for (int c = 0; c < n.cells(); ++c) {
     std::vector<int> ring = n.faces[c];
     std::vector<Vec2> pts;
-    for (int v : ring) pts.push_back({in_cell(n, n.vertices[v]).x, in_cell(n, n.vertices[v]).y});
+    for (int v : ring) {
+      const Vec3 p = in_cell(n, n.vertices[v]);
+      pts.push_back({p.x, p.y});
+    }
     if (polygon_area(pts) < 0.0) {
       std::reverse(ring.begin(), ring.end());
       std::reverse(pts.begin(), pts.end());

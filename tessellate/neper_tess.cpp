@@ -201,9 +201,4 @@ NeperTess read_neper_tess(const std::filesystem::path& file) {
   return parse(w);
 }
 
-int neper_dimensions(const std::filesystem::path& file) {
-  Words w(read_text_file(file, "Neper tessellation"), file);
-  return read_header(w);
-}
-
 }  // namespace grainmesh

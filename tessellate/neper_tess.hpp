@@ -31,7 +31,4 @@ inline constexpr const char* kNeperFormat = "3.4";
 // when it is not a Neper tessellation of format 3.4 or its parts do not fit together.
 NeperTess read_neper_tess(const std::filesystem::path& file);
 
-// Only the dimension from the header (**general) of `file`; same errors.
-int neper_dimensions(const std::filesystem::path& file);
-
 }  // namespace grainmesh

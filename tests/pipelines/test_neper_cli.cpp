@@ -111,7 +111,7 @@ TEST_CASE("bad Neper input is refused in one line naming the file or key, nothin
       {{"run", config("width.ini", dir / "good.tess", "periodic = false\nwidth = 3")}, 2, "domain.width: must be the domain of"},
       {{"run", config("grains.ini", dir / "good.tess", "periodic = false", "[tessellation]\ngrains = 5\n")}, 2,
        "tessellation.grains: the grains come from tessellation.neper"},
-      {{"run", config("solid.ini", dir / "solid.tess", "periodic = false")}, 2, "is a 3D tessellation: set domain.depth"},
+      {{"run", config("solid.ini", dir / "solid.tess", "periodic = false")}, 2, "is a 3D tessellation: set domain.depth (its domain is 1 x 1 x 1)"},
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
 }

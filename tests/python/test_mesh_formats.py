@@ -3,6 +3,7 @@ back by meshio (an independent reader) with the same cells, grains, phases and s
 mesh.vtu, accepted by `gmsh -check`, and each periodic pair written exactly once: in the
 MSH's $Periodic links and as the INP's *Equations (each high-side point tied once)."""
 
+import configparser
 import os
 import re
 import shutil
@@ -168,8 +169,14 @@ def test_inp_has_the_cells_sets_materials_and_ties_each_periodic_point_once(run)
     for s, name in enumerate(SIDES[:2 * dim]):
         assert set(inp.point_sets[name.upper()]) == sides[s], name
     text = open(out / "mesh.inp").read()
+    # Each phase's material carries the config's E and nu (config.ini as the run resolved it).
+    config = configparser.ConfigParser(inline_comment_prefixes=("#",))
+    config.read(out / "config.ini")
     for p in phase_names:
-        assert f"*Material, name={p}\n*Elastic\n" in text
+        elastic = re.search(rf"\*Material, name={p}\n\*Elastic\n([^\n]*)\n", text)
+        assert elastic, p
+        E, nu = (float(v) for v in elastic.group(1).split(","))
+        assert (E, nu) == (float(config[f"phase.{p}"]["E"]), float(config[f"phase.{p}"]["nu"]))
     assert ("*Element, type=CPE3" if dim == 2 else "*Element, type=C3D4") in text
     # The equations: u(point) - u(root) - u(RP of each axis crossed) = 0, per direction.
     reference_node = {axis: int(inp.point_sets["RP_" + "XYZ"[axis]][0]) + 1 for axis in range(dim)}
