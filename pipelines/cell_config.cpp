@@ -147,4 +147,12 @@ std::vector<Phase> read_phases(const Config& c) {
   return phases;
 }
 
+// The keys that would draw the grains, refused when they come from a file.
+void refuse_drawing_keys(const Config& c, const std::string& from) {
+  for (const char* key : {"tessellation.grains", "tessellation.grain_size", "tessellation.seeds",
+                          "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
+                          "tessellation.phase_mode", "tessellation.contiguity"})
+    if (c.has(key)) c.fail(key, "the grains come from " + from + ": remove it");
+}
+
 }  // namespace grainmesh

@@ -2,6 +2,7 @@
 // the phases. Each throws ConfigError naming the key at fault.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -30,5 +31,8 @@ struct GrainCount {
 GrainCount read_grain_count(const Config& c, Vec3 box, int dimensions);
 // The [phase.NAME] sections: fractions (one may be rest), E, nu, alpha.
 std::vector<Phase> read_phases(const Config& c);
+// The keys that would draw grains (tessellation.grains, .seeds, ...) refused, when the
+// grains come `from` a file.
+void refuse_drawing_keys(const Config& c, const std::string& from);
 
 }  // namespace grainmesh

@@ -89,10 +89,7 @@ template <class Job>
 bool read_neper_input(const Config& c, Job& job, int dimensions) {
   if (!c.has("tessellation.neper")) return false;
   const std::filesystem::path file = c.text("tessellation.neper");
-  for (const char* key : {"tessellation.grains", "tessellation.grain_size", "tessellation.seeds",
-                          "tessellation.lloyd_iterations", "tessellation.size_cv", "tessellation.min_edge",
-                          "tessellation.phase_mode", "tessellation.contiguity"})
-    if (c.has(key)) c.fail(key, "the grains come from tessellation.neper (" + file.string() + "): remove it");
+  refuse_drawing_keys(c, "tessellation.neper (" + file.string() + ")");
   try {
     job.neper.tess = read_neper_tess(file);
   } catch (const std::exception& e) {
@@ -130,7 +127,13 @@ void read_shared_keys(const Config& c, Job& job) {
   job.origin = c.origin();
   auto& o = job.options;
   constexpr bool solid = requires { o.depth; };
-  if (!read_neper_input(c, job, solid ? 3 : 2)) {
+  bool from_image = false;
+  if constexpr (solid) {
+    if (c.has("tessellation.image")) c.fail("tessellation.image", "label images make 2D cells: leave domain.depth out");
+  } else {
+    from_image = read_image_input(c, job.image, o);
+  }
+  if (!from_image && !read_neper_input(c, job, solid ? 3 : 2)) {
     o.width = positive(c, "domain.width");
     o.height = positive(c, "domain.height");
     Vec3 box{o.width, o.height, 0.0};
@@ -174,6 +177,12 @@ TessellateJob<2> read_tessellate_job<2>(const Config& c) {
   else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
   read_matrix_phase(c, o);
   read_contiguity(c, o);
+  if (!job.image.file.empty()) {
+    job.image.options.phases = o.phases;
+    job.image.options.arrangement = o.arrangement;
+    if (c.has("tessellation.image_phases"))
+      job.image.options.label_phases = read_label_phases(c, o.phases, job.image.image.colour);
+  }
   return job;
 }
 
@@ -194,6 +203,16 @@ Tessellation run_tessellate_job(const TessellateJob<2>& job) {
   if (!job.neper.file.empty())
     return plane_tessellation(job.neper.tess, job.options.phases, job.options.arrangement, rng,
                               job.neper.file.string());
+  if (!job.image.file.empty()) {
+    try {
+      return image_tessellation(job.image.image, job.image.options, rng, job.image.file.string());
+    } catch (const SmallGrainsError& e) {
+      job.origin.fail("tessellation.image_min_grain",
+                      std::string(e.what()) + "; merge them (tessellation.image_small_grains = merge) or lower it");
+    } catch (const UnnamedLabelError& e) {
+      job.origin.fail("tessellation.image_phases", e.what());
+    }
+  }
   Tessellation t;
   try {
     t = tessellate(job.options, rng);
@@ -227,6 +246,7 @@ Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
 
 void check_phases(const Tessellation& t, const TessellateJob<2>& job, Warnings& warnings) {
   check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin, job.options.matrix_phase);
+  if (!job.image.options.label_phases.empty()) return;  // the image's own fractions, not targets
   for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pipelines/config.hpp"
+#include "pipelines/image_input.hpp"
 #include "pipelines/phase_checks.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/neper_tess.hpp"
@@ -36,6 +37,7 @@ struct TessellateJob<2> {
   int picture_width = 1200;  // pixels
   ConfigOrigin origin;       // names the key at fault in errors found while tessellating
   NeperInput neper;
+  ImageInput image;
 };
 
 template <>
