@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
   o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.15, false, 211e9, 0.31, {}}};
   Rng rng(1);
   write_label_image(dir / "grains.png", draw_label_image(tessellate(o, rng), 2000));
-  std::ofstream(dir / "image.ini") << "[domain]\nperiodic = true\n[tessellation]\nimage = " << (dir / "grains.png").string()
+  std::ofstream(dir / "image.ini") << "[domain]\nperiodic = true\n[tessellation]\nimage = "
+                                   << (dir / "grains.png").string()
                                    << "\nimage_pixel_size = 0.0005\nimage_small_grains = merge\n"
                                       "[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.24\n"
                                       "[phase.Co]\nfraction = 0.15\nE = 211e9\nnu = 0.31\n[output]\npictures = none\n";

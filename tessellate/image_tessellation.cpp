@@ -128,14 +128,20 @@ struct Lattice {
   int nx, ny;
   const std::vector<int>& piece;  // per pixel
 
-  int at(int i, int j) const { return i < 0 || j < 0 || i >= nx || j >= ny ? -1 : piece[static_cast<std::size_t>(j) * nx + i]; }
+  int at(int i, int j) const {
+    return i < 0 || j < 0 || i >= nx || j >= ny ? -1 : piece[static_cast<std::size_t>(j) * nx + i];
+  }
   // The pieces left and right of the edge leaving (i, j) in direction d.
   std::pair<int, int> sides(int i, int j, int d) const {
     switch (d) {
-      case kE: return {at(i, j), at(i, j - 1)};
-      case kN: return {at(i - 1, j), at(i, j)};
-      case kW: return {at(i - 1, j - 1), at(i - 1, j)};
-      default: return {at(i, j - 1), at(i - 1, j - 1)};
+      case kE:
+        return {at(i, j), at(i, j - 1)};
+      case kN:
+        return {at(i - 1, j), at(i, j)};
+      case kW:
+        return {at(i - 1, j - 1), at(i - 1, j)};
+      default:
+        return {at(i, j - 1), at(i - 1, j - 1)};
     }
   }
   bool boundary(int i, int j, int d) const {
@@ -170,10 +176,14 @@ struct Lattice {
   std::size_t edge(int i, int j, int d) const {
     const std::size_t horizontal = static_cast<std::size_t>(nx) * (ny + 1);
     switch (d) {
-      case kE: return static_cast<std::size_t>(j) * nx + i;
-      case kW: return static_cast<std::size_t>(j) * nx + i - 1;
-      case kN: return horizontal + static_cast<std::size_t>(j) * (nx + 1) + i;
-      default: return horizontal + static_cast<std::size_t>(j - 1) * (nx + 1) + i;
+      case kE:
+        return static_cast<std::size_t>(j) * nx + i;
+      case kW:
+        return static_cast<std::size_t>(j) * nx + i - 1;
+      case kN:
+        return horizontal + static_cast<std::size_t>(j) * (nx + 1) + i;
+      default:
+        return horizontal + static_cast<std::size_t>(j - 1) * (nx + 1) + i;
     }
   }
   std::size_t edges() const { return static_cast<std::size_t>(nx) * (ny + 1) + static_cast<std::size_t>(nx + 1) * ny; }
@@ -182,11 +192,11 @@ struct Lattice {
 
 // A boundary between two junctions (or a closed one), as traced and as kept.
 struct Chain {
-  std::vector<Vec2> points;  // pixel units, from the first junction to the last
+  std::vector<Vec2> points;       // pixel units, from the first junction to the last
   long long first = 0, last = 0;  // lattice vertices of its ends (equal when closed)
   int left = -1, right = -1;      // pieces
   double tolerance = 0.0;
-  std::vector<int> kept;          // indices into points, ascending, ends included
+  std::vector<int> kept;  // indices into points, ascending, ends included
 };
 
 std::vector<Chain> trace(const Lattice& L) {
@@ -314,14 +324,16 @@ bool mark_conflicts(const std::vector<Chain>& chains, int nx, int ny, std::vecto
   };
   std::vector<Segment> segs;
   for (int c = 0; c < static_cast<int>(chains.size()); ++c)
-    for (std::size_t k = 0; k + 1 < chains[c].kept.size(); ++k) segs.push_back({c, chains[c].kept[k], chains[c].kept[k + 1]});
+    for (std::size_t k = 0; k + 1 < chains[c].kept.size(); ++k)
+      segs.push_back({c, chains[c].kept[k], chains[c].kept[k + 1]});
   auto end_a = [&](const Segment& s) { return chains[s.chain].points[s.a]; };
   auto end_b = [&](const Segment& s) { return chains[s.chain].points[s.b]; };
   GridFrame frame{.lo = {-1.0, -1.0}, .cell = 16.0, .nx = nx / 16 + 2, .ny = ny / 16 + 2};
   auto cells = [&](std::size_t k, auto emit) {
     const Vec2 p = end_a(segs[k]), q = end_b(segs[k]);
     for (int y = frame.row(std::min(p.y, q.y)); y <= frame.row(std::max(p.y, q.y)); ++y)
-      for (int x = frame.column(std::min(p.x, q.x)); x <= frame.column(std::max(p.x, q.x)); ++x) emit(frame.index(x, y));
+      for (int x = frame.column(std::min(p.x, q.x)); x <= frame.column(std::max(p.x, q.x)); ++x)
+        emit(frame.index(x, y));
   };
   const CellLists lists(frame.cells(), segs.size(), cells);
   bool any = false;
@@ -366,7 +378,8 @@ void simplify_chains(std::vector<Chain>& chains, double tolerance, int nx, int n
   }
   std::vector<char> bad(chains.size(), 0);
   for (int round = 0; mark_conflicts(chains, nx, ny, bad); ++round) {
-    if (round > 40) throw GeometryError("the traced boundaries could not be simplified without crossing (a grainmesh bug)");
+    if (round > 40)
+      throw GeometryError("the traced boundaries could not be simplified without crossing (a grainmesh bug)");
     for (std::size_t c = 0; c < chains.size(); ++c)
       if (bad[c]) {
         chains[c].tolerance = chains[c].tolerance < 0.05 ? 0.0 : 0.5 * chains[c].tolerance;
@@ -394,8 +407,9 @@ std::vector<int> phases_from_table(const std::vector<std::uint32_t>& label, cons
   if (!missing.empty()) {
     const auto& [first, count] = *missing.begin();
     const std::string name = colour ? "colour " + label_text(first, true) : "label " + std::to_string(first);
-    throw UnnamedLabelError(source + ": " + name + " (" + std::to_string(count) + " pixels) has no phase in the table" +
-                        (missing.size() > 1 ? " (nor " + std::to_string(missing.size() - 1) + " other labels)" : ""));
+    throw UnnamedLabelError(
+        source + ": " + name + " (" + std::to_string(count) + " pixels) has no phase in the table" +
+        (missing.size() > 1 ? " (nor " + std::to_string(missing.size() - 1) + " other labels)" : ""));
   }
   return phase;
 }
@@ -425,14 +439,17 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
   const long long smallest = *std::min_element(pixels.begin(), pixels.end());
   if (smallest < o.min_grain_pixels && grains > 1) {
     if (!o.merge_small) {
-      const auto small = std::count_if(pixels.begin(), pixels.end(), [&](long long n) { return n < o.min_grain_pixels; });
-      const std::size_t p = std::find(grain.begin(), grain.end(),
-                                      std::min_element(pixels.begin(), pixels.end()) - pixels.begin()) - grain.begin();
-      throw SmallGrainsError(source + ": " + std::to_string(small) + " grain" + (small > 1 ? "s" : "") + " of fewer than " +
-                             std::to_string(o.min_grain_pixels) + " pixels (the smallest " + std::to_string(smallest) +
-                             (smallest > 1 ? " pixels" : " pixel") + " of " + (image.colour ? "colour " : "label ") +
-                             label_text(image.labels[p], image.colour) + " at pixel (" + std::to_string(p % px.nx) +
-                             ", " + std::to_string(p / px.nx) + ") from the bottom left)");
+      const auto small =
+          std::count_if(pixels.begin(), pixels.end(), [&](long long n) { return n < o.min_grain_pixels; });
+      const std::size_t p =
+          std::find(grain.begin(), grain.end(), std::min_element(pixels.begin(), pixels.end()) - pixels.begin()) -
+          grain.begin();
+      throw SmallGrainsError(source + ": " + std::to_string(small) + " grain" + (small > 1 ? "s" : "") +
+                             " of fewer than " + std::to_string(o.min_grain_pixels) + " pixels (the smallest " +
+                             std::to_string(smallest) + (smallest > 1 ? " pixels" : " pixel") + " of " +
+                             (image.colour ? "colour " : "label ") + label_text(image.labels[p], image.colour) +
+                             " at pixel (" + std::to_string(p % px.nx) + ", " + std::to_string(p / px.nx) +
+                             ") from the bottom left)");
     }
     std::vector<int> kept;
     merged = merge_small_grains(grain, grains, px, o.min_grain_pixels, kept);
@@ -490,10 +507,14 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     std::sort(at.begin(), at.end());
     return at;
   };
-  const auto bottom = crossings(nx, [&](int i) { return lattice.boundary(i, 0, kN); }, [&](int i) { return lattice.boundary(i, ny, kS); });
-  const auto top = crossings(nx, [&](int i) { return lattice.boundary(i, ny, kS); }, [&](int i) { return lattice.boundary(i, 0, kN); });
-  const auto left = crossings(ny, [&](int j) { return lattice.boundary(0, j, kE); }, [&](int j) { return lattice.boundary(nx, j, kW); });
-  const auto right = crossings(ny, [&](int j) { return lattice.boundary(nx, j, kW); }, [&](int j) { return lattice.boundary(0, j, kE); });
+  const auto bottom = crossings(
+      nx, [&](int i) { return lattice.boundary(i, 0, kN); }, [&](int i) { return lattice.boundary(i, ny, kS); });
+  const auto top = crossings(
+      nx, [&](int i) { return lattice.boundary(i, ny, kS); }, [&](int i) { return lattice.boundary(i, 0, kN); });
+  const auto left = crossings(
+      ny, [&](int j) { return lattice.boundary(0, j, kE); }, [&](int j) { return lattice.boundary(nx, j, kW); });
+  const auto right = crossings(
+      ny, [&](int j) { return lattice.boundary(nx, j, kW); }, [&](int j) { return lattice.boundary(0, j, kE); });
   for (std::size_t k = 0; k + 1 < bottom.size(); ++k)
     t.edges.push_back({corner(bottom[k], 0), corner(bottom[k + 1], 0), lattice.at(bottom[k], 0), -1});
   for (std::size_t k = 0; k + 1 < top.size(); ++k)
@@ -521,7 +542,8 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
         v = w;
       }
       if (polygon_area(ring_points(t.vertices, ring)) > 0.0) {
-        if (!t.regions[r].rings.empty()) throw GeometryError(source + ": a piece with two outer boundaries (a grainmesh bug)");
+        if (!t.regions[r].rings.empty())
+          throw GeometryError(source + ": a piece with two outer boundaries (a grainmesh bug)");
         t.regions[r].rings.push_back(std::move(ring));
       } else {
         std::reverse(ring.begin(), ring.end());
@@ -568,8 +590,8 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     phase = assign_phases(areas, neighbours, o.phases, all, t.width * t.height, o.arrangement, rng);
   }
   for (int g = 0; g < grains; ++g)
-    t.grains.push_back(Grain{.id = g, .phase = phase[g], .seed = seed[g], .area = 0.0,
-                             .neighbours = neighbours[g], .matrix = false});
+    t.grains.push_back(
+        Grain{.id = g, .phase = phase[g], .seed = seed[g], .area = 0.0, .neighbours = neighbours[g], .matrix = false});
   double corners = 0.0;
   for (int r = 0; r < pieces; ++r) {
     t.regions[r].grain = grain_of[r];

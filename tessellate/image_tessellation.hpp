@@ -26,11 +26,11 @@ struct LabelPhase {
 };
 
 struct ImageTessellationOptions {
-  double pixel_size = 1.0;      // the length of a pixel's side, the caller's unit
-  double tolerance = 1.0;       // how far (pixels) a simplified boundary may leave the traced one
-  int min_grain_pixels = 4;     // grains of fewer pixels are merged or refused
-  bool merge_small = false;     // merge them (else refuse the image)
-  bool periodic = false;        // the image wraps round: its opposite borders touch
+  double pixel_size = 1.0;   // the length of a pixel's side, the caller's unit
+  double tolerance = 1.0;    // how far (pixels) a simplified boundary may leave the traced one
+  int min_grain_pixels = 4;  // grains of fewer pixels are merged or refused
+  bool merge_small = false;  // merge them (else refuse the image)
+  bool periodic = false;     // the image wraps round: its opposite borders touch
   std::vector<Phase> phases;
   std::vector<LabelPhase> label_phases;  // empty: phases by our rules (fractions, arrangement)
   Arrangement arrangement = Arrangement::random;

@@ -9,10 +9,10 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
 #include <vtkTIFFReader.h>
 #include <vtkTIFFWriter.h>
 #include <vtkUnsignedShortArray.h>
-#include <vtkPointData.h>
 
 #include "common/errors.hpp"
 #include "common/ring.hpp"
@@ -45,8 +45,10 @@ LabelImage read_label_image(const std::filesystem::path& file) {
   vtkNew<vtkPNGReader> png;
   vtkNew<vtkTIFFReader> tiff;
   vtkImageReader2* reader = nullptr;
-  if (png->CanReadFile(name.c_str()) > 0) reader = png;
-  else if (lower_extension(file).starts_with(".tif") && tiff->CanReadFile(name.c_str()) > 0) reader = tiff;
+  if (png->CanReadFile(name.c_str()) > 0)
+    reader = png;
+  else if (lower_extension(file).starts_with(".tif") && tiff->CanReadFile(name.c_str()) > 0)
+    reader = tiff;
   if (reader == nullptr) throw GeometryError(name + ": not a PNG or TIFF image");
   reader->SetFileName(name.c_str());
   reader->Update();
@@ -70,7 +72,9 @@ LabelImage read_label_image(const std::filesystem::path& file) {
   vtkDataArray* scalars = data->GetPointData()->GetScalars();
   const bool wide = type == VTK_UNSIGNED_SHORT;
   for (std::size_t p = 0; p < image.labels.size(); ++p) {
-    auto channel = [&](int c) { return static_cast<std::uint32_t>(scalars->GetComponent(static_cast<vtkIdType>(p), c)); };
+    auto channel = [&](int c) {
+      return static_cast<std::uint32_t>(scalars->GetComponent(static_cast<vtkIdType>(p), c));
+    };
     if (!image.colour) {
       image.labels[p] = channel(0);
     } else {
@@ -95,7 +99,8 @@ void write_label_image(const std::filesystem::path& file, const LabelImage& imag
   vtkNew<vtkUnsignedShortArray> values;
   values->SetNumberOfTuples(static_cast<vtkIdType>(image.labels.size()));
   for (std::size_t p = 0; p < image.labels.size(); ++p) {
-    if (image.labels[p] > 65535) throw GeometryError(name + ": label " + std::to_string(image.labels[p]) + " over 16 bits");
+    if (image.labels[p] > 65535)
+      throw GeometryError(name + ": label " + std::to_string(image.labels[p]) + " over 16 bits");
     values->SetValue(static_cast<vtkIdType>(p), static_cast<unsigned short>(image.labels[p]));
   }
   data->GetPointData()->SetScalars(values);
@@ -131,15 +136,19 @@ LabelImage draw_label_image(const Tessellation& t, int width) {
     std::vector<std::vector<Vec2>> rings;
     for (const auto& ring : r.rings) rings.push_back(ring_points(t.vertices, ring));
     Vec2 lo = rings[0][0], hi = rings[0][0];
-    for (const Vec2& p : rings[0]) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    const int i0 = std::max(0, static_cast<int>(std::floor(lo.x / h - 0.5))), i1 = std::min(image.width - 1, static_cast<int>(hi.x / h));
-    const int j0 = std::max(0, static_cast<int>(std::floor(lo.y / h - 0.5))), j1 = std::min(image.height - 1, static_cast<int>(hi.y / h));
+    for (const Vec2& p : rings[0])
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    const int i0 = std::max(0, static_cast<int>(std::floor(lo.x / h - 0.5))),
+              i1 = std::min(image.width - 1, static_cast<int>(hi.x / h));
+    const int j0 = std::max(0, static_cast<int>(std::floor(lo.y / h - 0.5))),
+              j1 = std::min(image.height - 1, static_cast<int>(hi.y / h));
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
         const Vec2 centre{(i + 0.5) * h, (j + 0.5) * h};
         bool inside = inside_ring(rings[0], centre);
         for (std::size_t q = 1; inside && q < rings.size(); ++q) inside = !inside_ring(rings[q], centre);
-        if (inside) image.labels[static_cast<std::size_t>(j) * image.width + i] = static_cast<std::uint32_t>(r.grain + 1);
+        if (inside)
+          image.labels[static_cast<std::size_t>(j) * image.width + i] = static_cast<std::uint32_t>(r.grain + 1);
       }
   }
   return image;

@@ -13,9 +13,9 @@
 namespace grainmesh {
 
 struct LabelImage {
-  int width = 0;   // pixels along x
-  int height = 0;  // pixels along y
-  bool colour = false;  // labels are 0xRRGGBB colours (an RGB or RGBA file); else grey values
+  int width = 0;                      // pixels along x
+  int height = 0;                     // pixels along y
+  bool colour = false;                // labels are 0xRRGGBB colours (an RGB or RGBA file); else grey values
   std::vector<std::uint32_t> labels;  // width x height, row by row from the bottom
   std::uint32_t at(int i, int j) const { return labels[static_cast<std::size_t>(j) * width + i]; }
 };

@@ -23,7 +23,9 @@ namespace {
 // `sections`.
 void write_config(const fs::path& file, const fs::path& image, const std::string& domain, const std::string& more,
                   const std::string& sections = "") {
-  std::ofstream(file) << "[domain]\n" << domain << "\n[tessellation]\nimage = " << image.string() << "\n" << more
+  std::ofstream(file) << "[domain]\n"
+                      << domain << "\n[tessellation]\nimage = " << image.string() << "\n"
+                      << more
                       << "\n[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.2\n[phase.Co]\nfraction = 0.3\n"
                          "E = 200e9\nnu = 0.3\n[output]\npictures = none\n[export]\nconvert_to_meters = 1e-6\n"
                       << sections;
@@ -37,8 +39,8 @@ LabelImage drawn(bool periodic, int grains) {
   o.periodic = periodic;
   o.grains = grains;
   o.lloyd_iterations = 3;
-  o.phases = {Phase{.name = "WC", .fraction = 1.0, .rest = false, .youngs_modulus = 700e9, .poisson_ratio = 0.2,
-                    .alpha = {}}};
+  o.phases = {
+      Phase{.name = "WC", .fraction = 1.0, .rest = false, .youngs_modulus = 700e9, .poisson_ratio = 0.2, .alpha = {}}};
   Rng rng(11);
   return draw_label_image(tessellate(o, rng), 200);
 }
@@ -85,20 +87,30 @@ TEST_CASE("bad label images and keys are refused in one line naming the file or 
   const std::vector<test::Refusal> cases{
       {{"run", config("notes.ini", dir / "notes.png", "periodic = false")}, 2, "notes.png: not a PNG or TIFF image"},
       {{"run", config("none.ini", dir / "none.png", "periodic = false")}, 2, "none.png"},
-      {{"run", config("speck.ini", dir / "speck.png", "periodic = false")}, 2,
+      {{"run", config("speck.ini", dir / "speck.png", "periodic = false")},
+       2,
        "tessellation.image_min_grain: " + (dir / "speck.png").string() +
            ": 1 grain of fewer than 4 pixels (the smallest 1 pixel of label 9 at pixel (100, 50)"},
-      {{"run", config("table.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\nimage_phases = 1-5: WC")},
-       2, "tessellation.image_phases: " + (dir / "good.png").string() + ": label 6 ("},
-      {{"run", config("phase.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\nimage_phases = 1-6: TiC")},
-       2, "tessellation.image_phases: no phase is named 'TiC'"},
+      {{"run",
+        config("table.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\nimage_phases = 1-5: WC")},
+       2,
+       "tessellation.image_phases: " + (dir / "good.png").string() + ": label 6 ("},
+      {{"run",
+        config("phase.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\nimage_phases = 1-6: TiC")},
+       2,
+       "tessellation.image_phases: no phase is named 'TiC'"},
       {{"run", config("periodic.ini", dir / "good.png", "")}, 2, "domain.periodic: say whether"},
-      {{"run", config("size.ini", dir / "good.png", "periodic = false", "")}, 2, "tessellation.image_pixel_size: missing"},
-      {{"run", config("width.ini", dir / "good.png", "periodic = false\nwidth = 3")}, 2,
+      {{"run", config("size.ini", dir / "good.png", "periodic = false", "")},
+       2,
+       "tessellation.image_pixel_size: missing"},
+      {{"run", config("width.ini", dir / "good.png", "periodic = false\nwidth = 3")},
+       2,
        "domain.width: must be the image's width, 200 x 100 pixels of 0.01, 2 x 1"},
-      {{"run", config("grains.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\ngrains = 5")}, 2,
+      {{"run", config("grains.ini", dir / "good.png", "periodic = false", "image_pixel_size = 0.01\ngrains = 5")},
+       2,
        "tessellation.grains: the grains come from tessellation.image"},
-      {{"run", config("depth.ini", dir / "good.png", "periodic = false\ndepth = 1")}, 2,
+      {{"run", config("depth.ini", dir / "good.png", "periodic = false\ndepth = 1")},
+       2,
        "tessellation.image: label images make 2D cells"},
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
