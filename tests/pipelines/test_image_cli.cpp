@@ -115,3 +115,19 @@ TEST_CASE("bad label images and keys are refused in one line naming the file or 
   };
   for (const auto& c : cases) test::check_refused(c, dir / "out");
 }
+
+TEST_CASE("the label-image example tessellates to its 60 grains with the table's phases", "[cli][image]") {
+  test::ScratchDir dir("image-example");
+  const fs::path examples = test::source_dir() / "data" / "examples";
+  const auto r = run_grainmesh({"tessellate", (examples / "grains_image.ini").string(), "--set",
+                                "tessellation.image=" + (examples / "grains_image.png").string(), "-o",
+                                (dir / "out").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto tess = nlohmann::json::parse(test::read_file(dir / "out" / "tessellation.json"));
+  REQUIRE(tess["grains"].size() == 60);
+  int co = 0;
+  for (const auto& g : tess["grains"]) co += g["phase"] == 1 ? 1 : 0;
+  CHECK(co == 9);  // labels 52 to 60
+  CHECK(r.err.find("warning") == std::string::npos);
+}
