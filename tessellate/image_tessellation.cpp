@@ -13,8 +13,7 @@
 #include "common/predicates.hpp"
 #include "common/ring.hpp"
 #include "common/spatial_grid.hpp"
-#include "tessellate/phases.hpp"
-#include "tessellate/tessellate.hpp"
+#include "tessellate/read_tessellation.hpp"
 
 namespace grainmesh {
 
@@ -576,18 +575,14 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
   px.for_pairs([&](std::size_t p, std::size_t q) {
     if (grain[p] != grain[q]) touching.insert(std::minmax(grain[p], grain[q]));
   });
-  std::vector<std::vector<int>> neighbours(grains);
-  for (const auto& [a, b] : touching) neighbours[a].push_back(b), neighbours[b].push_back(a);
-  for (auto& l : neighbours) std::sort(l.begin(), l.end());
+  const std::vector<std::vector<int>> neighbours = neighbour_lists(grains, touching);
   std::vector<int> phase;
   if (!o.label_phases.empty()) {
     phase = phases_from_table(label, pixels, o, image.colour, source);
   } else {
     std::vector<double> areas(grains);
     for (int g = 0; g < grains; ++g) areas[g] = static_cast<double>(pixels[g]) * h * h;
-    std::vector<int> all(o.phases.size());
-    std::iota(all.begin(), all.end(), 0);
-    phase = assign_phases(areas, neighbours, o.phases, all, t.width * t.height, o.arrangement, rng);
+    phase = phases_by_rules(areas, neighbours, o.phases, o.arrangement, t.width * t.height, rng);
   }
   for (int g = 0; g < grains; ++g)
     t.grains.push_back(
@@ -602,12 +597,7 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
   t.stats.removed_grains = merged;
   t.stats.edges_per_grain_mean = corners / grains;
   t.stats.neighbours_mean = 2.0 * static_cast<double>(touching.size()) / grains;
-  try {
-    measure_tessellation(t);
-  } catch (const GeometryError& e) {
-    throw GeometryError(source + ": " + e.what());
-  }
-  t.stats.shortest_torus_edge = t.stats.shortest_edge;
+  measure_read_tessellation(t, source);
   return t;
 }
 

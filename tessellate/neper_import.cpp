@@ -7,7 +7,7 @@
 #include "common/errors.hpp"
 #include "common/ring.hpp"
 #include "tessellate/cut.hpp"
-#include "tessellate/phases.hpp"
+#include "tessellate/read_tessellation.hpp"
 #include "tessellate/tessellate.hpp"
 #include "tessellate/tessellate_3d.hpp"
 #include "tessellate/validate_3d.hpp"
@@ -32,25 +32,6 @@ void check_kind(const NeperTess& n, int dimensions, const std::string& source) {
 // A vertex in the cell's frame (the domain's low corner at the origin); -0 made +0.
 Vec3 in_cell(const NeperTess& n, const Vec3& v) {
   return {(v.x - n.domain.lo.x) + 0.0, (v.y - n.domain.lo.y) + 0.0, (v.z - n.domain.lo.z) + 0.0};
-}
-
-// The phases by our rules, from the grains' sizes and neighbours.
-std::vector<int> labels(const std::vector<double>& sizes, const std::vector<std::vector<int>>& neighbours,
-                        const std::vector<Phase>& phases, Arrangement arrangement, double total, Rng& rng) {
-  std::vector<int> all(phases.size());
-  for (int p = 0; p < static_cast<int>(all.size()); ++p) all[p] = p;
-  return assign_phases(sizes, neighbours, phases, all, total, arrangement, rng);
-}
-
-// The sorted grain lists of who touches whom, from pairs (a, b).
-std::vector<std::vector<int>> neighbour_lists(std::size_t grains, const std::set<std::pair<int, int>>& pairs) {
-  std::vector<std::vector<int>> out(grains);
-  for (const auto& [a, b] : pairs) {
-    out[a].push_back(b);
-    out[b].push_back(a);
-  }
-  for (auto& l : out) std::sort(l.begin(), l.end());
-  return out;
 }
 
 }  // namespace
@@ -100,7 +81,7 @@ Tessellation plane_tessellation(const NeperTess& n, const std::vector<Phase>& ph
   if (std::abs(sum - total) > 1e-9 * total)
     throw GeometryError(source + ": the cells cover an area of " + std::to_string(sum) + ", the domain " +
                         std::to_string(total));
-  const std::vector<int> label = labels(areas, neighbours, phases, arrangement, total, rng);
+  const std::vector<int> label = phases_by_rules(areas, neighbours, phases, arrangement, total, rng);
   for (int c = 0; c < n.cells(); ++c) {
     const Vec3 s = in_cell(n, n.seeds[c]);
     t.grains.push_back(Grain{.id = c, .phase = label[c], .seed = {s.x, s.y}, .area = 0.0,
@@ -112,12 +93,7 @@ Tessellation plane_tessellation(const NeperTess& n, const std::vector<Phase>& ph
   for (const auto& l : neighbours) touches += static_cast<double>(l.size());
   t.stats.edges_per_grain_mean = edges / n.cells();
   t.stats.neighbours_mean = touches / n.cells();
-  try {
-    measure_tessellation(t);
-  } catch (const GeometryError& e) {
-    throw GeometryError(source + ": " + e.what());
-  }
-  t.stats.shortest_torus_edge = t.stats.shortest_edge;
+  measure_read_tessellation(t, source);
   return t;
 }
 
@@ -172,7 +148,7 @@ Tessellation3 solid_tessellation(const NeperTess& n, const std::vector<Phase>& p
   std::vector<double> volumes;
   for (const Region3& r : t.regions) volumes.push_back(r.volume);
   const double total = t.width * t.height * t.depth;
-  const std::vector<int> label = labels(volumes, neighbours, phases, arrangement, total, rng);
+  const std::vector<int> label = phases_by_rules(volumes, neighbours, phases, arrangement, total, rng);
   for (int c = 0; c < n.cells(); ++c) {
     t.grains.push_back(Grain3{.id = c, .phase = label[c], .seed = in_cell(n, n.seeds[c]), .volume = volumes[c],
                               .faces = static_cast<int>(n.polyhedra[c].size()), .neighbours = neighbours[c]});

@@ -15,7 +15,7 @@ Tessellation tessellate(const TessellationOptions& options, Rng& rng);
 // The statistics of a tessellation whose grains (ids, phases, seeds, neighbours; the
 // matrix grain last) and regions are set: the grains' areas from their regions, sizes,
 // shortest edge, sharpest corner, the phases' fractions and descriptors; validates it.
-// Shared by the tessellations read from files (neper_import).
+// Shared by the tessellations read from files (read_tessellation.hpp).
 void measure_tessellation(Tessellation& t);
 
 }  // namespace grainmesh
