@@ -9,10 +9,8 @@
 
 namespace grainmesh {
 
-// tessellation.image_phases: "LABELS: PHASE, ..." with LABELS a label, a range lo-hi or a
-// colour #rrggbb, each phase one of the config's.
-std::vector<LabelPhase> read_label_phases(const Config& c, const std::vector<Phase>& phases, bool colour) {
-  const std::string key = "tessellation.image_phases";
+std::vector<LabelPhase> read_label_phases(const Config& c, const std::string& key, const std::vector<Phase>& phases,
+                                          bool colour) {
   std::vector<LabelPhase> out;
   const std::string text = c.text(key);
   std::size_t start = 0;
@@ -22,7 +20,8 @@ std::vector<LabelPhase> read_label_phases(const Config& c, const std::vector<Pha
     start = end + 1;
     const std::size_t colon = entry.find(':');
     if (colon == std::string::npos)
-      c.fail(key, "'" + entry + "' is not LABELS: PHASE (e.g. 0: Co, 1-65535: WC or #ff0000: WC)");
+      c.fail(key, "'" + entry + "' is not LABELS: PHASE (e.g. 0: Co, 1-65535: WC" +
+                      (colour ? " or #ff0000: WC)" : ")"));
     const std::string labels = trimmed(entry.substr(0, colon)), name = trimmed(entry.substr(colon + 1));
     LabelPhase lp;
     lp.phase = -1;

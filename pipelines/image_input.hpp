@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "pipelines/config.hpp"
@@ -25,8 +26,10 @@ struct ImageInput {
 // `o`. False (and the image's other keys refused) when it is not given.
 bool read_image_input(const Config& c, ImageInput& input, TessellationOptions& o);
 
-// tessellation.image_phases: "LABELS: PHASE, ..." with LABELS a label, a range lo-hi or a
-// colour #rrggbb (a colour image's), each PHASE one of `phases`.
-std::vector<LabelPhase> read_label_phases(const Config& c, const std::vector<Phase>& phases, bool colour);
+// A phase table (tessellation.image_phases, tessellation.neper_phases) under `key`:
+// "LABELS: PHASE, ..." with LABELS a label, a range lo-hi or (a colour image's) a colour
+// #rrggbb, each PHASE one of `phases`.
+std::vector<LabelPhase> read_label_phases(const Config& c, const std::string& key, const std::vector<Phase>& phases,
+                                          bool colour);
 
 }  // namespace grainmesh

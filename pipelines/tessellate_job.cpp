@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -87,7 +88,10 @@ void refuse_2d_only(const Config& c) {
 // the keys that would draw the grains refused. False when the key is not given.
 template <class Job>
 bool read_neper_input(const Config& c, Job& job, int dimensions) {
-  if (!c.has("tessellation.neper")) return false;
+  if (!c.has("tessellation.neper")) {
+    if (c.has("tessellation.neper_phases")) c.fail("tessellation.neper_phases", "only used with tessellation.neper");
+    return false;
+  }
   const std::filesystem::path file = c.text("tessellation.neper");
   refuse_drawing_keys(c, "tessellation.neper (" + file.string() + ")");
   try {
@@ -112,11 +116,18 @@ bool read_neper_input(const Config& c, Job& job, int dimensions) {
   o.width = size.x;
   o.height = size.y;
   if constexpr (requires { o.depth; }) o.depth = size.z;
-  if (n.periodic) c.fail("tessellation.neper", file.string() + ": periodic Neper tessellations are not read yet");
-  if (c.flag("domain.periodic", true))
-    c.fail("domain.periodic", file.string() + " is not periodic: set domain.periodic = false");
-  o.periodic = false;
+  if (c.has("domain.periodic") && c.flag("domain.periodic", n.periodic) != n.periodic)
+    c.fail("domain.periodic", file.string() + (n.periodic ? " is periodic: set domain.periodic = true"
+                                                          : " is not periodic: set domain.periodic = false") +
+                                  " (or leave it out)");
+  o.periodic = n.periodic;
   o.grains = n.cells();
+  if (c.has("tessellation.neper_phases")) {
+    if (n.groups.empty())
+      c.fail("tessellation.neper_phases",
+             file.string() + " has no cell groups (*group; Neper's -group) to take the phases from");
+    job.neper.group_phases = read_label_phases(c, "tessellation.neper_phases", read_phases(c), false);
+  }
   return true;
 }
 
@@ -159,6 +170,22 @@ void read_shared_keys(const Config& c, Job& job) {
   o.deadline = Deadline::after(read_time_limit(c), kTimeLimitKey);
 }
 
+// The Neper file's cells as the job's tessellation; a group the phase table misses is
+// refused naming tessellation.neper_phases.
+template <class Cell, class Job>
+Cell read_neper_cell(const Job& job, Rng& rng) {
+  const NeperPhases phases{.phases = job.options.phases, .arrangement = job.options.arrangement,
+                           .group_phases = job.neper.group_phases};
+  try {
+    if constexpr (std::is_same_v<Cell, Tessellation>)
+      return plane_tessellation(job.neper.tess, phases, rng, job.neper.file.string());
+    else
+      return solid_tessellation(job.neper.tess, phases, rng, job.neper.file.string());
+  } catch (const UnnamedLabelError& e) {
+    job.origin.fail("tessellation.neper_phases", e.what());
+  }
+}
+
 }  // namespace
 
 template <>
@@ -181,7 +208,8 @@ TessellateJob<2> read_tessellate_job<2>(const Config& c) {
     job.image.options.phases = o.phases;
     job.image.options.arrangement = o.arrangement;
     if (c.has("tessellation.image_phases"))
-      job.image.options.label_phases = read_label_phases(c, o.phases, job.image.image.colour);
+      job.image.options.label_phases =
+          read_label_phases(c, "tessellation.image_phases", o.phases, job.image.image.colour);
   }
   return job;
 }
@@ -200,9 +228,7 @@ TessellateJob<3> read_tessellate_job<3>(const Config& c) {
 
 Tessellation run_tessellate_job(const TessellateJob<2>& job) {
   Rng rng(job.seed);
-  if (!job.neper.file.empty())
-    return plane_tessellation(job.neper.tess, job.options.phases, job.options.arrangement, rng,
-                              job.neper.file.string());
+  if (!job.neper.file.empty()) return read_neper_cell<Tessellation>(job, rng);
   if (!job.image.file.empty()) {
     try {
       return image_tessellation(job.image.image, job.image.options, rng, job.image.file.string());
@@ -228,9 +254,7 @@ Tessellation run_tessellate_job(const TessellateJob<2>& job) {
 
 Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
   Rng rng(job.seed);
-  if (!job.neper.file.empty())
-    return solid_tessellation(job.neper.tess, job.options.phases, job.options.arrangement, rng,
-                              job.neper.file.string());
+  if (!job.neper.file.empty()) return read_neper_cell<Tessellation3>(job, rng);
   Tessellation3 t;
   try {
     t = tessellate_3d(job.options, rng);
@@ -246,12 +270,14 @@ Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
 
 void check_phases(const Tessellation& t, const TessellateJob<2>& job, Warnings& warnings) {
   check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin, job.options.matrix_phase);
-  if (!job.image.options.label_phases.empty()) return;  // the image's own fractions, not targets
+  // With a phase table the fractions are the file's own, not targets.
+  if (!job.image.options.label_phases.empty() || !job.neper.group_phases.empty()) return;
   for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
 }
 
 void check_phases(const Tessellation3& t, const TessellateJob<3>& job, Warnings& warnings) {
   check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin);
+  if (!job.neper.group_phases.empty()) return;  // the file's own fractions, not targets
   for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
 }
 

@@ -24,10 +24,12 @@ template <int D>
 struct TessellateJob;
 
 // tessellation.neper: a Neper tessellation read instead of one drawn (the cell is its
-// domain; the phases still by our rules).
+// domain, periodic when the file is; the phases from its cell groups through
+// tessellation.neper_phases, else by our rules).
 struct NeperInput {
   std::filesystem::path file;  // empty: none
   NeperTess tess;
+  std::vector<LabelPhase> group_phases;  // empty: phases by our rules
 };
 
 template <>

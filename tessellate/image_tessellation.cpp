@@ -399,8 +399,7 @@ std::vector<int> phases_from_table(const std::vector<std::uint32_t>& label, cons
   std::vector<int> phase(label.size(), -1);
   std::map<std::uint32_t, long long> missing;  // label -> pixels
   for (std::size_t g = 0; g < label.size(); ++g) {
-    for (const LabelPhase& lp : o.label_phases)
-      if (label[g] >= lp.lo && label[g] <= lp.hi) phase[g] = lp.phase;
+    phase[g] = phase_of_label(o.label_phases, label[g]);
     if (phase[g] < 0) missing[label[g]] += pixels[g];
   }
   if (!missing.empty()) {

@@ -14,16 +14,10 @@
 #include "common/errors.hpp"
 #include "common/random.hpp"
 #include "tessellate/label_image.hpp"
+#include "tessellate/read_tessellation.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
-
-// Labels lo .. hi (colours 0xRRGGBB in a colour image) are of phase `phase`.
-struct LabelPhase {
-  std::uint32_t lo = 0;
-  std::uint32_t hi = 0;
-  int phase = 0;
-};
 
 struct ImageTessellationOptions {
   double pixel_size = 1.0;   // the length of a pixel's side, the caller's unit
@@ -32,17 +26,12 @@ struct ImageTessellationOptions {
   bool merge_small = false;  // merge them (else refuse the image)
   bool periodic = false;     // the image wraps round: its opposite borders touch
   std::vector<Phase> phases;
-  std::vector<LabelPhase> label_phases;  // empty: phases by our rules (fractions, arrangement)
+  std::vector<LabelPhase> label_phases;  // colours 0xRRGGBB in a colour image; empty: by our rules
   Arrangement arrangement = Arrangement::random;
 };
 
 // Grains below ImageTessellationOptions::min_grain_pixels, not to be merged.
 struct SmallGrainsError : GeometryError {
-  using GeometryError::GeometryError;
-};
-
-// A label of the image the phase table does not name.
-struct UnnamedLabelError : GeometryError {
   using GeometryError::GeometryError;
 };
 

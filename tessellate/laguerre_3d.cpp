@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -40,7 +41,7 @@ struct Diagram {
   using Vb0 = CGAL::Regular_triangulation_vertex_base_3<K>;
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K, Vb0>;  // site
   using Cb0 = CGAL::Regular_triangulation_cell_base_3<K>;
-  using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, Cb0>;    // power vertex id, -1 unset
+  using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, Cb0>;  // power vertex id, -1 unset
   using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
   using Regular = CGAL::Regular_triangulation_3<K, Tds>;
   using WPoint = typename Regular::Weighted_point;
@@ -68,7 +69,8 @@ struct Diagram {
     std::vector<std::pair<WPoint, int>> sites;
     sites.reserve(static_cast<std::size_t>(n) * code.per_seed());
     for (int i = 0; i < n; ++i)
-      for (int k = 0; k < code.per_seed(); ++k) sites.emplace_back(site_point(seeds[i], weights[i], box, k), i * code.per_seed() + k);
+      for (int k = 0; k < code.per_seed(); ++k)
+        sites.emplace_back(site_point(seeds[i], weights[i], box, k), i * code.per_seed() + k);
     Regular rt;
     rt.insert(sites.begin(), sites.end());
 
@@ -286,6 +288,75 @@ CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<d
   return m;
 }
 
+namespace {
+
+// Each exact point once, rounded once: a point reached from two pieces (or from two
+// periodic images, shifted back exactly) is one vertex with one set of bits.
+class ExactVertices {
+ public:
+  explicit ExactVertices(std::vector<Vec3>& out) : out_(out) {}
+  int id(const EK::Point_3& p) {
+    const auto [it, added] = ids_.emplace(p, static_cast<int>(out_.size()));
+    if (added)
+      out_.push_back({CGAL::to_double(CGAL::exact(p.x())), CGAL::to_double(CGAL::exact(p.y())),
+                      CGAL::to_double(CGAL::exact(p.z()))});
+    return it->second;
+  }
+
+ private:
+  std::vector<Vec3>& out_;
+  std::map<EK::Point_3, int, Exact::LessXyz> ids_;
+};
+
+// The pieces of `poly` in the periodic box's images m (lo[a] <= m[a] <= hi[a]), each moved
+// back by -m periods, as pieces of `seed`; a bounded box (periodic false) keeps it whole.
+void add_pieces(const ExactPolyhedron& poly, int seed, Vec3 box, bool periodic, std::array<int, 3> lo,
+                std::array<int, 3> hi, ExactVertices& vertices, LaguerreCut& out) {
+  if (!periodic) lo = hi = {0, 0, 0};
+  for (int mz = lo[2]; mz <= hi[2]; ++mz)
+    for (int my = lo[1]; my <= hi[1]; ++my)
+      for (int mx = lo[0]; mx <= hi[0]; ++mx) {
+        const std::array<int, 3> m{mx, my, mz};
+        ExactPolyhedron piece = poly;  // bounded: the mirrors already bound the cell by the box
+        for (int a = 0; a < 3 && periodic && !piece.faces.empty(); ++a) {
+          const EK::FT low = EK::FT(box[a]) * EK::FT(m[a]);
+          piece = clip(piece, a, low, true);
+          if (!piece.faces.empty()) piece = clip(piece, a, low + EK::FT(box[a]), false);
+        }
+        if (piece.faces.empty()) continue;
+        const bool home = m == std::array<int, 3>{0, 0, 0};
+        const EK::Vector_3 back(EK::FT(box.x) * EK::FT(-m[0]), EK::FT(box.y) * EK::FT(-m[1]),
+                                EK::FT(box.z) * EK::FT(-m[2]));
+        std::vector<int> global(piece.points.size(), -1);
+        BoxPiece bp{.seed = seed, .faces = {}};
+        for (const auto& face : piece.faces) {
+          std::vector<int> ring;
+          for (int id : face) {
+            if (global[id] < 0) global[id] = vertices.id(home ? piece.points[id] : piece.points[id] + back);
+            ring.push_back(global[id]);
+          }
+          bp.faces.push_back(std::move(ring));
+        }
+        out.pieces.push_back(std::move(bp));
+      }
+}
+
+}  // namespace
+
+std::vector<std::vector<std::vector<Vec3>>> laguerre_cells(const std::vector<Vec3>& seeds,
+                                                           const std::vector<double>& weights, Vec3 box,
+                                                           bool periodic) {
+  const Approx d(seeds, weights, box, periodic);
+  std::vector<std::vector<std::vector<Vec3>>> out(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    for (const auto& ring : d.cells[i].rings) {
+      std::vector<Vec3> face;
+      for (int id : ring) face.push_back(to_vec(d.points[id]));
+      out[i].push_back(std::move(face));
+    }
+  return out;
+}
+
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
                              bool periodic) {
   const Exact d(seeds, weights, box, periodic);
@@ -293,14 +364,7 @@ LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<d
   const int n = static_cast<int>(seeds.size());
   out.cell_faces.assign(n, 0);
   out.neighbours.resize(n);
-  std::map<EK::Point_3, int, Exact::LessXyz> ids;
-  auto vertex_id = [&](const EK::Point_3& p) {
-    const auto [it, added] = ids.emplace(p, static_cast<int>(out.vertices.size()));
-    if (added)
-      out.vertices.push_back({CGAL::to_double(CGAL::exact(p.x())), CGAL::to_double(CGAL::exact(p.y())),
-                              CGAL::to_double(CGAL::exact(p.z()))});
-    return it->second;
-  };
+  ExactVertices vertices(out.vertices);
   for (int i = 0; i < n; ++i) {
     const Exact::Cell& cell = d.cells[i];
     out.cell_faces[i] = static_cast<int>(cell.rings.size());
@@ -323,28 +387,46 @@ LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<d
       }
       poly.faces.push_back(std::move(face));
     }
-    for (int k = 0; k < (periodic ? 27 : 1); ++k) {
-      const auto m = periodic ? image_shift(k) : std::array<int, 3>{0, 0, 0};
-      ExactPolyhedron piece = poly;  // bounded: the mirrors already bound the cell by the box
-      for (int a = 0; a < 3 && periodic && !piece.faces.empty(); ++a) {
-        const EK::FT lo = EK::FT(box[a]) * EK::FT(m[a]);
-        piece = clip(piece, a, lo, true);
-        if (!piece.faces.empty()) piece = clip(piece, a, lo + EK::FT(box[a]), false);
-      }
-      if (piece.faces.empty()) continue;
-      const EK::Vector_3 back(EK::FT(box.x) * EK::FT(-m[0]), EK::FT(box.y) * EK::FT(-m[1]), EK::FT(box.z) * EK::FT(-m[2]));
-      std::vector<int> global(piece.points.size(), -1);
-      BoxPiece bp{.seed = i, .faces = {}};
-      for (const auto& face : piece.faces) {
-        std::vector<int> ring;
-        for (int id : face) {
-          if (global[id] < 0) global[id] = vertex_id(m == std::array<int, 3>{0, 0, 0} ? piece.points[id] : piece.points[id] + back);
-          ring.push_back(global[id]);
+    add_pieces(poly, i, box, periodic, {-1, -1, -1}, {1, 1, 1}, vertices, out);
+  }
+  return out;
+}
+
+LaguerreCut periodic_box_cut(const std::vector<Vec3>& bases,
+                             const std::vector<std::vector<std::vector<LatticeCorner>>>& cells, Vec3 box) {
+  LaguerreCut out;
+  ExactVertices vertices(out.vertices);
+  for (int c = 0; c < static_cast<int>(cells.size()); ++c) {
+    ExactPolyhedron poly;
+    std::map<std::pair<int, std::array<int, 3>>, int> local;
+    std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const auto& ring : cells[c]) {
+      std::vector<int> face;
+      for (const LatticeCorner& corner : ring) {
+        const auto [it, added] =
+            local.emplace(std::pair{corner.base, corner.shift}, static_cast<int>(poly.points.size()));
+        if (added) {
+          const Vec3 b = bases[corner.base];
+          std::array<EK::FT, 3> p{EK::FT(b.x), EK::FT(b.y), EK::FT(b.z)};
+          for (int a = 0; a < 3; ++a) {
+            if (corner.shift[a] != 0) p[a] = p[a] + EK::FT(box[a]) * EK::FT(corner.shift[a]);
+            const double x = b[a] + corner.shift[a] * box[a];
+            lo[a] = std::min(lo[a], x);
+            hi[a] = std::max(hi[a], x);
+          }
+          poly.points.emplace_back(p[0], p[1], p[2]);
         }
-        bp.faces.push_back(std::move(ring));
+        face.push_back(it->second);
       }
-      out.pieces.push_back(std::move(bp));
+      poly.faces.push_back(std::move(face));
     }
+    // The box images the cell may reach, one more each way than its rounded extent says.
+    std::array<int, 3> mlo{}, mhi{};
+    for (int a = 0; a < 3; ++a) {
+      mlo[a] = static_cast<int>(std::floor(lo[a] / box[a])) - 1;
+      mhi[a] = static_cast<int>(std::floor(hi[a] / box[a])) + 1;
+    }
+    add_pieces(poly, c, box, true, mlo, mhi, vertices, out);
   }
   return out;
 }

@@ -5,6 +5,7 @@
 // box from each seed's mirror images across the six sides, whose bisectors are the sides.
 #pragma once
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,13 @@ struct CellMoments {
 CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
                              bool periodic);
 
+// Each seed's whole cell in floating point: its faces' rings of points, counter-clockwise
+// seen from outside, about the seed itself (periodic: reaching out of the box, not
+// reduced into it); no faces when the seed is hidden. What a tessellation file of whole
+// cells (Neper's periodic ones) holds.
+std::vector<std::vector<std::vector<Vec3>>> laguerre_cells(const std::vector<Vec3>& seeds,
+                                                           const std::vector<double>& weights, Vec3 box, bool periodic);
+
 // The cells cut exactly into the box: the exact stage. Every vertex is computed in exact
 // rational arithmetic and rounded once, so a point reached from two cells, or from two
 // periodic images, has the same bits, and a vertex on a side of the box carries the
@@ -34,12 +42,25 @@ struct BoxPiece {
   std::vector<std::vector<int>> faces;  // rings of vertex ids, counter-clockwise seen from outside
 };
 struct LaguerreCut {
-  std::vector<Vec3> vertices;           // each exact point once
-  std::vector<BoxPiece> pieces;         // a periodic cell the box cuts gives several
-  std::vector<int> cell_faces;          // faces of each seed's uncut cell (0: hidden)
+  std::vector<Vec3> vertices;                // each exact point once
+  std::vector<BoxPiece> pieces;              // a periodic cell the box cuts gives several
+  std::vector<int> cell_faces;               // faces of each seed's uncut cell (0: hidden)
   std::vector<std::vector<int>> neighbours;  // seeds sharing a face with each seed's cell, ascending
 };
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
                              bool periodic);
+
+// A corner of a periodic cell given whole (a Neper file's): the point bases[base] moved by
+// `shift` periods along each axis, computed exactly, so each image of one point is that
+// point moved by whole periods with no rounding between them.
+struct LatticeCorner {
+  int base = 0;
+  std::array<int, 3> shift{0, 0, 0};
+};
+// Convex cells given whole, each its faces' rings of corners (counter-clockwise seen from
+// outside), cut exactly into the periodic box as laguerre_box_cut cuts its own: piece
+// seed = the cell's index; cell_faces and neighbours are left empty.
+LaguerreCut periodic_box_cut(const std::vector<Vec3>& bases,
+                             const std::vector<std::vector<std::vector<LatticeCorner>>>& cells, Vec3 box);
 
 }  // namespace grainmesh

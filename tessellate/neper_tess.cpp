@@ -72,18 +72,21 @@ Vec3 point(Words& w, const std::string& what) {
   return p;
 }
 
-// ***tess, **format 3.4, **general DIM standard: the dimension.
-int read_header(Words& w) {
+// ***tess, **format 3.4 (or 3.5), **general DIM standard|periodic: the dimension and
+// whether the cells are periodic.
+int read_header(Words& w, bool& periodic) {
   if (w.next() != "***tess") w.fail("not a Neper tessellation (it does not start with ***tess)");
   w.expect("**format", "after ***tess");
   const std::string format = w.next();
-  if (format != kNeperFormat)
-    w.fail("format " + format + " is not read (grainmesh reads the format Neper 4 writes, " + kNeperFormat + ")");
+  if (format != "3.4" && format != "3.5")
+    w.fail("format " + format + " is not read (grainmesh reads the formats Neper 4 writes, " + kNeperFormats + ")");
   w.expect("**general", "after the format");
   const int dim = w.integer("dimension");
   if (dim != 2 && dim != 3) w.fail("a " + std::to_string(dim) + "D tessellation: grainmesh reads 2D and 3D ones");
   const std::string type = w.next();
-  if (type != "standard") w.fail("a tessellation of type '" + type + "' (grainmesh reads standard ones)");
+  if (type != "standard" && type != "periodic")
+    w.fail("a tessellation of type '" + type + "' (grainmesh reads standard and periodic ones)");
+  periodic = type == "periodic";
   return dim;
 }
 
@@ -98,6 +101,11 @@ void read_cells(Words& w, NeperTess& t) {
   bool seeds = false;
   for (std::string s = w.peek(); s.rfind("*", 0) == 0 && s.rfind("**", 0) != 0; s = w.peek()) {
     w.next();
+    if (s == "*group") {
+      t.groups.resize(n);
+      for (int& g : t.groups) g = w.integer("a cell's group");
+      continue;
+    }
     if (s != "*seed") {
       w.skip_to("*");  // *id, *ori, *crysym, ...: not needed
       continue;
@@ -110,6 +118,32 @@ void read_cells(Words& w, NeperTess& t) {
     seeds = true;
   }
   if (!seeds) w.fail("**cell has no *seed");
+}
+
+// **periodicity: *general (the periodic axes, their periods), then the secondary seeds,
+// vertices, edges and (3D) faces, each with its primary and lattice shift. The vertices'
+// images are kept; the rest is checked for its layout only.
+void read_periodicity(Words& w, NeperTess& t) {
+  w.expect("*general", "after **periodicity");
+  for (int a = 0; a < 3; ++a) t.periodic_axes[a] = w.integer("a periodicity flag", 0, 1) == 1;
+  for (int a = 0; a < 3; ++a) t.period[a] = w.number("a periodicity distance");
+  const int vertices = static_cast<int>(t.vertices.size());
+  for (std::string s = w.peek(); s.rfind("*", 0) == 0 && s.rfind("**", 0) != 0; s = w.peek()) {
+    w.next();
+    const int n = w.integer("the number of periodic " + s.substr(1) + " entries", 0);
+    const int extra = s == "*edge" || s == "*face" ? 1 : 0;  // their orientation
+    for (int k = 0; k < n; ++k) {
+      NeperTess::Image image;
+      const bool vertex = s == "*vertex";
+      image.vertex =
+          w.integer("a secondary " + s.substr(1), 1, vertex ? vertices : std::numeric_limits<int>::max()) - 1;
+      image.primary = w.integer("a primary " + s.substr(1), 1, vertex ? vertices : std::numeric_limits<int>::max()) - 1;
+      for (int& c : image.shift) c = w.integer("a periodic shift", -1, 1);
+      for (int e = 0; e < extra; ++e) w.integer("an orientation");
+      if (vertex) t.vertex_images.push_back(image);
+    }
+  }
+  t.periodic = true;
 }
 
 void read_field(Words& w, NeperTess& t, const std::string& field) {
@@ -168,8 +202,7 @@ void read_field(Words& w, NeperTess& t, const std::string& field) {
     }
     w.skip_to("**");  // *edge, *face
   } else if (field == "**periodicity" || field == "**periodic") {
-    t.periodic = true;
-    w.skip_to("**");
+    read_periodicity(w, t);
   } else {
     w.skip_to("**");  // **scale, ...
   }
@@ -177,7 +210,8 @@ void read_field(Words& w, NeperTess& t, const std::string& field) {
 
 NeperTess parse(Words& w) {
   NeperTess t;
-  t.dimensions = read_header(w);
+  bool periodic = false;
+  t.dimensions = read_header(w, periodic);
   w.expect("**cell", "after **general");
   read_cells(w, t);
   for (std::string field = w.next(); field != "***end"; field = w.next()) {
@@ -187,6 +221,8 @@ NeperTess parse(Words& w) {
   }
   if (t.vertices.empty() || t.faces.empty()) w.fail("has no **vertex or no **face");
   if (t.domain_type.empty()) w.fail("has no **domain");
+  if (periodic != t.periodic)
+    w.fail(periodic ? "is of type periodic but has no **periodicity" : "has a **periodicity but is of type standard");
   const std::size_t cells = t.dimensions == 2 ? t.faces.size() : t.polyhedra.size();
   if (cells != t.seeds.size())
     w.fail(std::to_string(t.seeds.size()) + " cells but " + std::to_string(cells) +

@@ -26,6 +26,13 @@ std::vector<int> phases_by_rules(const std::vector<double>& sizes, const std::ve
   return assign_phases(sizes, neighbours, phases, all, total, arrangement, rng);
 }
 
+int phase_of_label(const std::vector<LabelPhase>& table, std::uint32_t label) {
+  int phase = -1;
+  for (const LabelPhase& lp : table)
+    if (label >= lp.lo && label <= lp.hi) phase = lp.phase;
+  return phase;
+}
+
 void measure_read_tessellation(Tessellation& t, const std::string& source) {
   try {
     measure_tessellation(t);

@@ -141,55 +141,6 @@ void mean_std(const std::vector<double>& v, double* mean, double* sd) {
   *sd = v.size() > 1 ? std::sqrt(s2 / static_cast<double>(v.size() - 1)) : 0.0;
 }
 
-// The regions and their shared faces from the cut pieces: a face met twice (the second
-// time reversed) lies between two regions, a face met once on the box.
-void assemble(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tessellation3& t) {
-  t.vertices = cut.vertices;
-  std::map<std::vector<int>, int> by_key;
-  for (const BoxPiece& piece : cut.pieces) {
-    const int r = static_cast<int>(t.regions.size());
-    const int g = grain_of_seed[piece.seed];
-    Region3 region{.grain = g, .phase = t.grains[g].phase, .faces = {}, .volume = 0.0};
-    for (const auto& ring : piece.faces) {
-      std::vector<int> key = ring;
-      std::sort(key.begin(), key.end());
-      const auto [it, added] = by_key.emplace(std::move(key), static_cast<int>(t.faces.size()));
-      if (added) {
-        t.faces.push_back({.ring = ring, .back = r, .front = -1});
-      } else {
-        Face3& f = t.faces[it->second];
-        if (f.front >= 0) throw GeometryError("3D cut: a face is shared by three regions");
-        f.front = r;
-      }
-      region.faces.push_back(it->second);
-    }
-    t.regions.push_back(std::move(region));
-  }
-}
-
-// Each vertex on a low side of the box with the vertex at its position plus the box's
-// edge; GeometryError naming a side vertex without its image.
-PeriodicPairs box_partners(const Tessellation3& t) {
-  PeriodicPairs pairs;
-  const Vec3 box = t.size();
-  for (int a = 0; a < 3; ++a) {
-    const int u = (a + 1) % 3, v = (a + 2) % 3;
-    std::map<std::pair<double, double>, int> high;
-    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id)
-      if (t.vertices[id][a] == box[a]) high.emplace(std::pair{t.vertices[id][u], t.vertices[id][v]}, id);
-    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id) {
-      if (t.vertices[id][a] != 0.0) continue;
-      const auto it = high.find({t.vertices[id][u], t.vertices[id][v]});
-      if (it == high.end())
-        throw GeometryError("3D cut: vertex " + std::to_string(id) + " on a side of the box has no periodic image");
-      pairs.axis[a].emplace_back(id, it->second);
-    }
-    if (pairs.axis[a].size() != high.size())
-      throw GeometryError("3D cut: a vertex on a high side of the box has no periodic image");
-  }
-  return pairs;
-}
-
 // Areas shared between grains, per pair of phases: what contiguity is made of. Faces on
 // the box count once through their low-side copy, paired with the high-side face.
 std::vector<double> phase_boundary_areas(const Tessellation3& t) {
@@ -306,6 +257,51 @@ void measure_tessellation(Tessellation3& t) {
   }
 }
 
+void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tessellation3& t) {
+  t.vertices = cut.vertices;
+  std::map<std::vector<int>, int> by_key;
+  for (const BoxPiece& piece : cut.pieces) {
+    const int r = static_cast<int>(t.regions.size());
+    const int g = grain_of_seed[piece.seed];
+    Region3 region{.grain = g, .phase = t.grains[g].phase, .faces = {}, .volume = 0.0};
+    for (const auto& ring : piece.faces) {
+      std::vector<int> key = ring;
+      std::sort(key.begin(), key.end());
+      const auto [it, added] = by_key.emplace(std::move(key), static_cast<int>(t.faces.size()));
+      if (added) {
+        t.faces.push_back({.ring = ring, .back = r, .front = -1});
+      } else {
+        Face3& f = t.faces[it->second];
+        if (f.front >= 0) throw GeometryError("3D cut: a face is shared by three regions");
+        f.front = r;
+      }
+      region.faces.push_back(it->second);
+    }
+    t.regions.push_back(std::move(region));
+  }
+}
+
+PeriodicPairs box_partners(const Tessellation3& t) {
+  PeriodicPairs pairs;
+  const Vec3 box = t.size();
+  for (int a = 0; a < 3; ++a) {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    std::map<std::pair<double, double>, int> high;
+    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id)
+      if (t.vertices[id][a] == box[a]) high.emplace(std::pair{t.vertices[id][u], t.vertices[id][v]}, id);
+    for (int id = 0; id < static_cast<int>(t.vertices.size()); ++id) {
+      if (t.vertices[id][a] != 0.0) continue;
+      const auto it = high.find({t.vertices[id][u], t.vertices[id][v]});
+      if (it == high.end())
+        throw GeometryError("3D cut: vertex " + std::to_string(id) + " on a side of the box has no periodic image");
+      pairs.axis[a].emplace_back(id, it->second);
+    }
+    if (pairs.axis[a].size() != high.size())
+      throw GeometryError("3D cut: a vertex on a high side of the box has no periodic image");
+  }
+  return pairs;
+}
+
 namespace {
 
 // Lloyd's relaxation of `seeds` (o.lloyd_iterations steps, each seed to its cell's
@@ -369,7 +365,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     for (int j : cut.neighbours[i]) grain.neighbours.push_back(grain_of_seed[j]);
     t.grains.push_back(std::move(grain));
   }
-  assemble(cut, grain_of_seed, t);
+  assemble_box_cut(cut, grain_of_seed, t);
   {
     const Extremes before = extremes(t);
     Tessellation3Stats& st = t.stats;
