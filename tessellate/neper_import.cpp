@@ -23,17 +23,35 @@ namespace {
 // periods: Neper writes coordinates to 12 decimals.
 constexpr double kImageTolerance = 1e-9;
 
-// What both dimensions refuse: another dimension, a domain not a box, periodicity along
-// some axes only or with periods that are not the domain's.
+// What both dimensions refuse: another dimension, a domain not a box (Neper 4 calls a 2D
+// square domain a cube; a rotated one is not a box of ours), periodicity along some axes
+// only or with periods that are not the domain's.
 void check_kind(const NeperTess& n, int dimensions, const std::string& source) {
   const char* box = dimensions == 2 ? "square" : "cube";
   if (n.dimensions != dimensions)
     throw GeometryError(source + ": a " + std::to_string(n.dimensions) + "D tessellation where a " +
                         std::to_string(dimensions) + "D one is read");
-  if (n.domain_type != box)
+  if (n.domain_type != "cube" && n.domain_type != box)
     throw GeometryError(source + ": a " + n.domain_type + " domain: grainmesh meshes a " + box + " (a box) cell");
-  if (!n.periodic) return;
+  // Its corners are the corners of their bounding box, the sides along the axes.
   const Vec3 size = n.domain.hi - n.domain.lo;
+  const double scale = std::max({size.x, size.y, size.z});
+  std::set<int> corners;
+  for (const Vec3& p : n.domain_vertices) {
+    int corner = 0;
+    bool at_corner = true;
+    for (int a = 0; a < dimensions; ++a) {
+      const bool high = std::abs(p[a] - n.domain.hi[a]) <= 1e-9 * scale;
+      at_corner = at_corner && (high || std::abs(p[a] - n.domain.lo[a]) <= 1e-9 * scale);
+      corner |= (high ? 1 : 0) << a;
+    }
+    if (at_corner) corners.insert(corner);
+  }
+  if (n.domain_vertices.size() != (1u << dimensions) || corners.size() != (1u << dimensions) ||
+      (dimensions == 2 && size.z > 1e-9 * scale))
+    throw GeometryError(source + ": the domain is not a " + box +
+                        " with sides along the axes (rotated or cut?): grainmesh meshes such a box");
+  if (!n.periodic) return;
   for (int a = 0; a < dimensions; ++a) {
     const char axis = static_cast<char>('x' + a);
     if (!n.periodic_axes[a])

@@ -64,6 +64,10 @@ class Words {
   std::size_t at_ = 0;
 };
 
+// An empty cell (Neper writes one for a seed whose cell misses the domain).
+constexpr const char* kEmptyCell =
+    " is empty (a cell whose seed lies outside the domain?): grainmesh reads tessellations without empty cells";
+
 Vec3 point(Words& w, const std::string& what) {
   Vec3 p;
   p.x = w.number(what + " x");
@@ -162,7 +166,10 @@ void read_field(Words& w, NeperTess& t, const std::string& field) {
     const int n = count("faces"), vertices = static_cast<int>(t.vertices.size());
     for (int k = 0; k < n; ++k) {
       check_id(w, w.integer("face id"), k, "face");
-      std::vector<int> ring(w.integer("a face's vertex count", 3, vertices));
+      const int corners = w.integer("a face's vertex count", 0, vertices);
+      if (corners == 0) w.fail("face " + std::to_string(k + 1) + kEmptyCell);
+      if (corners < 3) w.fail("face " + std::to_string(k + 1) + " has " + std::to_string(corners) + " vertices");
+      std::vector<int> ring(corners);
       for (int& v : ring) v = w.integer("a face's vertex", 1, vertices) - 1;
       const int edges = w.integer("a face's edge count", 3);
       for (int e = 0; e < edges; ++e) w.integer("a face's edge");
@@ -176,7 +183,10 @@ void read_field(Words& w, NeperTess& t, const std::string& field) {
     const int n = count("polyhedra"), faces = static_cast<int>(t.faces.size());
     for (int k = 0; k < n; ++k) {
       check_id(w, w.integer("polyhedron id"), k, "polyhedron");
-      std::vector<int> list(w.integer("a polyhedron's face count", 4, faces));
+      const int sides = w.integer("a polyhedron's face count", 0, faces);
+      if (sides == 0) w.fail("polyhedron " + std::to_string(k + 1) + kEmptyCell);
+      if (sides < 4) w.fail("polyhedron " + std::to_string(k + 1) + " has " + std::to_string(sides) + " faces");
+      std::vector<int> list(sides);
       for (int& f : list) {
         f = w.integer("a polyhedron's face", -faces, faces);
         if (f == 0) w.fail("a polyhedron's face 0");
@@ -192,6 +202,7 @@ void read_field(Words& w, NeperTess& t, const std::string& field) {
     for (int k = 0; k < n; ++k) {
       check_id(w, w.integer("domain vertex id"), k, "domain vertex");
       const Vec3 p = point(w, "domain vertex");
+      t.domain_vertices.push_back(p);
       for (int a = 0; a < 3; ++a) {
         t.domain.lo[a] = std::min(t.domain.lo[a], p[a]);
         t.domain.hi[a] = std::max(t.domain.hi[a], p[a]);

@@ -21,7 +21,8 @@ struct NeperTess {
   std::vector<std::vector<int>> polyhedra;  // #P (3D), each its faces as id + 1, negative when the
                                             // face's normal points into it
   std::vector<int> groups;                  // #cells (*group), empty when the file has none
-  std::string domain_type;                  // square, cube, circle, poly, ...
+  std::string domain_type;                  // cube (Neper 4 writes it for a 2D square too), square, circle, ...
+  std::vector<Vec3> domain_vertices;        // as written
   Box3 domain;                              // the domain vertices' bounding box
   // Periodic files (type periodic, a **periodicity section): the axes that are periodic,
   // their periods, and each secondary vertex's primary and lattice shift (vertex =

@@ -88,7 +88,7 @@ inline void write_faces(std::ofstream& f, const std::vector<std::vector<int>>& r
   }
 }
 
-// The domain: its corners (labels as Neper gives them), the rest of its description left out
+// The domain (Neper 4 calls a 2D square one a cube too): its corners (labels as Neper gives them), the rest of its description left out
 // of what grainmesh reads but present.
 inline void write_domain(std::ofstream& f, int dim, grainmesh::Vec3 origin, grainmesh::Vec3 size,
                          const std::string& type) {
@@ -107,7 +107,7 @@ inline void write_domain(std::ofstream& f, int dim, grainmesh::Vec3 origin, grai
 
 // A plane tessellation (not periodic, one ring per region) as a .tess.
 inline void write_tess(const std::filesystem::path& file, const grainmesh::Tessellation& t, grainmesh::Vec3 origin,
-                       const std::string& format = "3.4", const std::string& domain = "square",
+                       const std::string& format = "3.4", const std::string& domain = "cube",
                        const std::string& extra = "") {
   std::ofstream f(file);
   std::vector<grainmesh::Vec3> seeds, vertices;
@@ -233,7 +233,7 @@ inline void write_periodic_tess(const std::filesystem::path& file, const WholeCe
       f << "\n";
     }
   }
-  write_domain(f, w.dim, origin, w.box, w.dim == 2 ? "square" : "cube");
+  write_domain(f, w.dim, origin, w.box, "cube");
   f << " **periodicity\n  *general\n   1 1 " << (w.dim == 3 ? 1 : 0) << "\n   " << num(w.box.x) << " " << num(w.box.y)
     << " " << num(w.box.z) << "\n  *seed\n   0\n  *vertex\n   " << images.size() << "\n";
   for (const auto& [secondary, image] : images)

@@ -166,7 +166,21 @@ TEST_CASE("Neper files that are not what is read are refused naming the file", "
   refused("old.tess", "format 2.0 is not read (grainmesh reads the formats Neper 4 writes, 3.4 or 3.5)");
   test::write_tess(dir / "circle.tess", t, {}, "3.4", "circle");
   refused("circle.tess", "a circle domain");
-  test::write_tess(dir / "periodic.tess", t, {}, "3.4", "square", " **periodicity\n  *general\n   1 1 0\n   1 1 0\n");
+  // Neper 4 writes a 2D square domain as a cube; "square" is read too. A rotated square
+  // is not a box of ours.
+  Rng rng(1);
+  test::write_tess(dir / "square.tess", t, {}, "3.4", "square");
+  CHECK(plane_tessellation(read_neper_tess(dir / "square.tess"), by_rules(), rng, "square.tess").grains.size() == 6);
+  {
+    std::string text = test::read_file(dir / "square.tess");
+    const std::size_t at = text.find(" x1y0");
+    REQUIRE(at != std::string::npos);
+    const std::size_t y = text.rfind(' ', text.rfind(' ', at - 1) - 1) + 1;  // the corner's y
+    text.replace(y, text.rfind(' ', at - 1) - y, "0.100000000000");
+    std::ofstream(dir / "rotated.tess") << text;
+  }
+  refused("rotated.tess", "the domain is not a square with sides along the axes");
+  test::write_tess(dir / "periodic.tess", t, {}, "3.4", "cube", " **periodicity\n  *general\n   1 1 0\n   1 1 0\n");
   refused("periodic.tess", "has a **periodicity but is of type standard");
   test::WholeCells half = test::plane_whole_cells(test::random_seeds(6, {1.0, 1.0, 0.0}, 4), 1.0, 1.0);
   test::write_periodic_tess(dir / "x-only.tess", half, {});
