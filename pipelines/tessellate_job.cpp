@@ -122,12 +122,9 @@ bool read_neper_input(const Config& c, Job& job, int dimensions) {
                                   " (or leave it out)");
   o.periodic = n.periodic;
   o.grains = n.cells();
-  if (c.has("tessellation.neper_phases")) {
-    if (n.groups.empty())
-      c.fail("tessellation.neper_phases",
-             file.string() + " has no cell groups (*group; Neper's -group) to take the phases from");
-    job.neper.group_phases = read_label_phases(c, "tessellation.neper_phases", read_phases(c), false);
-  }
+  if (c.has("tessellation.neper_phases") && n.groups.empty())
+    c.fail("tessellation.neper_phases",
+           file.string() + " has no cell groups (*group; Neper's -group) to take the phases from");
   return true;
 }
 
@@ -164,6 +161,8 @@ void read_shared_keys(const Config& c, Job& job) {
   o.min_edge = d.min_edge;
   o.arrangement = d.arrangement;
   o.phases = read_phases(c);
+  if (c.has("tessellation.neper_phases"))  // read_neper_input has checked the file has groups
+    job.neper.group_phases = read_label_phases(c, "tessellation.neper_phases", o.phases, false);
   const long long width = c.integer("output.picture_width", job.picture_width);
   if (width < 100 || width > 20000) c.fail("output.picture_width", "must be between 100 and 20000");
   job.picture_width = static_cast<int>(width);

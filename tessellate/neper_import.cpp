@@ -248,7 +248,7 @@ std::vector<std::vector<int>> face_owners(const NeperTess& n, const std::string&
 // A solid cut by the domain (not periodic): its faces as they are, each ring's normal from
 // back into front (found from the polyhedra's centroids, whatever the file's signs), a box
 // face turned to face out of its one polyhedron.
-void bounded_cells(const NeperTess& n, Tessellation3& t, const std::string& source) {
+void bounded_cells(const NeperTess& n, const std::vector<std::vector<int>>& owners, Tessellation3& t) {
   for (const Vec3& v : n.vertices) t.vertices.push_back(in_cell(n, v));
   std::vector<Vec3> centroid(n.cells());
   for (int c = 0; c < n.cells(); ++c) {
@@ -258,7 +258,6 @@ void bounded_cells(const NeperTess& n, Tessellation3& t, const std::string& sour
     for (int v : corners) centroid[c] += t.vertices[v];
     centroid[c] = centroid[c] / static_cast<double>(corners.size());
   }
-  const auto owners = face_owners(n, source);
   for (std::size_t f = 0; f < n.faces.size(); ++f) {
     const auto& own = owners[f];
     Face3 face{.ring = n.faces[f], .back = own[0], .front = own.size() == 2 ? own[1] : -1};
@@ -323,7 +322,7 @@ Tessellation3 solid_tessellation(const NeperTess& n, const NeperPhases& ph, Rng&
   t.phases = ph.phases;
   const double total = t.width * t.height * t.depth;
   const std::vector<LatticeCorner> lattice = lattice_vertices(n, 3, source);
-  face_owners(n, source);
+  const std::vector<std::vector<int>> owners = face_owners(n, source);
   std::vector<std::vector<std::vector<LatticeCorner>>> sides(n.cells());
   for (int c = 0; c < n.cells(); ++c)
     for (int f : n.polyhedra[c]) sides[c].push_back(corners_of(n.faces[std::abs(f) - 1], lattice));
@@ -335,7 +334,7 @@ Tessellation3 solid_tessellation(const NeperTess& n, const NeperPhases& ph, Rng&
     for (const Vec3& v : n.vertices) bases.push_back(in_cell(n, v));
     cut = periodic_box_cut(bases, whole_cells(n, lattice, bases, size, volumes), size);
   } else {
-    bounded_cells(n, t, source);
+    bounded_cells(n, owners, t);
     for (int c = 0; c < n.cells(); ++c) volumes[c] = region_volume(t, t.regions[c]);
   }
   const std::vector<int> label = cell_phases(n, ph, volumes, neighbours, total, rng, source);
