@@ -11,6 +11,7 @@
 #include "grains3d/conformity_3d.hpp"
 #include "pipelines/result_pictures.hpp"
 #include "view/mesh_description.hpp"
+#include "view/box_view.hpp"
 #include "view/picture.hpp"
 #include "view/section.hpp"
 #include "view/vtu.hpp"
@@ -124,6 +125,16 @@ Json write_mesh_files(const std::filesystem::path& dir, const Tessellation3& t, 
     } catch (const GeometryError& e) {
       warnings.add("mesh.png not drawn: the section z = " + to_text(z) + " could not be drawn (" + e.what() +
                    "); another output.section may be");
+    }
+    try {
+      const BoxView view = box_view(m.mesh);
+      std::vector<int> phase;
+      for (const int t : view.tet) phase.push_back(m.phase[t]);
+      write_mesh_png(dir / "mesh_view.png", view.mesh,
+                     {.width_px = job.picture_width, .fill_by = phase, .outline_by = view.outline(m.grain), .shade = view.shade,
+                      .legend = names, .scale_bar = true, .length_unit = drawing.unit});
+    } catch (const GeometryError& e) {
+      warnings.add(std::string("mesh_view.png not drawn: ") + e.what());
     }
   }
   return {{"mesh",

@@ -9,6 +9,7 @@
 #include "analysis/thermal.hpp"
 #include "common/format.hpp"
 #include "pipelines/result_pictures.hpp"
+#include "view/box_view.hpp"
 #include "view/picture.hpp"
 #include "view/section.hpp"
 
@@ -40,7 +41,8 @@ std::vector<double> volume_fractions(const SolveInput<3>& in) {
 // tetrahedron cut showing the mean of its corners' cells (one cell each on tetrahedra),
 // sigma_xx and von Mises in MPa, in stress_xx`suffix`.png and von_mises`suffix`.png; and
 // each phase's volume-weighted distribution of the cells' von Mises stress in
-// stress_histogram`suffix`.png.
+// stress_histogram`suffix`.png; von Mises on the cell's surface seen from outside in
+// von_mises_view`suffix`.png.
 void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, const std::string& load_case,
                           const std::string& suffix) {
   if (in.picture_width == 0) return;
@@ -51,27 +53,39 @@ void write_state_pictures(const SolveInput<3>& in, const CaseFields& fields, con
                          phase_histograms(cell_mises, in.pm.volume, in.pm.phase, static_cast<int>(names.size()),
                                           kHistogramBins),
                          names, "volume");
+  // A tetrahedron's value: the mean of its corners' cells' (one cell each on tetrahedra), in MPa.
+  auto tet_mean = [&](int t, auto&& of) {
+    double sum = 0.0;
+    for (int k = 0; k < 4; ++k)
+      sum += of(fields.stress[static_cast<std::size_t>(in.pm.corner_cell[4 * static_cast<std::size_t>(t) + k])]);
+    return 0.25e-6 * sum;
+  };
+  auto sigma_xx = [](const double* c) { return c[0]; };
+  auto mises = [](const double* c) { return von_mises(openfoam_stress(c)); };
   const Section s = mesh_section(in.e.mesh, in.e.grain, in.e.phase, in.section_z);
-  std::vector<double> xx, mises;
+  std::vector<double> xx, section_mises;
   for (const int t : s.tet) {
-    double sum_xx = 0.0, sum_mises = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const double* c = fields.stress[static_cast<std::size_t>(in.pm.corner_cell[4 * static_cast<std::size_t>(t) + k])];
-      sum_xx += c[0];
-      sum_mises += von_mises(openfoam_stress(c));
-    }
-    xx.push_back(0.25e-6 * sum_xx);
-    mises.push_back(0.25e-6 * sum_mises);
+    xx.push_back(tet_mean(t, sigma_xx));
+    section_mises.push_back(tet_mean(t, mises));
   }
   const std::string at = ", z = " + to_text(in.section_z, 3) + (in.unit.empty() ? "" : " " + in.unit);
   // A state other than a load case's own (the thermal residual) says so in its titles.
   const std::string state = suffix.empty() ? "" : "residual ";
-  for (const auto& [name, field, title, signed_field] : {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)", true},
-                                                         std::tuple{"von_mises", &mises, "von Mises (MPa)", false}})
+  for (const auto& [name, field, title, signed_field] :
+       {std::tuple{"stress_xx", &xx, "sigma_xx (MPa)", true}, std::tuple{"von_mises", &section_mises, "von Mises (MPa)", false}})
     write_mesh_png(in.dir / (std::string(name) + suffix + ".png"), s.cells,
                    {.width_px = in.picture_width, .fill_by = {}, .outline_by = s.grain, .view = {}, .field = *field,
                     .field_name = state + title + at, .signed_field = signed_field, .legend = {}, .scale_bar = true,
                     .length_unit = in.unit});
+  // The same von Mises stress on the cell's surface, seen from outside.
+  BoxView view = box_view(in.e.mesh);
+  for (double& shade : view.shade) shade = 0.6 + 0.4 * shade;  // lighter: the colours still read against the bar
+  std::vector<double> surface_mises;
+  for (const int t : view.tet) surface_mises.push_back(tet_mean(t, mises));
+  write_mesh_png(in.dir / ("von_mises_view" + suffix + ".png"), view.mesh,
+                 {.width_px = in.picture_width, .fill_by = {}, .outline_by = view.outline(in.e.grain), .view = {}, .shade = view.shade,
+                  .field = surface_mises, .field_name = state + "von Mises (MPa) on the cell's surface",
+                  .signed_field = false, .legend = {}, .scale_bar = true, .length_unit = in.unit});
 }
 
 // results.vtu (unless pictures are off) of the periodic cases: each mechanical case's

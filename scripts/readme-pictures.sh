@@ -19,12 +19,14 @@ done
 cp "$tmp/3d/tessellation.png" docs/images/grains_3d_wc_co.png
 ./build/grainmesh mesh "$tmp/3d/tessellation.json" -o "$tmp/3d_mesh" --set output.picture_width=480 > /dev/null 2>&1
 cp "$tmp/3d_mesh/mesh.png" docs/images/grains_3d_wc_co_mesh.png
+cp "$tmp/3d_mesh/mesh_view.png" docs/images/grains_3d_wc_co_view.png
 ./build/grainmesh run data/examples/grains_3d_wc_co.ini -o "$tmp/3d_run" --solve --set homogenise.boundary=periodic \
   --set export.convert_to_meters=1e-6 --set load.delta_T=-1000 --set phase.WC.alpha=5.2e-6 \
   --set phase.Co.alpha=13.8e-6 --set output.picture_width=600 > /dev/null 2>&1
 cp "$tmp/3d_run/von_mises.png" docs/images/grains_3d_wc_co_von_mises.png
 cp "$tmp/3d_run/stress_xx.png" docs/images/grains_3d_wc_co_stress_xx.png
 cp "$tmp/3d_run/von_mises_thermal.png" docs/images/grains_3d_wc_co_von_mises_thermal.png
+cp "$tmp/3d_run/von_mises_view_thermal.png" docs/images/grains_3d_wc_co_von_mises_view_thermal.png
 ./build/grainmesh run -o "$tmp/run" --solve --set output.picture_width=800 > /dev/null
 cp "$tmp/run/stress_xx.png" docs/images/default_stress_xx.png
 cp "$tmp/run/stress_histogram.png" docs/images/default_stress_histogram.png

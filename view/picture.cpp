@@ -154,6 +154,11 @@ void draw_key(cairo_t* c, const Canvas& canvas, const PictureOptions& o, double 
 
 }  // namespace
 
+std::array<double, 3> label_colour(int label) {
+  const Rgb col = region_colour(label);
+  return {col.r, col.g, col.b};
+}
+
 std::string length_unit_name(double metres) {
   static constexpr std::array<std::pair<double, const char*>, 4> units{
       {{1e-9, "nm"}, {1e-6, "\u00b5m"}, {1e-3, "mm"}, {1.0, "m"}}};
@@ -292,7 +297,8 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& bo
     for (std::size_t t = 0; t < cell_count(mesh); ++t) {
       if (!trace(t)) continue;
       const Rgb col = field_colour(options, (options.field[t] - least) / (most - least));
-      cairo_set_source_rgb(c, col.r, col.g, col.b);
+      const double s = options.shade.empty() ? 1.0 : options.shade[t];
+      cairo_set_source_rgb(c, s * col.r, s * col.g, s * col.b);
       // A hairline of the same colour closes the seams between neighbours.
       cairo_fill_preserve(c);
       cairo_set_line_width(c, 0.5);
@@ -304,16 +310,23 @@ void fill_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& bo
   int max_label = field ? -1 : 0;
   if (!field)
     for (int r : options.fill_by) max_label = std::max(max_label, r);
-  for (int r = 0; r <= max_label; ++r) {
-    bool any = false;
-    for (std::size_t t = 0; t < cell_count(mesh); ++t) {
-      if (label(t) == r && trace(t)) any = true;
+  // Each label in each brightness (one, unless shaded) filled as one path.
+  std::vector<double> shades = options.shade;
+  std::sort(shades.begin(), shades.end());
+  shades.erase(std::unique(shades.begin(), shades.end()), shades.end());
+  if (shades.empty()) shades.push_back(1.0);
+  auto shade = [&](std::size_t t) { return options.shade.empty() ? 1.0 : options.shade[t]; };
+  for (int r = 0; r <= max_label; ++r)
+    for (const double s : shades) {
+      bool any = false;
+      for (std::size_t t = 0; t < cell_count(mesh); ++t) {
+        if (label(t) == r && shade(t) == s && trace(t)) any = true;
+      }
+      if (!any) continue;
+      const Rgb col = region_colour(r);
+      cairo_set_source_rgb(c, s * col.r, s * col.g, s * col.b);
+      cairo_fill(c);
     }
-    if (!any) continue;
-    const Rgb col = region_colour(r);
-    cairo_set_source_rgb(c, col.r, col.g, col.b);
-    cairo_fill(c);
-  }
 
 }
 
@@ -373,6 +386,7 @@ void draw_mesh(const std::filesystem::path& file, const Mesh& mesh, const Pictur
   check_size(options.field.size(), "field");
   check_size(options.fill_by.size(), "fill labelling");
   check_size(options.outline_by.size(), "outline labelling");
+  check_size(options.shade.size(), "shading");
   const bool key = has_key(options, field);
   Canvas canvas(box, options, (field ? 64 : 0) + (key ? static_cast<int>(kKeyRow) : 0));
   cairo_t* c = canvas.get();

@@ -1,6 +1,7 @@
 // Pictures of meshes (PNG, drawn with cairo), so a user sees what was made.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -21,6 +22,8 @@ struct PictureOptions {
   std::vector<int> fill_by{};
   std::vector<int> outline_by{};  // #T labels (e.g. grains): thick lines where they differ; empty = fill_by
   std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
+  // #T brightness factors in (0, 1] (a 3D view's lit sides); empty: all 1.
+  std::vector<double> shade{};
   // A field to show instead of fill_by: one value per triangle, coloured (viridis)
   // from its 1st to its 99th percentile, with a ticked colour bar titled `field_name`
   // below.
@@ -37,6 +40,9 @@ struct PictureOptions {
   bool scale_bar = false;
   std::string length_unit{};
 };
+
+// A label's fill colour (red, green, blue in [0, 1]), as fill_by draws it.
+std::array<double, 3> label_colour(int label);
 
 // The name of a length unit of `metres` metres (1e-6: "µm", also nm, mm, m; otherwise
 // "x <metres> m").

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/text_file.hpp"
+#include "tessellate/label_image.hpp"
+#include "view/picture.hpp"
 #include "helpers.hpp"
 
 using namespace grainmesh;
@@ -32,6 +34,20 @@ nlohmann::json solved_report(const fs::path& out, const std::vector<std::string>
   return nlohmann::json::parse(test::read_file(out / "report.json"));
 }
 
+// The share of an image's pixels that are `rgb` darkened by a factor of 0.5 to 1 (to 8-bit
+// rounding): a phase's colour on any of the lit sides of a 3D view.
+double colour_share(const LabelImage& image, std::array<double, 3> rgb) {
+  std::size_t hits = 0;
+  for (const std::uint32_t c : image.labels) {
+    const std::array<double, 3> px{double(c >> 16 & 0xff), double(c >> 8 & 0xff), double(c & 0xff)};
+    const double s = (px[0] + px[1] + px[2]) / (255.0 * (rgb[0] + rgb[1] + rgb[2]));
+    bool match = s >= 0.5 && s <= 1.01;
+    for (int k = 0; k < 3; ++k) match = match && std::abs(px[k] - 255.0 * s * rgb[k]) <= 3.0;
+    hits += match;
+  }
+  return static_cast<double>(hits) / static_cast<double>(image.labels.size());
+}
+
 }  // namespace
 
 TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 6 stiffness, its bounds",
@@ -41,7 +57,13 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   CHECK(report["solved"].get<bool>());
   CHECK(report["case_cells"]["shape"] == "polyhedra");
   // The xx case's stresses on the section z = output.section x depth.
-  for (const char* f : {"stress_xx.png", "von_mises.png"}) CHECK(fs::file_size(dir / "p" / f) > 10000);
+  for (const char* f : {"stress_xx.png", "von_mises.png", "von_mises_view.png"}) CHECK(fs::file_size(dir / "p" / f) > 10000);
+  // The cell seen from outside: both phases' colours (lit, so scaled) cover its surface.
+  const LabelImage view = read_label_image(dir / "p" / "mesh_view.png");
+  for (int phase : {0, 1}) {
+    CAPTURE(phase);
+    CHECK(colour_share(view, label_colour(phase)) > 0.02);
+  }
   const auto& eff = report["effective"];
   CHECK(eff["boundary"] == "periodic");
   REQUIRE(eff["load_cases"].size() == 6);
