@@ -36,7 +36,7 @@ struct RegionTets {
 // inner points improved.
 RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& points,
                        const std::vector<std::vector<std::array<int, 3>>>& faces, const GrainMesh3Options& o,
-                       const std::filesystem::path& dir) {
+                       TetgenWorkers& tetgen) {
   std::map<int, int> local;
   std::vector<int> global;
   std::vector<std::array<int, 3>> tris;
@@ -52,14 +52,12 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
     }
   std::vector<Vec3> surface;
   for (int v : global) surface.push_back(points[v]);
-  std::string name = std::to_string(r);  // not "r" + ...: GCC 12's -Wrestrict misfires on that
-  name.insert(0, 1, 'r');
   const TetgenOptions to{.radius_edge = o.radius_edge,
                          .min_dihedral_deg = o.min_dihedral_deg,
                          .max_volume = regular_tet_volume(o.size),
                          .deadline = o.deadline};
-  TetgenFill fill = tetgen_fill(surface, tris, to, dir, name,
-                                "region " + std::to_string(r) + " (grain " + std::to_string(t.regions[r].grain) + ")");
+  TetgenFill fill =
+      tetgen.fill(surface, tris, to, "region " + std::to_string(r) + " (grain " + std::to_string(t.regions[r].grain) + ")");
   const int nb = static_cast<int>(global.size());
   improve_tets(fill.points, fill.tets, nb, o.improvement_passes);
   RegionTets out;
@@ -93,10 +91,10 @@ GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options&
   const auto fill_start = std::chrono::steady_clock::now();
   const int nr = static_cast<int>(t.regions.size());
   std::vector<RegionTets> pieces(nr);
-  ScratchDirectory dir;
+  TetgenWorkers tetgen;
   tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(0, nr, [&](int r) { pieces[r] = fill_region(t, r, surface.points, surface.faces, o, dir.path()); });
+    tbb::parallel_for(0, nr, [&](int r) { pieces[r] = fill_region(t, r, surface.points, surface.faces, o, tetgen); });
   });
   m.fill_seconds = since(fill_start);
 

@@ -16,7 +16,7 @@ packages=(
   nlohmann-json3-dev                    # reports
   python3-jsonschema                    # the tests check every report against docs/report.schema.json
   openfoam                              # checkMesh and solidDisplacementFoam in the tests (Open MPI with it)
-  tetgen                                # fills 3D grains with tetrahedra (a program: Debian has no library)
+  libtet1.5-dev                         # TetGen's library: fills 3D grains with tetrahedra
   libeigen3-dev libsuitesparse-dev      # the finite-element reference solve (sparse Cholesky: CHOLMOD)
   libopenblas0-pthread                  # ... its dense blocks: CHOLMOD on the reference BLAS is 20x slower
   slurm-wlm                             # a one-node SLURM cluster for the sweep's job-array test
