@@ -36,22 +36,28 @@ void read_matrix_phase(const Config& c, TessellationOptions& o) {
   }
 }
 
-// A contiguity target and the phase it is of (grain mode only).
+// A contiguity target and the phase it is of.
 void read_contiguity(const Config& c, TessellationOptions& o) {
   if (c.has("tessellation.contiguity")) {
     const double target = c.number("tessellation.contiguity");
     if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
-    if (o.phase_mode != PhaseMode::grain)
-      c.fail("tessellation.contiguity", "a target only in grain mode (in binder mode the binder keeps the grains apart)");
+    const bool binder = o.phase_mode == PhaseMode::binder;
+    if (binder && o.phases.size() != 2)
+      c.fail("tessellation.contiguity", "in binder mode a target for one grain phase beside the matrix, got " +
+                                            std::to_string(o.phases.size() - 1) + " grain phases");
     if (c.has("tessellation.arrangement") && o.arrangement != Arrangement::random)
       c.fail("tessellation.contiguity", "give tessellation.arrangement or tessellation.contiguity, not both");
     o.contiguity = target;
-    // The phase it is of: named, else the rest phase, else the first.
+    // The phase it is of: named, else (binder mode) the grains' phase, else the rest phase,
+    // else the first.
     const std::string name = c.optional_text("tessellation.contiguity_phase").value_or("");
     for (std::size_t p = 0; p < o.phases.size(); ++p)
-      if (name.empty() ? o.phases[p].rest : o.phases[p].name == name) o.contiguity_phase = static_cast<int>(p);
+      if (name.empty() ? (binder ? static_cast<int>(p) != o.matrix_phase : o.phases[p].rest) : o.phases[p].name == name)
+        o.contiguity_phase = static_cast<int>(p);
     if (!name.empty() && o.contiguity_phase < 0)
       c.fail("tessellation.contiguity_phase", "no phase is named '" + name + "'");
+    if (binder && o.contiguity_phase == o.matrix_phase)
+      c.fail("tessellation.contiguity_phase", "binder mode sets the contiguity of the grains, not of the matrix '" + name + "'");
     if (o.contiguity_phase < 0) o.contiguity_phase = 0;
   } else if (c.has("tessellation.contiguity_phase")) {
     c.fail("tessellation.contiguity_phase", "only used with tessellation.contiguity");
@@ -69,8 +75,9 @@ void check_contiguity(const Tessellation& t, const TessellateJob<2>& job) {
   job.origin.fail("tessellation.contiguity",
          to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
              std::to_string(job.seed) + "): " +
-             (range ? "trading like-sized grains' labels moves its contiguity from " + to_text(range->first, 3) + " to " +
-                          to_text(range->second, 3)
+             (range ? (o.phase_mode == PhaseMode::binder ? "binder-free contacts between grains move its contiguity from "
+                                                         : "trading like-sized grains' labels moves its contiguity from ") +
+                          to_text(range->first, 3) + " to " + to_text(range->second, 3)
                     : "it reached " + to_text(reached, 3)) +
              "; ask within that, or change the fractions or the grains");
 }

@@ -119,12 +119,19 @@ void add_matrix(Tessellation& t, VertexTable& table, int grain, int phase) {
   auto link = [&](int from, int to) {
     if (!next.emplace(from, to).second) throw GeometryError("binder matrix: two grains touch at a vertex");
   };
+  // Where two grains touch (binder mode's contacts) each has the edge, one each way: no
+  // matrix there.
+  std::unordered_map<std::int64_t, char> piece_edges;
+  for (std::size_t r = 0; r < pieces; ++r) {
+    const auto& ring = t.regions[r].rings[0];
+    for (std::size_t n = 0; n < ring.size(); ++n) piece_edges[key(ring[n], ring[(n + 1) % ring.size()])] = 1;
+  }
   for (std::size_t r = 0; r < pieces; ++r) {
     const auto& ring = t.regions[r].rings[0];
     for (std::size_t n = 0; n < ring.size(); ++n) {
       const int a = ring[n], b = ring[(n + 1) % ring.size()];
       if (cell_side(t, t.vertices[a], t.vertices[b]) != kNoSide) covered[key(a, b)] = 1;
-      else link(b, a);
+      else if (!piece_edges.count(key(b, a))) link(b, a);
     }
   }
   // The cell's boundary, counter-clockwise, where no piece covers it.

@@ -102,9 +102,10 @@ void check_options(const TessellationOptions& o) {
   if (rests == 1 && sum > 1.0 + 1e-12) throw ConfigError("phase fractions exceed 1");
   if (o.phase_mode == PhaseMode::binder && (o.matrix_phase < 0 || o.matrix_phase >= static_cast<int>(o.phases.size())))
     throw ConfigError("binder mode needs a matrix phase");
-  if (o.contiguity && (o.phase_mode != PhaseMode::grain || !(*o.contiguity > 0.0 && *o.contiguity < 1.0) ||
-                       o.contiguity_phase < 0 || o.contiguity_phase >= static_cast<int>(o.phases.size())))
-    throw ConfigError("a contiguity target lies in (0, 1), for a phase, in grain mode");
+  if (o.contiguity && (!(*o.contiguity > 0.0 && *o.contiguity < 1.0) || o.contiguity_phase < 0 ||
+                       o.contiguity_phase >= static_cast<int>(o.phases.size()) ||
+                       (o.phase_mode == PhaseMode::binder && (o.phases.size() != 2 || o.contiguity_phase == o.matrix_phase))))
+    throw ConfigError("a contiguity target lies in (0, 1), for a phase (in binder mode the one grain phase)");
 }
 
 // The length of segment pq inside [0, W] x [0, H] (Liang-Barsky).

@@ -41,9 +41,10 @@ struct TessellationOptions {
   Arrangement arrangement = Arrangement::random;
   std::vector<Phase> phases;     // at least one
   int matrix_phase = -1;         // binder mode: index into phases
-  // Grain mode: the contiguity phase `contiguity_phase` is to have (descriptors.hpp),
-  // reached by trading the labels of like-sized grains after the fractions are met; none:
-  // as the arrangement gives it.
+  // The contiguity phase `contiguity_phase` is to have (descriptors.hpp). Grain mode:
+  // reached by trading the labels of like-sized grains after the fractions are met; binder
+  // mode (one grain phase): by the interfaces left without binder (binder_contacts.hpp);
+  // none: as the arrangement gives it, or no grain touching another in binder mode.
   std::optional<double> contiguity;
   int contiguity_phase = -1;
   Deadline deadline{};           // the run's wall-clock guard, asked every Lloyd step
@@ -106,7 +107,8 @@ struct TessellationStats {
   double binder_offset = 0.0;       // t of binder mode
   Vec2 window_origin{};             // where the cell was placed on the torus
   // A contiguity target missed by more than kContiguityTolerance: the lowest and highest
-  // contiguity the label trades reach from the same start (none when met).
+  // contiguity the label trades (binder mode: the contacts) reach from the same start
+  // (none when met).
   std::optional<std::pair<double, double>> contiguity_range;
   std::vector<PhaseStats> phases;
 };

@@ -81,6 +81,34 @@ TEST_CASE("a contiguity target is met within 0.02 on five seeds and three target
     }
 }
 
+TEST_CASE("binder mode: a contiguity target is met within 0.02 on five seeds and three targets, the binder's fraction kept",
+          "[cli][tessellate]") {
+  test::ScratchDir dir("binder-contiguity");
+  for (const int seed : {1, 2, 3, 4, 5})
+    for (const double target : {0.2, 0.4, 0.6}) {
+      const fs::path out = dir / (std::to_string(seed) + "-" + std::to_string(target));
+      const auto r = run_grainmesh({"tessellate", test::example("grains_binder").string(), "-o", out.string(), "--set",
+                                    "phase.Co.fraction=0.08", "--set", "tessellation.seed=" + std::to_string(seed),
+                                    "--set", "tessellation.contiguity=" + std::to_string(target), "--set",
+                                    "output.picture_width=200"});
+      INFO("seed " << seed << ", target " << target << "\n" << r.err);
+      REQUIRE(r.exit_code == 0);
+      const auto report = nlohmann::json::parse(test::read_file(out / "report.json"));
+      CHECK(std::abs(report["statistics"]["contiguity"]["WC"].get<double>() - target) <= 0.02);
+      for (const auto& p : report["phases"])
+        CHECK(std::abs(p["achieved_fraction"].get<double>() - p["target_fraction"].get<double>()) <= 0.005);
+      // As written and read back: the grains touch (WC-WC edges) and the binder is one phase.
+      const Tessellation t = tessellation_from_json<2>(test::read_file(out / "tessellation.json"), "tessellation.json");
+      CHECK(phase_descriptors(t)[0].contiguity ==
+            Approx(report["statistics"]["contiguity"]["WC"].get<double>()).epsilon(1e-9));
+      if (seed == 1 && target == 0.6) {  // meshed: conforming across the contacts and the binder's pockets
+        const auto m = run_grainmesh({"mesh", (out / "tessellation.json").string(), "-o", (dir / "mesh").string()});
+        INFO(m.err);
+        CHECK(m.exit_code == 0);
+      }
+    }
+}
+
 TEST_CASE("bad tessellation input gives one line naming the key and no output", "[cli][tessellate]") {
   test::ScratchDir dir("tess");
   const std::string grain = test::example("grains_wc_co").string();
@@ -112,7 +140,13 @@ TEST_CASE("bad tessellation input gives one line naming the key and no output", 
       {grain, {"tessellation.arrangement=", "tessellation.contiguity=0.3", "tessellation.contiguity_phase=Ni"},
        "tessellation.contiguity_phase: no phase is named 'Ni'"},
       {grain, {"tessellation.contiguity_phase=Co"}, "tessellation.contiguity_phase: only used with tessellation.contiguity"},
-      {binder, {"tessellation.contiguity=0.3"}, "tessellation.contiguity: a target only in grain mode"},
+      {binder, {"tessellation.contiguity=0.3", "tessellation.contiguity_phase=Co"},
+       "tessellation.contiguity_phase: binder mode sets the contiguity of the grains, not of the matrix 'Co'"},
+      // 12 % Co: with every interface but those near the cell's sides left without binder,
+      // the layer left grows so thick that the contacts shrink to this.
+      {binder, {"tessellation.contiguity=0.95"},
+       "tessellation.contiguity: 0.95 is out of reach for phase WC with these grains and fractions (seed 7): "
+       "binder-free contacts between grains move its contiguity from 0 to 0.582; ask within that"},
       // 15 % Co in grains of WC's size: WC touches itself along most of its boundary.
       {grain, {"tessellation.arrangement=", "tessellation.contiguity=0.3"},
        "tessellation.contiguity: 0.3 is out of reach for phase WC with these grains and fractions (seed 1): trading "
