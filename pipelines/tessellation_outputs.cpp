@@ -1,5 +1,6 @@
 #include "pipelines/tessellation_outputs.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -28,12 +29,20 @@ Json cell_fields(const T& t, std::uint64_t seed) {
           {"statistics", statistics}, {"vertices", t.vertices.size()}, {"regions", t.regions.size()}};
 }
 
-// The phases and their targets, under the summary line.
+// The phases with their targets and contiguity (a phase of grains), and the grains' sizes
+// as measured, under the summary line.
 template <class T>
-void print_phases(const T& t) {
-  for (std::size_t p = 0; p < t.phases.size(); ++p)
-    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)\n", t.phases[p].name.c_str(),
-                t.stats.phases[p].target_fraction, t.stats.phases[p].achieved_fraction, t.stats.phases[p].grains);
+void print_phases(const T& t, const char* diameter) {
+  for (std::size_t p = 0; p < t.phases.size(); ++p) {
+    const auto& s = t.stats.phases[p];
+    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)", t.phases[p].name.c_str(), s.target_fraction,
+                s.achieved_fraction, s.grains);
+    if (s.grains > 0 && std::isfinite(s.contiguity)) std::printf(", contiguity %.3f", s.contiguity);
+    std::printf("\n");
+  }
+  if (t.stats.diameter_mean > 0.0)
+    std::printf("  grain size: %s diameter %.4g mean, %.3f coefficient of variation\n", diameter,
+                t.stats.diameter_mean, t.stats.diameter_std / t.stats.diameter_mean);
 }
 
 }  // namespace
@@ -86,7 +95,7 @@ void print_tessellation_summary(const Tessellation& t, double seconds) {
   const TessellationStats& s = t.stats;
   std::printf("grainmesh tessellate: %d grains, %zu regions, sharpest corner %.1f deg, shortest edge %.3g (%.3f s)\n",
               s.grains, t.regions.size(), s.sharpest_corner_deg, s.shortest_edge, seconds);
-  print_phases(t);
+  print_phases(t, "equivalent-circle");
 }
 
 void print_tessellation_summary(const Tessellation3& t, double seconds) {
@@ -94,7 +103,7 @@ void print_tessellation_summary(const Tessellation3& t, double seconds) {
   std::printf("grainmesh tessellate: %d grains in 3D, %zu regions, %zu faces, sharpest dihedral %.1f deg, shortest "
               "edge %.3g (%.3f s)\n",
               s.grains, t.regions.size(), t.faces.size(), s.sharpest_dihedral_deg, s.shortest_edge, seconds);
-  print_phases(t);
+  print_phases(t, "equivalent-sphere");
 }
 
 }  // namespace grainmesh

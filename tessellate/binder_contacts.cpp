@@ -1,7 +1,9 @@
 #include "tessellate/binder_contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
 #include "common/ring.hpp"
 #include "tessellate/regularise.hpp"
@@ -76,6 +78,51 @@ bool clear_of_lines(Vec2 p, double W, double H, bool periodic, double step, long
   return x0 == *cx && y0 == *cy;
 }
 
+std::vector<Vec2> points_of(const std::vector<BinderCorner>& poly) {
+  std::vector<Vec2> pts;
+  for (const BinderCorner& c : poly) pts.push_back(c.p);
+  return pts;
+}
+
+// The interior angle of a counter-clockwise ring at its corner k.
+double interior_angle(const std::vector<Vec2>& ring, std::size_t k) {
+  const std::size_t n = ring.size();
+  const Vec2 v = ring[k], next = ring[(k + 1) % n] - v, prev = ring[(k + n - 1) % n] - v;
+  const double a = std::atan2(cross(next, prev), dot(next, prev));
+  return a < 0.0 ? a + 2.0 * std::numbers::pi : a;
+}
+
+// The interior angle of a ring at the corner with exactly the coordinates p (-1 if none).
+double angle_at(const std::vector<Vec2>& ring, Vec2 p) {
+  for (std::size_t k = 0; k < ring.size(); ++k)
+    if (ring[k] == p) return interior_angle(ring, k);
+  return -1.0;
+}
+
+// Corners sharper than this, of a grain or of the binder, where a bridge is made: they
+// would mesh into slivers.
+constexpr double kMinBridgeAngle = 20.0 * std::numbers::pi / 180.0;
+
+// Whether the grown grain's four bridge corners `own` (a0, b1, b0, a1 in its frame), the
+// binder beside them (at a0 and a1 the rest of the turn; at b1 and b0, `borrowed` in the
+// neighbour's frame, the rest after both grains) all stay at or above kMinBridgeAngle.
+bool bridge_corners_open(const std::vector<Vec2>& grown, const std::vector<Vec2>& neighbour, std::array<Vec2, 4> own,
+                         std::array<Vec2, 2> borrowed) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  for (int k = 0; k < 4; ++k) {
+    const double mine = angle_at(grown, own[static_cast<std::size_t>(k)]);
+    if (mine < kMinBridgeAngle) return false;
+    double binder = kTurn - mine;
+    if (k == 1 || k == 2) {
+      const double theirs = angle_at(neighbour, borrowed[static_cast<std::size_t>(k - 1)]);
+      if (theirs < 0.0) return false;
+      binder -= theirs;
+    }
+    if (binder < kMinBridgeAngle) return false;
+  }
+  return true;
+}
+
 // The boundary length of a grain that counts for contiguity: all of it on the torus; in
 // a bounded cell the part inside, not along the sides.
 double counted_perimeter(const std::vector<Vec2>& poly, double W, double H, bool periodic) {
@@ -108,6 +155,17 @@ BridgedGrains bridged_grains(const std::vector<std::vector<Vec2>>& cell_poly, co
   std::vector<std::vector<Bridge>> bridges(shrunk.size());
   std::vector<std::vector<int>> shared_from(shrunk.size());  // per corner of a grain: its outgoing edge's shared id
   for (std::size_t g = 0; g < shrunk.size(); ++g) shared_from[g].assign(shrunk[g].size(), -1);
+  // Grain g's corners with its bridges: after each corner a bridge starts at, the
+  // neighbour's two corners it borrows.
+  auto assemble = [&](std::size_t g) {
+    std::vector<BinderCorner> poly;
+    for (std::size_t k = 0; k < shrunk[g].size(); ++k) {
+      poly.push_back({shrunk[g][k].p, shrunk[g][k].p, 0, 0, shared_from[g][k]});
+      for (const Bridge& b : bridges[g])
+        if (b.after == k) poly.insert(poly.end(), {b.b1, b.b0});
+    }
+    return poly;
+  };
   auto find = [](const std::vector<TaggedCorner>& poly, int edge) {
     for (std::size_t k = 0; k < poly.size(); ++k)
       if (poly[k].edge == edge) return static_cast<int>(k);
@@ -130,24 +188,26 @@ BridgedGrains bridged_grains(const std::vector<std::vector<Vec2>>& cell_poly, co
     }
     if (!clear) continue;
     const int id = static_cast<int>(out.shared_edge.size());
+    auto& mine = bridges[static_cast<std::size_t>(k.a)];
+    mine.push_back({static_cast<std::size_t>(ia), {b1 + shift, b1, k.di, k.dj, id}, {b0 + shift, b0, k.di, k.dj, -1}});
+    // A bridge that would fold the grain onto itself (a short face beside a long one), or
+    // leave a corner of a grain or of the binder sharper than kMinBridgeAngle, is not made.
+    const std::vector<Vec2> grown = points_of(assemble(static_cast<std::size_t>(k.a)));
+    if (!ring_is_simple(grown) || !bridge_corners_open(grown, points_of(assemble(static_cast<std::size_t>(k.b))),
+                                                       {a0, b1 + shift, b0 + shift, a1}, {b1, b0})) {
+      mine.pop_back();
+      continue;
+    }
     out.shared_edge.push_back({b0, b1, 0, 0});
     shared_from[static_cast<std::size_t>(k.b)][static_cast<std::size_t>(ib)] = id;
-    bridges[static_cast<std::size_t>(k.a)].push_back(
-        {static_cast<std::size_t>(ia), {b1 + shift, b1, k.di, k.dj, id}, {b0 + shift, b0, k.di, k.dj, -1}});
     out.contact += norm(b1 - b0);
     ++out.contacts;
   }
   out.grains.resize(shrunk.size());
   for (std::size_t g = 0; g < shrunk.size(); ++g) {
-    std::vector<BinderCorner>& poly = out.grains[g];
-    for (std::size_t k = 0; k < shrunk[g].size(); ++k) {
-      poly.push_back({shrunk[g][k].p, shrunk[g][k].p, 0, 0, shared_from[g][k]});
-      for (const Bridge& b : bridges[g])
-        if (b.after == k) poly.insert(poly.end(), {b.b1, b.b0});
-    }
-    if (poly.empty()) continue;
-    std::vector<Vec2> pts;
-    for (const BinderCorner& c : poly) pts.push_back(c.p);
+    out.grains[g] = assemble(g);
+    if (out.grains[g].empty()) continue;
+    const std::vector<Vec2> pts = points_of(out.grains[g]);
     out.area += polygon_area(periodic ? pts : clip_to_cell(pts, W, H));
     out.perimeter += counted_perimeter(pts, W, H, periodic);
   }

@@ -109,6 +109,29 @@ TEST_CASE("binder mode: a contiguity target is met within 0.02 on five seeds and
     }
 }
 
+TEST_CASE("binder mode's contacts on Laguerre cells without Lloyd steps: no folded grain, no corner sharper than "
+          "the cells' own",
+          "[cli][tessellate]") {
+  // Short faces beside long ones: a contact there once folded its grain onto itself
+  // ("region 9 has a ring that is not simple") and left 3.7 degree binder corners.
+  test::ScratchDir dir("binder-laguerre");
+  double sharpest[2] = {0.0, 0.0};
+  for (const bool target : {false, true}) {
+    const fs::path out = dir / (target ? "target" : "wrapped");
+    std::vector<std::string> args{"tessellate", test::example("grains_binder").string(), "-o", out.string(),
+                                  "--set", "phase.Co.fraction=0.1", "--set", "tessellation.seed=3", "--set",
+                                  "tessellation.lloyd_iterations=0", "--set", "tessellation.size_cv=0.5"};
+    if (target) args.insert(args.end(), {"--set", "tessellation.contiguity=0.3"});
+    const auto r = run_grainmesh(args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto report = nlohmann::json::parse(test::read_file(out / "report.json"));
+    sharpest[target] = report["statistics"]["sharpest_corner_deg"].get<double>();
+    if (target) CHECK(std::abs(report["statistics"]["contiguity"]["WC"].get<double>() - 0.3) <= 0.02);
+  }
+  CHECK(sharpest[1] >= sharpest[0] - 1e-9);
+}
+
 TEST_CASE("bad tessellation input gives one line naming the key and no output", "[cli][tessellate]") {
   test::ScratchDir dir("tess");
   const std::string grain = test::example("grains_wc_co").string();
