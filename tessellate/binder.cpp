@@ -108,6 +108,25 @@ std::vector<BinderCorner> squared(const std::vector<BinderCorner>& grain, double
   return out;
 }
 
+// A grain as the cut takes it: each corner by its own bits (a borrowed one by its
+// neighbour's, with the lattice shift), each shared edge by the one canonical line.
+CutPolygon cut_polygon(const std::vector<BinderCorner>& grain, int id, int phase, const std::vector<CutEdge>& shared) {
+  CutPolygon poly{id, phase, {}, {}};
+  const std::size_t m = grain.size();
+  for (const BinderCorner& c : grain) poly.corners.push_back({c.base, c.i, c.j});
+  for (std::size_t q = 0; q < m; ++q) {
+    const BinderCorner& c = grain[q];
+    if (c.shared >= 0) {
+      CutEdge e = shared[static_cast<std::size_t>(c.shared)];
+      e.i = c.i, e.j = c.j;
+      poly.edges.push_back(e);
+    } else {
+      poly.edges.push_back({c.p, grain[(q + 1) % m].p, 0, 0});
+    }
+  }
+  return poly;
+}
+
 }  // namespace
 
 BinderGrains binder_grains(TorusGraph& g, const std::vector<int>& cells, const TessellationOptions& o, double scale,
@@ -173,22 +192,8 @@ BinderGrains binder_grains(TorusGraph& g, const std::vector<int>& cells, const T
   }
   std::vector<std::vector<int>> none(grains.size());
   const auto label = assign_phases(areas, none, o.phases, hard, W * H, o.arrangement, rng);
-  for (std::size_t k = 0; k < grains.size(); ++k) {
-    CutPolygon poly{static_cast<int>(k), label[k], {}, {}};
-    const std::size_t m = grains[k].size();
-    for (const BinderCorner& c : grains[k]) poly.corners.push_back({c.base, c.i, c.j});
-    for (std::size_t q = 0; q < m; ++q) {
-      const BinderCorner& c = grains[k][q];
-      if (c.shared >= 0) {
-        CutEdge e = bridged.shared_edge[static_cast<std::size_t>(c.shared)];
-        e.i = c.i, e.j = c.j;
-        poly.edges.push_back(e);
-      } else {
-        poly.edges.push_back({c.p, grains[k][(q + 1) % m].p, 0, 0});
-      }
-    }
-    out.polygons.push_back(std::move(poly));
-  }
+  for (std::size_t k = 0; k < grains.size(); ++k)
+    out.polygons.push_back(cut_polygon(grains[k], static_cast<int>(k), label[k], bridged.shared_edge));
   out.matrix_grain = static_cast<int>(grains.size());
   for (Vec2& s : g.seeds) s = o.periodic ? reduce_periodic(s - st.window_origin, W, H) : s;
   return out;

@@ -13,6 +13,7 @@
 #include "common/predicates.hpp"
 #include "common/ring.hpp"
 #include "common/spatial_grid.hpp"
+#include "tessellate/image_boundaries.hpp"
 #include "tessellate/read_tessellation.hpp"
 
 namespace grainmesh {
@@ -116,282 +117,6 @@ int merge_small_grains(std::vector<int>& grain, int& grains, const Pixels& px, i
   return merged;
 }
 
-enum Dir { kE = 0, kN = 1, kW = 2, kS = 3 };
-constexpr std::array<int, 4> kDx{1, 0, -1, 0}, kDy{0, 1, 0, -1};
-constexpr double kPinchOffset = 0.25;  // pixels: how far a pinch's two corners move apart
-
-// The boundaries on the lattice of pixel corners: vertex (i, j), 0 <= i <= nx, 0 <= j <= ny,
-// at (i, j) in pixel units; an edge of it is a boundary where the pieces on its two sides
-// differ (the image's border is not one of these: the sides are laid separately).
-struct Lattice {
-  int nx, ny;
-  const std::vector<int>& piece;  // per pixel
-
-  int at(int i, int j) const {
-    return i < 0 || j < 0 || i >= nx || j >= ny ? -1 : piece[static_cast<std::size_t>(j) * nx + i];
-  }
-  // The pieces left and right of the edge leaving (i, j) in direction d.
-  std::pair<int, int> sides(int i, int j, int d) const {
-    switch (d) {
-      case kE:
-        return {at(i, j), at(i, j - 1)};
-      case kN:
-        return {at(i - 1, j), at(i, j)};
-      case kW:
-        return {at(i - 1, j - 1), at(i - 1, j)};
-      default:
-        return {at(i, j - 1), at(i - 1, j - 1)};
-    }
-  }
-  bool boundary(int i, int j, int d) const {
-    const auto [l, r] = sides(i, j, d);
-    return l >= 0 && r >= 0 && l != r;
-  }
-  int degree(int i, int j) const {
-    int n = 0;
-    for (int d = 0; d < 4; ++d) n += boundary(i, j, d);
-    return n;
-  }
-  bool on_side(int i, int j) const { return i == 0 || j == 0 || i == nx || j == ny; }
-  // A piece touching itself across the corner (i, j): its two diagonal pixels one piece.
-  bool pinch(int i, int j) const {
-    return !on_side(i, j) && degree(i, j) == 4 && (at(i - 1, j - 1) == at(i, j) || at(i, j - 1) == at(i - 1, j));
-  }
-  bool junction(int i, int j) const { return on_side(i, j) || (degree(i, j) >= 3 && !pinch(i, j)); }
-  // At a pinch, the two pieces apart from the one touching itself keep their corners: the
-  // edge leaving in d continues along its partner, at the corner moved toward that pixel.
-  int partner(int i, int j, int d) const {
-    const bool ll_ur = at(i - 1, j - 1) == at(i, j);
-    static constexpr std::array<int, 4> a{kS, kW, kN, kE}, b{kN, kE, kS, kW};
-    return ll_ur ? a[d] : b[d];
-  }
-  Vec2 pinch_corner(int i, int j, int d) const {
-    const bool ll_ur = at(i - 1, j - 1) == at(i, j);
-    const int q = ll_ur ? (d == kE || d == kS ? 0 : 1) : (d == kE || d == kN ? 2 : 3);
-    static constexpr std::array<double, 4> ox{1, -1, 1, -1}, oy{-1, 1, 1, -1};
-    return {i + kPinchOffset * ox[q], j + kPinchOffset * oy[q]};
-  }
-  // The edge's index among the lattice's edges (horizontal ones first), for marking it.
-  std::size_t edge(int i, int j, int d) const {
-    const std::size_t horizontal = static_cast<std::size_t>(nx) * (ny + 1);
-    switch (d) {
-      case kE:
-        return static_cast<std::size_t>(j) * nx + i;
-      case kW:
-        return static_cast<std::size_t>(j) * nx + i - 1;
-      case kN:
-        return horizontal + static_cast<std::size_t>(j) * (nx + 1) + i;
-      default:
-        return horizontal + static_cast<std::size_t>(j - 1) * (nx + 1) + i;
-    }
-  }
-  std::size_t edges() const { return static_cast<std::size_t>(nx) * (ny + 1) + static_cast<std::size_t>(nx + 1) * ny; }
-  long long vertex(int i, int j) const { return static_cast<long long>(j) * (nx + 1) + i; }
-};
-
-// A boundary between two junctions (or a closed one), as traced and as kept.
-struct Chain {
-  std::vector<Vec2> points;       // pixel units, from the first junction to the last
-  long long first = 0, last = 0;  // lattice vertices of its ends (equal when closed)
-  int left = -1, right = -1;      // pieces
-  double tolerance = 0.0;
-  std::vector<int> kept;  // indices into points, ascending, ends included
-};
-
-std::vector<Chain> trace(const Lattice& L) {
-  std::vector<Chain> chains;
-  std::vector<char> seen(L.edges(), 0);
-  auto walk = [&](int i, int j, int d) {
-    Chain c;
-    c.first = L.vertex(i, j);
-    std::tie(c.left, c.right) = L.sides(i, j, d);
-    c.points.push_back({static_cast<double>(i), static_cast<double>(j)});
-    for (;;) {
-      seen[L.edge(i, j, d)] = 1;
-      i += kDx[d], j += kDy[d];
-      const int back = (d + 2) % 4;
-      if (L.junction(i, j)) break;
-      Vec2 here{static_cast<double>(i), static_cast<double>(j)};
-      int next = -1;
-      if (L.pinch(i, j)) {
-        here = L.pinch_corner(i, j, back);
-        next = L.partner(i, j, back);
-      } else {
-        for (int e = 0; e < 4; ++e)
-          if (e != back && L.boundary(i, j, e)) next = e;
-      }
-      if (seen[L.edge(i, j, next)]) break;  // round a closed boundary to where it began
-      c.points.push_back(here);
-      d = next;
-    }
-    c.points.push_back({static_cast<double>(i), static_cast<double>(j)});
-    c.last = L.vertex(i, j);
-    chains.push_back(std::move(c));
-  };
-  for (int j = 0; j <= L.ny; ++j)
-    for (int i = 0; i <= L.nx; ++i)
-      if (L.degree(i, j) > 0 && L.junction(i, j))
-        for (int d = 0; d < 4; ++d)
-          if (L.boundary(i, j, d) && !seen[L.edge(i, j, d)]) walk(i, j, d);
-  // What is left are closed boundaries with no junction: each begun at a corner of it that
-  // is not a pinch (the end of its first edge found).
-  for (int j = 0; j <= L.ny; ++j)
-    for (int i = 0; i <= L.nx; ++i)
-      if (L.degree(i, j) == 2 && !L.pinch(i, j))
-        for (int d = 0; d < 4; ++d)
-          if (L.boundary(i, j, d) && !seen[L.edge(i, j, d)]) walk(i, j, d);
-  return chains;
-}
-
-// Douglas-Peucker on points[a .. b]: marks the points kept between them.
-void simplify(const std::vector<Vec2>& pts, int a, int b, double tol, std::vector<char>& keep) {
-  std::vector<std::pair<int, int>> todo{{a, b}};
-  while (!todo.empty()) {
-    const auto [s, e] = todo.back();
-    todo.pop_back();
-    int far = -1;
-    double worst = tol * tol;
-    for (int k = s + 1; k < e; ++k) {
-      const double d = segment_distance2(pts[k], pts[s], pts[e]);
-      if (d > worst) worst = d, far = k;
-    }
-    if (far < 0) continue;
-    keep[far] = 1;
-    todo.push_back({s, far});
-    todo.push_back({far, e});
-  }
-}
-
-// The point of points[a .. b] farthest from the chord, strictly between; -1 when none.
-int farthest(const std::vector<Vec2>& pts, int a, int b) {
-  int far = -1;
-  double worst = -1.0;
-  for (int k = a + 1; k < b; ++k) {
-    const double d = segment_distance2(pts[k], pts[a], pts[b]);
-    if (d > worst) worst = d, far = k;
-  }
-  return far;
-}
-
-// The chain's kept points at its tolerance: a closed chain keeps at least three corners,
-// one sharing both ends with another chain at least one point between them.
-void keep_points(Chain& c, bool shares_ends) {
-  const auto& pts = c.points;
-  const int n = static_cast<int>(pts.size());
-  std::vector<char> keep(n, 0);
-  keep[0] = keep[n - 1] = 1;
-  if (c.first == c.last) {
-    int far = 1;
-    for (int k = 1; k < n - 1; ++k)
-      if (norm2(pts[k] - pts[0]) > norm2(pts[far] - pts[0])) far = k;
-    keep[far] = 1;
-    simplify(pts, 0, far, c.tolerance, keep);
-    simplify(pts, far, n - 1, c.tolerance, keep);
-    if (std::count(keep.begin(), keep.end(), 1) < 4) {
-      const int a = farthest(pts, 0, far), b = farthest(pts, far, n - 1);
-      const double da = a < 0 ? -1 : segment_distance2(pts[a], pts[0], pts[far]);
-      const double db = b < 0 ? -1 : segment_distance2(pts[b], pts[far], pts[n - 1]);
-      keep[da >= db ? a : b] = 1;
-    }
-  } else {
-    simplify(pts, 0, n - 1, c.tolerance, keep);
-    if (shares_ends && n > 2 && std::count(keep.begin(), keep.end(), 1) == 2) keep[farthest(pts, 0, n - 1)] = 1;
-  }
-  c.kept.clear();
-  for (int k = 0; k < n; ++k)
-    if (keep[k]) c.kept.push_back(k);
-}
-
-// Whether the kept segments s = pq and t = ru meet anywhere but at an end they share.
-bool conflict(Vec2 p, Vec2 q, Vec2 r, Vec2 u) {
-  const bool pr = p == r, pu = p == u, qr = q == r, qu = q == u;
-  if ((pr && qu) || (pu && qr)) return true;  // the same segment twice
-  auto overlaps = [](Vec2 o, Vec2 a, Vec2 b) { return orient2d(o, a, b) == 0 && dot(a - o, b - o) > 0.0; };
-  if (pr) return overlaps(p, q, u);
-  if (pu) return overlaps(p, q, r);
-  if (qr) return overlaps(q, p, u);
-  if (qu) return overlaps(q, p, r);
-  return segments_touch(p, q, r, u);
-}
-
-// Marks the chains whose kept form changes the boundaries' topology: a kept segment
-// meeting another, or passing over a kept point of any chain (the area between a segment
-// and the points it replaces holds it). Returns whether any was marked.
-bool mark_conflicts(const std::vector<Chain>& chains, int nx, int ny, std::vector<char>& bad) {
-  struct Segment {
-    int chain, a, b;  // kept points a < b of it
-  };
-  std::vector<Segment> segs;
-  for (int c = 0; c < static_cast<int>(chains.size()); ++c)
-    for (std::size_t k = 0; k + 1 < chains[c].kept.size(); ++k)
-      segs.push_back({c, chains[c].kept[k], chains[c].kept[k + 1]});
-  auto end_a = [&](const Segment& s) { return chains[s.chain].points[s.a]; };
-  auto end_b = [&](const Segment& s) { return chains[s.chain].points[s.b]; };
-  GridFrame frame{.lo = {-1.0, -1.0}, .cell = 16.0, .nx = nx / 16 + 2, .ny = ny / 16 + 2};
-  auto cells = [&](std::size_t k, auto emit) {
-    const Vec2 p = end_a(segs[k]), q = end_b(segs[k]);
-    for (int y = frame.row(std::min(p.y, q.y)); y <= frame.row(std::max(p.y, q.y)); ++y)
-      for (int x = frame.column(std::min(p.x, q.x)); x <= frame.column(std::max(p.x, q.x)); ++x)
-        emit(frame.index(x, y));
-  };
-  const CellLists lists(frame.cells(), segs.size(), cells);
-  bool any = false;
-  auto mark = [&](int c) { any = true, bad[c] = 1; };
-  for (std::size_t cell = 0; cell < frame.cells(); ++cell) {
-    const auto here = lists[cell];
-    for (std::size_t x = 0; x < here.size(); ++x)
-      for (std::size_t y = x + 1; y < here.size(); ++y) {
-        const Segment &s = segs[here[x]], &t = segs[here[y]];
-        if (conflict(end_a(s), end_b(s), end_a(t), end_b(t))) mark(s.chain), mark(t.chain);
-      }
-  }
-  // Kept points inside the area a segment sweeps from the points it replaces.
-  for (const Chain& c : chains)
-    for (int k : c.kept) {
-      const Vec2 p = c.points[k];
-      const auto near = lists[frame.index(frame.column(p.x), frame.row(p.y))];
-      for (int id : near) {
-        const Segment& s = segs[id];
-        if (s.b - s.a < 2) continue;
-        const Vec2 a = end_a(s), b = end_b(s);
-        if (p == a || p == b || p.x < std::min(a.x, b.x) - 1 || p.x > std::max(a.x, b.x) + 1 ||
-            p.y < std::min(a.y, b.y) - 1 || p.y > std::max(a.y, b.y) + 1)
-          continue;
-        const auto& pts = chains[s.chain].points;
-        const std::vector<Vec2> swept(pts.begin() + s.a, pts.begin() + s.b + 1);
-        if (inside_ring(swept, p)) mark(s.chain);
-      }
-    }
-  return any;
-}
-
-// Every chain kept at the tolerance, or finer where that changed the topology: a chain in
-// conflict halves its tolerance until none is (at zero each chain is as traced).
-void simplify_chains(std::vector<Chain>& chains, double tolerance, int nx, int ny) {
-  std::map<std::pair<long long, long long>, int> ends;
-  for (const Chain& c : chains) ++ends[std::minmax(c.first, c.last)];
-  auto shares = [&](const Chain& c) { return ends[std::minmax(c.first, c.last)] > 1; };
-  for (Chain& c : chains) {
-    c.tolerance = tolerance;
-    keep_points(c, shares(c));
-  }
-  std::vector<char> bad(chains.size(), 0);
-  for (int round = 0; mark_conflicts(chains, nx, ny, bad); ++round) {
-    if (round > 40)
-      throw GeometryError("the traced boundaries could not be simplified without crossing (a grainmesh bug)");
-    for (std::size_t c = 0; c < chains.size(); ++c)
-      if (bad[c]) {
-        chains[c].tolerance = chains[c].tolerance < 0.05 ? 0.0 : 0.5 * chains[c].tolerance;
-        keep_points(chains[c], shares(chains[c]));
-        bad[c] = 0;
-      }
-  }
-}
-
-}  // namespace
-
-namespace {
-
 // The phase of each grain from the table, by the label it carries; a label the table does
 // not name refused.
 std::vector<int> phases_from_table(const std::vector<std::uint32_t>& label, const std::vector<long long>& pixels,
@@ -422,18 +147,27 @@ std::string label_text(std::uint32_t label, bool colour) {
   return s;
 }
 
-Tessellation image_tessellation(const LabelImage& image, const ImageTessellationOptions& o, Rng& rng,
-                                const std::string& source) {
-  const Pixels px{image.width, image.height, o.periodic};
-  const double h = o.pixel_size;
-  // Grains: the regions of one label, small ones merged or refused.
+// The image's grains: its 4-connected regions of one label (across the borders when
+// periodic), those below o.min_grain_pixels refused or merged; each pixel's grain, each
+// grain's label, how many were merged.
+struct ImageGrains {
+  std::vector<int> grain;
   int grains = 0;
-  std::vector<int> grain = connected(image.labels, px, &grains);
+  std::vector<std::uint32_t> label;
+  int merged = 0;
+};
+ImageGrains image_grains(const LabelImage& image, const Pixels& px, const ImageTessellationOptions& o,
+                         const std::string& source) {
+  ImageGrains out;
+  int& grains = out.grains;
+  std::vector<int>& grain = out.grain;
+  std::vector<std::uint32_t>& label = out.label;
+  int& merged = out.merged;
+  grain = connected(image.labels, px, &grains);
   std::vector<long long> pixels(grains, 0);
   for (int g : grain) ++pixels[g];
-  std::vector<std::uint32_t> label(grains);
+  label.assign(grains, 0);
   for (std::size_t p = 0; p < grain.size(); ++p) label[grain[p]] = image.labels[p];
-  int merged = 0;
   const long long smallest = *std::min_element(pixels.begin(), pixels.end());
   if (smallest < o.min_grain_pixels && grains > 1) {
     if (!o.merge_small) {
@@ -455,28 +189,15 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     label.clear();
     for (int g : kept) label.push_back(old[g]);
   }
-  if (grains < 2) throw GeometryError(source + ": the image is one grain (one label throughout)");
-  std::vector<std::uint32_t> key(grain.size());
-  pixels.assign(grains, 0);
-  for (std::size_t p = 0; p < grain.size(); ++p) key[p] = static_cast<std::uint32_t>(grain[p]), ++pixels[grain[p]];
-  // Pieces: each grain's parts inside the image, the regions of the tessellation.
-  int pieces = 0;
-  const std::vector<int> piece = connected(key, Pixels{px.nx, px.ny, false}, &pieces);
-  std::vector<int> grain_of(pieces);
-  for (std::size_t p = 0; p < piece.size(); ++p) grain_of[piece[p]] = grain[p];
-  // Boundaries traced and simplified.
-  const Lattice lattice{px.nx, px.ny, piece};
-  std::vector<Chain> chains = trace(lattice);
-  simplify_chains(chains, o.tolerance, px.nx, px.ny);
-  const int nx = px.nx, ny = px.ny;
-  Tessellation t;
-  t.width = nx * h;
-  t.height = ny * h;
-  t.periodic = o.periodic;
-  t.phases = o.phases;
-  // Vertices: the lattice corners the boundaries end at and the sides' corners and
-  // crossings (a periodic cell's on both its opposite sides), then each boundary's kept
-  // points between its ends.
+  return out;
+}
+
+// The boundaries as the tessellation's vertices and edges: the lattice corners the chains
+// end at and the sides' corners and crossings (a periodic cell's on both its opposite
+// sides), then each chain's kept points between its ends; `h` the pixel size.
+void add_boundaries(Tessellation& t, const Lattice& lattice, const std::vector<Chain>& chains, bool periodic,
+                    double h) {
+  const int nx = lattice.nx, ny = lattice.ny;
   std::unordered_map<long long, int> vertex_of;
   auto corner = [&](int i, int j) {
     const auto [it, fresh] = vertex_of.emplace(lattice.vertex(i, j), static_cast<int>(t.vertices.size()));
@@ -501,7 +222,7 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
   auto crossings = [&](int n, auto inner, auto across) {
     std::vector<int> at{0, n};
     for (int k = 1; k < n; ++k)
-      if (inner(k) || (o.periodic && across(k))) at.push_back(k);
+      if (inner(k) || (periodic && across(k))) at.push_back(k);
     std::sort(at.begin(), at.end());
     return at;
   };
@@ -521,8 +242,11 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     t.edges.push_back({corner(0, left[k + 1]), corner(0, left[k]), lattice.at(0, left[k]), -1});
   for (std::size_t k = 0; k + 1 < right.size(); ++k)
     t.edges.push_back({corner(nx, right[k]), corner(nx, right[k + 1]), lattice.at(nx - 1, right[k]), -1});
-  // Regions: the pieces, each ring followed along the edges with the piece on the left
-  // (a hole's then turned to run counter-clockwise too, its outer ring first).
+}
+
+// The pieces' rings, each followed along the edges with the piece on the left (a hole's
+// then turned to run counter-clockwise too, its outer ring first).
+void add_rings(Tessellation& t, int pieces, const std::string& source) {
   t.regions.resize(pieces);
   std::vector<std::map<int, int>> next(pieces);
   for (const TessEdge& e : t.edges) {
@@ -550,8 +274,11 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     }
     for (auto& ring : holes) t.regions[r].rings.push_back(std::move(ring));
   }
-  // Grains: seeds at the pixel of each one's largest piece nearest that piece's centroid;
-  // neighbours across every boundary (across the borders when periodic); phases.
+}
+
+// Each grain's seed: the pixel of its largest piece nearest that piece's centroid.
+std::vector<Vec2> grain_seeds(const std::vector<int>& piece, const std::vector<int>& grain_of, int grains, int pieces,
+                              int nx, double h) {
   std::vector<long long> piece_pixels(pieces, 0);
   std::vector<Vec2> piece_sum(pieces, Vec2{});
   for (std::size_t p = 0; p < piece.size(); ++p) {
@@ -570,6 +297,42 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     const double d = norm2(centre - piece_sum[r] / static_cast<double>(piece_pixels[r]));
     if (d < nearest[g]) nearest[g] = d, seed[g] = centre * h;
   }
+  return seed;
+}
+
+Tessellation image_tessellation(const LabelImage& image, const ImageTessellationOptions& o, Rng& rng,
+                                const std::string& source) {
+  const Pixels px{image.width, image.height, o.periodic};
+  const double h = o.pixel_size;
+  // Grains: the regions of one label, small ones merged or refused.
+  ImageGrains ig = image_grains(image, px, o, source);
+  const int grains = ig.grains;
+  const std::vector<int>& grain = ig.grain;
+  const std::vector<std::uint32_t>& label = ig.label;
+  if (grains < 2) throw GeometryError(source + ": the image is one grain (one label throughout)");
+  std::vector<std::uint32_t> key(grain.size());
+  std::vector<long long> pixels(grains, 0);
+  for (std::size_t p = 0; p < grain.size(); ++p) key[p] = static_cast<std::uint32_t>(grain[p]), ++pixels[grain[p]];
+  // Pieces: each grain's parts inside the image, the regions of the tessellation.
+  int pieces = 0;
+  const std::vector<int> piece = connected(key, Pixels{px.nx, px.ny, false}, &pieces);
+  std::vector<int> grain_of(pieces);
+  for (std::size_t p = 0; p < piece.size(); ++p) grain_of[piece[p]] = grain[p];
+  // Boundaries traced and simplified.
+  const Lattice lattice{px.nx, px.ny, piece};
+  std::vector<Chain> chains = trace(lattice);
+  simplify_chains(chains, o.tolerance, px.nx, px.ny);
+  const int nx = px.nx, ny = px.ny;
+  Tessellation t;
+  t.width = nx * h;
+  t.height = ny * h;
+  t.periodic = o.periodic;
+  t.phases = o.phases;
+  add_boundaries(t, lattice, chains, o.periodic, h);
+  t.regions.resize(pieces);
+  add_rings(t, pieces, source);
+  // Grains: seeds; neighbours across every boundary (across the borders when periodic); phases.
+  const std::vector<Vec2> seed = grain_seeds(piece, grain_of, grains, pieces, px.nx, h);
   std::set<std::pair<int, int>> touching;
   px.for_pairs([&](std::size_t p, std::size_t q) {
     if (grain[p] != grain[q]) touching.insert(std::minmax(grain[p], grain[q]));
@@ -593,7 +356,7 @@ Tessellation image_tessellation(const LabelImage& image, const ImageTessellation
     corners += static_cast<double>(t.regions[r].rings[0].size());
   }
   if (o.periodic) t.partners = pair_by_position(t.vertices, Box{{0.0, 0.0}, {t.width, t.height}});
-  t.stats.removed_grains = merged;
+  t.stats.removed_grains = ig.merged;
   t.stats.edges_per_grain_mean = corners / grains;
   t.stats.neighbours_mean = 2.0 * static_cast<double>(touching.size()) / grains;
   measure_read_tessellation(t, source);
