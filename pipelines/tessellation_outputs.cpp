@@ -10,6 +10,7 @@
 #include "common/format.hpp"
 #include "pipelines/result_pictures.hpp"
 #include "tessellate/tessellation_json.hpp"
+#include "view/box_view.hpp"
 #include "view/picture.hpp"
 #include "view/section.hpp"
 #include "view/vtu.hpp"
@@ -74,6 +75,18 @@ Json write_tessellation_files(const std::filesystem::path& dir, const Tessellati
       // A picture is no reason to fail a run.
       warnings.add("tessellation.png not drawn: the section z = " + to_text(z) + " could not be drawn (" + e.what() +
                    "); another output.section may be");
+    }
+    try {
+      const BoxView view = box_view(t);
+      std::vector<int> phase, region_grain;
+      for (const int r : view.tet) phase.push_back(t.regions[static_cast<std::size_t>(r)].phase);
+      for (const Region3& r : t.regions) region_grain.push_back(r.grain);
+      write_mesh_png(dir / "tessellation_view.png", view.mesh,
+                     {.width_px = job.picture_width, .fill_by = phase, .outline_by = view.outline(region_grain),
+                      .shade = view.shade, .mesh_edges = false, .legend = phase_names(t.phases), .scale_bar = true,
+                      .length_unit = drawing.unit});
+    } catch (const GeometryError& e) {
+      warnings.add(std::string("tessellation_view.png not drawn: ") + e.what());
     }
   }
   Json fields{{"dimensions", 3}, {"width", t.width}, {"height", t.height}, {"depth", t.depth}};

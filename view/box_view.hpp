@@ -8,6 +8,7 @@
 #include "common/vec3.hpp"
 #include "mesh/tetmesh.hpp"
 #include "mesh/trimesh.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -21,7 +22,7 @@ struct BoxView {
   std::vector<int> tet;       // the tetrahedron each triangle is a face of
   std::vector<double> shade;  // each triangle's brightness in (0, 1]: its side's, lit from above the viewer
   std::vector<int> side;      // each triangle's side of the box: 2 axis + 1 at the high end, 2 axis at the low
-  // Labels for PictureOptions::outline_by: the triangles' `grain` (one per tetrahedron)
+  // Labels for PictureOptions::outline_by: the triangles' `grain` (one per tetrahedron, or region)
   // and their side, so that the box's edges are drawn as the grain boundaries are.
   std::vector<int> outline(const std::vector<int>& grain) const;
 };
@@ -31,5 +32,8 @@ struct BoxView {
 // cell's, so a scale bar measures lengths parallel to it. Throws GeometryError when no
 // face shows (an empty mesh, or one that is not a box).
 BoxView box_view(const TetMesh& mesh);
+// The same for a tessellation's faces on the box, each fanned from its centre into
+// triangles whose `tet` is the face's region.
+BoxView box_view(const Tessellation3& t);
 
 }  // namespace grainmesh

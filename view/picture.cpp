@@ -356,7 +356,7 @@ void stroke_mesh(cairo_t* c, const Canvas& canvas, const Mesh& mesh, const Box& 
     cairo_set_source_rgb(c, col.r, col.g, col.b);
     cairo_stroke(c);
   };
-  if (mean_len >= 3.0 && !field)
+  if (mean_len >= 3.0 && !field && options.mesh_edges)
     stroke([](const MeshEdge&) { return true; }, std::clamp(mean_len / 25.0, 0.4, 1.0), {0.25, 0.25, 0.30});
   const double thick = std::clamp(mean_len / 6.0, 1.5, 3.0);
   const std::vector<int>& outline = options.outline_by.empty() ? options.fill_by : options.outline_by;

@@ -24,6 +24,9 @@ struct PictureOptions {
   std::optional<Box> view{};      // draw only this window (a detail); default = the whole mesh
   // #T brightness factors in (0, 1] (a 3D view's lit sides); empty: all 1.
   std::vector<double> shade{};
+  // The thin lines along every triangle's edges (when long enough to see); off for cells
+  // cut into triangles only to be drawn.
+  bool mesh_edges = true;
   // A field to show instead of fill_by: one value per triangle, coloured (viridis)
   // from its 1st to its 99th percentile, with a ticked colour bar titled `field_name`
   // below.

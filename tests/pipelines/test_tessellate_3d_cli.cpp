@@ -178,7 +178,8 @@ TEST_CASE("grainmesh run tessellates, meshes and exports a 3D config in one go, 
                                 "mesh.tets_per_grain=300"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  for (const char* f : {"tessellation.json", "tessellation.vtu", "tessellation.png", "mesh.vtu", "mesh.png", "config.ini"})
+  for (const char* f : {"tessellation.json", "tessellation.vtu", "tessellation.png", "tessellation_view.png", "mesh.vtu",
+                        "mesh.png", "mesh_view.png", "config.ini"})
     CHECK(fs::file_size(dir / "a" / f) > 100);
   const auto report = nlohmann::json::parse(test::read_file(dir / "a" / "report.json"));
   CHECK(report["grains"].get<int>() == 30);

@@ -71,3 +71,31 @@ TEST_CASE("a 3D view shows the three sides facing the viewer, each projected by 
   CHECK(view.outline(one_grain) == view.side);
   CHECK_THROWS_AS(box_view(TetMesh{}), GeometryError);
 }
+
+TEST_CASE("a 3D tessellation's view: its box faces fanned from their centres, corners in a row giving no flat triangle",
+          "[view]") {
+  // One region filling the box W x H x D; the top face and the front face (y = 0) share
+  // the edge z = D, y = 0, split at its middle by a vertex of both.
+  const double W = 2.0, H = 1.0, D = 0.5;
+  Tessellation3 t;
+  t.width = W, t.height = H, t.depth = D;
+  for (int k = 0; k < 8; ++k) t.vertices.push_back({k & 1 ? W : 0.0, k & 2 ? H : 0.0, k & 4 ? D : 0.0});
+  t.vertices.push_back({0.5 * W, 0.0, D});  // 8: the middle of the edge from 4 to 5
+  // Rings turning counter-clockwise seen from outside (right-hand normal outward: back 0, front -1).
+  const std::vector<std::vector<int>> rings{{0, 2, 3, 1}, {4, 8, 5, 7, 6}, {0, 1, 5, 8, 4},
+                                            {2, 6, 7, 3}, {0, 4, 6, 2},    {1, 3, 7, 5}};
+  Region3 region;
+  for (std::size_t f = 0; f < rings.size(); ++f) {
+    t.faces.push_back(Face3{rings[f], 0, -1});
+    region.faces.push_back(static_cast<int>(f));
+  }
+  t.regions.push_back(region);
+  const BoxView view = box_view(t);
+  // The top (5 corners), front (5) and right (4) sides, each corner's triangle from the centre.
+  REQUIRE(view.mesh.triangles.size() == 5 + 5 + 4);
+  for (int k = 0; k < static_cast<int>(view.mesh.triangles.size()); ++k) CHECK(triangle_area(view.mesh, k) > 0.0);
+  CHECK_NOTHROW(mesh_edges(view.mesh));
+  const Vec3 v = box_view_direction();
+  CHECK(mesh_area(view.mesh) == Approx(H * D * v.x - W * D * v.y + W * H * v.z).epsilon(1e-12));
+  for (const int r : view.tet) CHECK(r == 0);
+}
