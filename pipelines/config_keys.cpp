@@ -39,7 +39,7 @@ std::vector<ConfigKey> cell_keys() {
       {"tessellation.arrangement", T, "random", "random, dispersed (a phase's grains avoid each other) or clustered (they grow together)",
        R"md(grain mode: `random`, `dispersed` (grains of a phase avoid each other) or `clustered` (they grow together))md"},
       {"tessellation.matrix_phase", T, "matrix or binder", "binder mode: the matrix phase's name"},
-      {"tessellation.contiguity", T, "-", "2D: the contiguity to reach for tessellation.contiguity_phase (0 < C < 1): grain mode by trading labels, binder mode by leaving interfaces without binder"},
+      {"tessellation.contiguity", T, "-", "the contiguity to reach for tessellation.contiguity_phase (0 < C < 1): grain mode (2D and 3D) by trading labels, binder mode (2D) by leaving interfaces without binder"},
       {"tessellation.contiguity_phase", T, "the rest phase (binder mode: the grain phase)", "the phase whose contiguity tessellation.contiguity sets"},
       {"phase.*.fraction", T, "-", "a phase's area (2D) or volume (3D) fraction, in (0, 1], or rest; required for every phase"},
       {"phase.*.E", T | E, "-", "a phase's Young's modulus, Pa (WC 700e9); below 1 MPa refused unless units.checked",

@@ -36,12 +36,25 @@ void read_matrix_phase(const Config& c, TessellationOptions& o) {
   }
 }
 
-// A contiguity target and the phase it is of.
-void read_contiguity(const Config& c, TessellationOptions& o) {
+// Whether the options are a 2D cell's in binder mode (3D cells have grain mode only).
+template <class Options>
+bool binder_mode(const Options& o) {
+  if constexpr (requires { o.phase_mode; }) return o.phase_mode == PhaseMode::binder;
+  return false;
+}
+template <class Options>
+int matrix_phase(const Options& o) {
+  if constexpr (requires { o.matrix_phase; }) return o.matrix_phase;
+  return -1;
+}
+
+// A contiguity target and the phase it is of (2D and 3D).
+template <class Options>
+void read_contiguity(const Config& c, Options& o) {
   if (c.has("tessellation.contiguity")) {
     const double target = c.number("tessellation.contiguity");
     if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
-    const bool binder = o.phase_mode == PhaseMode::binder;
+    const bool binder = binder_mode(o);
     if (binder && o.phases.size() != 2)
       c.fail("tessellation.contiguity", "in binder mode a target for one grain phase beside the matrix, got " +
                                             std::to_string(o.phases.size() - 1) + " grain phases");
@@ -52,11 +65,11 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
     // else the first.
     const std::string name = c.optional_text("tessellation.contiguity_phase").value_or("");
     for (std::size_t p = 0; p < o.phases.size(); ++p)
-      if (name.empty() ? (binder ? static_cast<int>(p) != o.matrix_phase : o.phases[p].rest) : o.phases[p].name == name)
+      if (name.empty() ? (binder ? static_cast<int>(p) != matrix_phase(o) : o.phases[p].rest) : o.phases[p].name == name)
         o.contiguity_phase = static_cast<int>(p);
     if (!name.empty() && o.contiguity_phase < 0)
       c.fail("tessellation.contiguity_phase", "no phase is named '" + name + "'");
-    if (binder && o.contiguity_phase == o.matrix_phase)
+    if (binder && o.contiguity_phase == matrix_phase(o))
       c.fail("tessellation.contiguity_phase", "binder mode sets the contiguity of the grains, not of the matrix '" + name + "'");
     if (o.contiguity_phase < 0) o.contiguity_phase = 0;
   } else if (c.has("tessellation.contiguity_phase")) {
@@ -65,8 +78,9 @@ void read_contiguity(const Config& c, TessellationOptions& o) {
 }
 
 // A contiguity target missed: refused, with the range the trades reach.
-void check_contiguity(const Tessellation& t, const TessellateJob<2>& job) {
-  const TessellationOptions& o = job.options;
+template <class Cell, int D>
+void check_contiguity(const Cell& t, const TessellateJob<D>& job) {
+  const auto& o = job.options;
   if (!o.contiguity) return;
   const double reached = t.stats.phases[o.contiguity_phase].contiguity;
   if (std::abs(reached - *o.contiguity) <= kContiguityTolerance) return;
@@ -75,7 +89,7 @@ void check_contiguity(const Tessellation& t, const TessellateJob<2>& job) {
   job.origin.fail("tessellation.contiguity",
          to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
              std::to_string(job.seed) + "): " +
-             (range ? (o.phase_mode == PhaseMode::binder ? "binder-free contacts between grains move its contiguity from "
+             (range ? (binder_mode(o) ? "binder-free contacts between grains move its contiguity from "
                                                          : "trading like-sized grains' labels moves its contiguity from ") +
                           to_text(range->first, 3) + " to " + to_text(range->second, 3)
                     : "it reached " + to_text(reached, 3)) +
@@ -84,9 +98,8 @@ void check_contiguity(const Tessellation& t, const TessellateJob<2>& job) {
 
 // Keys of the 2D stage with no 3D meaning yet, and why.
 void refuse_2d_only(const Config& c) {
-  for (const char* key : {"tessellation.matrix_phase", "tessellation.contiguity",
-                          "tessellation.contiguity_phase"})
-    if (c.has(key)) c.fail(key, "not available for 3D cells yet (domain.depth is set)");
+  if (c.has("tessellation.matrix_phase"))
+    c.fail("tessellation.matrix_phase", "not available for 3D cells yet (domain.depth is set)");
   if (c.optional_text("tessellation.phase_mode").value_or("grain") != "grain")
     c.fail("tessellation.phase_mode", "3D cells have grain mode only so far, got '" + c.text("tessellation.phase_mode") + "'");
 }
@@ -226,6 +239,7 @@ TessellateJob<3> read_tessellate_job<3>(const Config& c) {
   refuse_2d_only(c);
   TessellateJob<3> job;
   read_shared_keys(c, job);
+  read_contiguity(c, job.options);
   job.section = c.number("output.section", job.section);
   if (!(job.section > 0.0 && job.section < 1.0))
     c.fail("output.section", "must lie in (0, 1) (a fraction of domain.depth), got " + c.text("output.section"));
@@ -271,6 +285,7 @@ Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
                         (job.options.seeds.empty() ? "tessellation.seed" : "placing of tessellation.seeds") +
                         " or tessellation.lloyd_iterations avoids it");
   }
+  check_contiguity(t, job);
   return t;
 }
 

@@ -29,6 +29,8 @@ struct Boundary {
       }
   }
   double contiguity(double own_, double other_) const {
+    // The sums are kept up by additions and removals: a rounding's worth is none.
+    if (own_ <= 1e-12 * (own_ + other_)) own_ = 0.0;
     return own_ + other_ > 0.0 ? 2.0 * own_ / (2.0 * own_ + other_) : 0.0;
   }
   double contiguity() const { return contiguity(own, other); }
@@ -115,6 +117,20 @@ double arrange_contiguity(std::vector<int>& label, const std::vector<double>& ar
     if (!changed) break;
   }
   return b.contiguity();
+}
+
+std::optional<std::pair<double, double>> reach_contiguity(std::vector<int>& label, const std::vector<double>& areas,
+                                                          const SharedBoundaries& shared, int phase, double target,
+                                                          double target_area, double slack, double tolerance, Rng& rng) {
+  const std::vector<int> start = label;
+  const double reached = arrange_contiguity(label, areas, shared, phase, target, target_area, slack, rng);
+  if (std::abs(reached - target) <= tolerance) return std::nullopt;
+  std::pair<double, double> range;
+  for (double* end : {&range.first, &range.second}) {
+    std::vector<int> trial = start;
+    *end = arrange_contiguity(trial, areas, shared, phase, end == &range.first ? 0.0 : 1.0, target_area, slack, rng);
+  }
+  return range;
 }
 
 }  // namespace grainmesh

@@ -2,6 +2,7 @@
 // labels to move it toward a target.
 #pragma once
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -24,5 +25,12 @@ double labelled_contiguity(const std::vector<int>& label, const SharedBoundaries
 // Returns the contiguity reached.
 double arrange_contiguity(std::vector<int>& label, const std::vector<double>& areas, const SharedBoundaries& shared,
                           int phase, double target, double target_area, double slack, Rng& rng);
+
+// arrange_contiguity toward `target`; when it ends farther than `tolerance` from it, the
+// lowest and highest contiguity the trades reach from the same start (trades toward 0 and
+// toward 1), else none.
+std::optional<std::pair<double, double>> reach_contiguity(std::vector<int>& label, const std::vector<double>& areas,
+                                                          const SharedBoundaries& shared, int phase, double target,
+                                                          double target_area, double slack, double tolerance, Rng& rng);
 
 }  // namespace grainmesh

@@ -278,19 +278,8 @@ std::vector<CutPolygon> grain_polygons(TorusGraph& g, const std::vector<int>& ce
     // Trades keep the phase's area within half a percent of the cell of its target.
     const SharedBoundaries shared = shared_boundaries(g, cells);
     const double target_area = target_fraction(o.phases, o.contiguity_phase) * W * H, slack = 0.005 * W * H;
-    const std::vector<int> start = label;
-    const double reached =
-        arrange_contiguity(label, areas, shared, o.contiguity_phase, *o.contiguity, target_area, slack, rng);
-    if (std::abs(reached - *o.contiguity) > kContiguityTolerance) {
-      // Out of reach: how far the trades go either way, from the same start.
-      std::pair<double, double> range;
-      for (double* end : {&range.first, &range.second}) {
-        std::vector<int> trial = start;
-        *end = arrange_contiguity(trial, areas, shared, o.contiguity_phase, end == &range.first ? 0.0 : 1.0,
-                                  target_area, slack, rng);
-      }
-      st.contiguity_range = range;
-    }
+    st.contiguity_range = reach_contiguity(label, areas, shared, o.contiguity_phase, *o.contiguity, target_area, slack,
+                                           kContiguityTolerance, rng);
   }
   std::vector<CutPolygon> polys = cell_polygons(g, cells);
   for (std::size_t k = 0; k < polys.size(); ++k) polys[k].phase = label[k];

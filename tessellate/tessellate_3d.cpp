@@ -12,6 +12,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/contiguity.hpp"
 #include "tessellate/laguerre_3d.hpp"
 #include "tessellate/phases.hpp"
 #include "tessellate/radii.hpp"
@@ -27,6 +28,9 @@ void check_options(const Tessellation3Options& o) {
   if (!(o.width > 0.0) || !(o.height > 0.0) || !(o.depth > 0.0))
     throw ConfigError("box width, height and depth must be positive");
   if (o.grains < 1) throw ConfigError("the number of grains must be at least 1");
+  if (o.contiguity && (!(*o.contiguity > 0.0 && *o.contiguity < 1.0) || o.contiguity_phase < 0 ||
+                       o.contiguity_phase >= static_cast<int>(o.phases.size())))
+    throw ConfigError("a contiguity target lies in (0, 1), for a phase");
   if (!o.seeds.empty() && static_cast<int>(o.seeds.size()) != o.grains)
     throw ConfigError("the number of grains must equal the number of given seeds");
   const Vec3 box{o.width, o.height, o.depth};
@@ -141,15 +145,15 @@ void mean_std(const std::vector<double>& v, double* mean, double* sd) {
   *sd = v.size() > 1 ? std::sqrt(s2 / static_cast<double>(v.size() - 1)) : 0.0;
 }
 
-// Areas shared between grains, per pair of phases: what contiguity is made of. Faces on
-// the box count once through their low-side copy, paired with the high-side face.
-std::vector<double> phase_boundary_areas(const Tessellation3& t) {
-  const int np = static_cast<int>(t.phases.size());
-  std::vector<double> area(static_cast<std::size_t>(np * np), 0.0);
+// Areas shared between grains (each grain's neighbours and the area it shares with each):
+// what contiguity is made of. Faces on the box count once through their low-side copy,
+// paired with the high-side face; a grain's boundary with its own periodic image is none.
+SharedBoundaries grain_boundary_areas(const Tessellation3& t) {
+  std::vector<std::map<int, double>> shared(t.grains.size());
   auto add = [&](int ga, int gb, double a) {
-    if (ga == gb) return;  // a grain's boundary with its own periodic image is no boundary
-    area[t.grains[ga].phase * np + t.grains[gb].phase] += a;
-    area[t.grains[gb].phase * np + t.grains[ga].phase] += a;
+    if (ga == gb) return;
+    shared[static_cast<std::size_t>(ga)][gb] += a;
+    shared[static_cast<std::size_t>(gb)][ga] += a;
   };
   std::map<std::vector<int>, int> high_faces;  // high-side box face by its sorted ring
   for (int f = 0; f < static_cast<int>(t.faces.size()); ++f) {
@@ -162,19 +166,32 @@ std::vector<double> phase_boundary_areas(const Tessellation3& t) {
     std::sort(key.begin(), key.end());
     high_faces.emplace(std::move(key), f);
   }
-  if (!t.periodic) return area;
-  for (int a = 0; a < 3; ++a) {
-    std::map<int, int> image(t.partners.axis[a].begin(), t.partners.axis[a].end());
-    for (const Face3& face : t.faces) {
-      if (face.front >= 0 || box_side(t, face.ring) != std::pair{a, 0}) continue;
-      std::vector<int> key;
-      for (int id : face.ring) key.push_back(image.at(id));
-      std::sort(key.begin(), key.end());
-      const auto it = high_faces.find(key);
-      if (it == high_faces.end()) throw GeometryError("3D cut: a face on a side of the box has no periodic image");
-      add(t.regions[face.back].grain, t.regions[t.faces[it->second].back].grain, face_area(t, face));
+  if (t.periodic)
+    for (int a = 0; a < 3; ++a) {
+      std::map<int, int> image(t.partners.axis[a].begin(), t.partners.axis[a].end());
+      for (const Face3& face : t.faces) {
+        if (face.front >= 0 || box_side(t, face.ring) != std::pair{a, 0}) continue;
+        std::vector<int> key;
+        for (int id : face.ring) key.push_back(image.at(id));
+        std::sort(key.begin(), key.end());
+        const auto it = high_faces.find(key);
+        if (it == high_faces.end()) throw GeometryError("3D cut: a face on a side of the box has no periodic image");
+        add(t.regions[face.back].grain, t.regions[t.faces[it->second].back].grain, face_area(t, face));
+      }
     }
-  }
+  SharedBoundaries out;
+  for (const auto& m : shared) out.emplace_back(m.begin(), m.end());
+  return out;
+}
+
+// The same per pair of phases.
+std::vector<double> phase_boundary_areas(const Tessellation3& t) {
+  const int np = static_cast<int>(t.phases.size());
+  std::vector<double> area(static_cast<std::size_t>(np * np), 0.0);
+  const SharedBoundaries shared = grain_boundary_areas(t);
+  for (std::size_t g = 0; g < shared.size(); ++g)
+    for (const auto& [m, a] : shared[g])
+      area[static_cast<std::size_t>(t.grains[g].phase * np + t.grains[static_cast<std::size_t>(m)].phase)] += a;
   return area;
 }
 
@@ -325,9 +342,29 @@ CellMoments relax(const Tessellation3Options& o, const std::vector<double>& weig
   return m;
 }
 
+// The grains' phases by volume (the grains' volumes known), to the contiguity target if
+// one is set (label trades on the shared face areas; out of reach: the range in the stats).
+std::vector<int> grain_phases(Tessellation3& t, const Tessellation3Options& o, Rng& rng) {
+  std::vector<double> volumes;
+  std::vector<std::vector<int>> neighbours;
+  for (const Grain3& g : t.grains) {
+    volumes.push_back(g.volume);
+    neighbours.push_back(g.neighbours);
+  }
+  std::vector<int> all(o.phases.size());
+  for (int p = 0; p < static_cast<int>(all.size()); ++p) all[p] = p;
+  const double V = o.width * o.height * o.depth;
+  std::vector<int> label = assign_phases(volumes, neighbours, o.phases, all, V, o.arrangement, rng);
+  if (!o.contiguity) return label;
+  // Trades keep the phase's volume within half a percent of the cell of its target.
+  const SharedBoundaries shared = grain_boundary_areas(t);
+  const double target_volume = target_fraction(o.phases, o.contiguity_phase) * V, slack = 0.005 * V;
+  t.stats.contiguity_range = reach_contiguity(label, volumes, shared, o.contiguity_phase, *o.contiguity, target_volume,
+                                              slack, kContiguityTolerance, rng);
+  return label;
+}
+
 }  // namespace
-
-
 
 Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
   check_options(o);
@@ -382,19 +419,10 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     r.volume = region_volume(t, r);
     t.grains[r.grain].volume += r.volume;
   }
-  std::vector<double> volumes;
-  std::vector<std::vector<int>> neighbours;
-  for (const Grain3& g : t.grains) {
-    volumes.push_back(g.volume);
-    neighbours.push_back(g.neighbours);
-  }
-  std::vector<int> all(o.phases.size());
-  for (int p = 0; p < static_cast<int>(all.size()); ++p) all[p] = p;
-  const std::vector<int> label = assign_phases(volumes, neighbours, o.phases, all, o.width * o.height * o.depth,
-                                               o.arrangement, rng);
+  if (o.periodic) t.partners = box_partners(t);
+  const std::vector<int> label = grain_phases(t, o, rng);
   for (Grain3& g : t.grains) g.phase = label[g.id];
   for (Region3& r : t.regions) r.phase = t.grains[r.grain].phase;
-  if (o.periodic) t.partners = box_partners(t);
   measure_tessellation(t);
   validate(t);
   return t;

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <utility>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "common/deadline.hpp"
@@ -28,6 +30,10 @@ struct Tessellation3Options {
   double min_edge = 0.1;         // edges shorter than this x mean grain diameter are collapsed; 0 = off
   Arrangement arrangement = Arrangement::random;
   std::vector<Phase> phases;     // at least one; fractions are volume fractions
+  // The contiguity `contiguity_phase` is to have, from face areas (grain mode's label
+  // trades, as in 2D: contiguity.hpp); none: as the arrangement gives it.
+  std::optional<double> contiguity;
+  int contiguity_phase = -1;
   Deadline deadline{};           // asked every Lloyd step
 };
 
@@ -58,6 +64,9 @@ struct Grain3 {
 };
 
 struct Tessellation3Stats {
+  // A contiguity target missed by more than kContiguityTolerance: the lowest and highest
+  // contiguity the label trades reach from the same start (none when met).
+  std::optional<std::pair<double, double>> contiguity_range;
   int grains = 0;                    // with a cell (hidden Laguerre cells do not count)
   int removed_grains = 0;            // hidden Laguerre cells
   double volume_mean = 0.0, volume_std = 0.0;
