@@ -1,7 +1,7 @@
 // Ctrl-C, SIGTERM and SIGHUP: a run stops at once and leaves nothing behind. main() calls
 // install_interrupt_handling() before any other thread starts: the three signals are
 // blocked in every thread, and one thread of its own waits for them. When one comes, that
-// thread stops the registered children (TetGen's workers and OpenFOAM's programs at once, a sweep's
+// thread stops the registered children (OpenFOAM's programs at once; TetGen's helpers die with the process, a sweep's
 // runs given a moment to clean up after themselves), holds the process's other threads
 // still, removes the registered temporary paths (staging directories)
 // while nothing can write into them, prints one line - "grainmesh:

@@ -36,7 +36,7 @@ struct RegionTets {
 // inner points improved.
 RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& points,
                        const std::vector<std::vector<std::array<int, 3>>>& faces, const GrainMesh3Options& o,
-                       TetgenWorkers& tetgen) {
+                       const TetgenRunner& tetgen) {
   std::map<int, int> local;
   std::vector<int> global;
   std::vector<std::array<int, 3>> tris;
@@ -91,8 +91,8 @@ GrainMesh3 mesh_tessellation_3d(const Tessellation3& t, const GrainMesh3Options&
   const auto fill_start = std::chrono::steady_clock::now();
   const int nr = static_cast<int>(t.regions.size());
   std::vector<RegionTets> pieces(nr);
-  TetgenWorkers tetgen;
   tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+  TetgenRunner tetgen;
   arena.execute([&] {
     tbb::parallel_for(0, nr, [&](int r) { pieces[r] = fill_region(t, r, surface.points, surface.faces, o, tetgen); });
   });

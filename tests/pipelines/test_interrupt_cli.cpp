@@ -98,7 +98,7 @@ std::string names_in(const fs::path& dir) {
 }
 
 // Processes whose command line mentions `dir`, or which run in it or below (children that
-// outlived their parent: TetGen's workers carry the run's command line; the solver runs in directories of the output's staging
+// outlived their parent: TetGen's helpers and the solver run in directories of the output's staging
 // or the temporary directory, which never appear on their command lines).
 int processes_in(const fs::path& dir) {
   int n = 0;
@@ -294,7 +294,7 @@ TEST_CASE("grainmesh sweep killed at random moments resumes to the results of an
 
 TEST_CASE("grainmesh run interrupted (Ctrl-C, SIGTERM) at random moments says so in one line and leaves nothing",
           "[cli][interrupt]") {
-  // A 3D periodic cell solved: TetGen's workers, the solver in
+  // A 3D periodic cell solved: TetGen's helpers, the solver in
   // the staging directory, both to be cleaned up.
   test::ScratchDir dir("interrupt-run");
   const fs::path tmp = dir / "tmp";
