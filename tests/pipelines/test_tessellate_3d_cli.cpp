@@ -69,7 +69,12 @@ TEST_CASE("a 3D tessellation.json reads back to the same bytes, and a seed gives
 TEST_CASE("a 3D contiguity target is met within 0.02 on five seeds, from face areas, the fractions kept",
           "[cli][tessellate3d]") {
   test::ScratchDir dir("contiguity-3d");
-  for (const int seed : {1, 2, 3, 4, 5})
+#ifdef GRAINMESH_SANITIZED
+  const std::vector<int> seeds{1};  // the point there is memory, not coverage of seeds (32 s for five)
+#else
+  const std::vector<int> seeds{1, 2, 3, 4, 5};
+#endif
+  for (const int seed : seeds)
     for (const double target : {0.1, 0.3}) {
       const fs::path out = dir / (std::to_string(seed) + "-" + std::to_string(target));
       const auto r = test::run_grainmesh(

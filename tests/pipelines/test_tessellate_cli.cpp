@@ -84,7 +84,12 @@ TEST_CASE("a contiguity target is met within 0.02 on five seeds and three target
 TEST_CASE("binder mode: a contiguity target is met within 0.02 on five seeds and three targets, the binder's fraction kept",
           "[cli][tessellate]") {
   test::ScratchDir dir("binder-contiguity");
-  for (const int seed : {1, 2, 3, 4, 5})
+#ifdef GRAINMESH_SANITIZED
+  const std::vector<int> seeds{1};  // the point there is memory, not coverage of seeds (101 s for five)
+#else
+  const std::vector<int> seeds{1, 2, 3, 4, 5};
+#endif
+  for (const int seed : seeds)
     for (const double target : {0.2, 0.4, 0.6}) {
       const fs::path out = dir / (std::to_string(seed) + "-" + std::to_string(target));
       const auto r = run_grainmesh({"tessellate", test::example("grains_binder").string(), "-o", out.string(), "--set",
