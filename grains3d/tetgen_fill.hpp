@@ -60,8 +60,6 @@ class TetgenRunner {
   TetgenFill fill(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                   const TetgenOptions& options, const std::string& what) const;
 
-  const std::string& helper() const { return helper_; }
-
  private:
   std::string helper_;
 };

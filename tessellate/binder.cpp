@@ -92,8 +92,7 @@ std::pair<int, double> contacts_for_target(const std::vector<std::vector<Vec2>>&
 // only where no step went into it.
 std::vector<BinderCorner> squared(const std::vector<BinderCorner>& grain, double W, double H, bool periodic, double step,
                                   int* jogs) {
-  std::vector<Vec2> pts;
-  for (const BinderCorner& c : grain) pts.push_back(c.p);
+  std::vector<Vec2> pts = points_of(grain);
   *jogs += square_shallow_crossings(pts, W, H, periodic, kMinSideAngle, step);
   std::vector<BinderCorner> out;
   std::size_t next = 0;
@@ -186,8 +185,7 @@ BinderGrains binder_grains(TorusGraph& g, const std::vector<int>& cells, const T
   if (grains.empty()) throw ConfigError(what + " leaves no grain");
   std::vector<double> areas;
   for (const auto& s : grains) {
-    std::vector<Vec2> pts;
-    for (const BinderCorner& c : s) pts.push_back(c.p);
+    const std::vector<Vec2> pts = points_of(s);
     areas.push_back(polygon_area(o.periodic ? pts : clip_to_cell(pts, W, H)));
   }
   std::vector<std::vector<int>> none(grains.size());

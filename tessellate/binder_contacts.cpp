@@ -40,6 +40,12 @@ std::vector<TaggedCorner> shrink_tagged(const std::vector<Vec2>& ring, double t)
   return poly;
 }
 
+std::vector<Vec2> points_of(const std::vector<BinderCorner>& poly) {
+  std::vector<Vec2> pts;
+  for (const BinderCorner& c : poly) pts.push_back(c.p);
+  return pts;
+}
+
 std::vector<Contact> contact_candidates(const TorusGraph& g, const std::vector<int>& cells, Rng& rng) {
   std::vector<int> index(g.rings.size(), -1);
   for (std::size_t k = 0; k < cells.size(); ++k) index[static_cast<std::size_t>(cells[k])] = static_cast<int>(k);
@@ -76,12 +82,6 @@ bool clear_of_lines(Vec2 p, double W, double H, bool periodic, double step, long
   if (!periodic && (x0 != 0 || y0 != 0)) return false;
   if (first) *cx = x0, *cy = y0;
   return x0 == *cx && y0 == *cy;
-}
-
-std::vector<Vec2> points_of(const std::vector<BinderCorner>& poly) {
-  std::vector<Vec2> pts;
-  for (const BinderCorner& c : poly) pts.push_back(c.p);
-  return pts;
 }
 
 // The interior angle of a counter-clockwise ring at its corner k.

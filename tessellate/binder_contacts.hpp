@@ -46,6 +46,9 @@ struct BinderCorner {
   int shared = -1;
 };
 
+// A grain's corners as points (in its own frame).
+std::vector<Vec2> points_of(const std::vector<BinderCorner>& grain);
+
 struct BridgedGrains {
   std::vector<std::vector<BinderCorner>> grains;  // per cell, counter-clockwise; empty: swallowed by the binder
   std::vector<CutEdge> shared_edge;               // per contact made: B's edge, in B's frame
