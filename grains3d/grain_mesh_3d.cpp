@@ -54,7 +54,8 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
   for (int v : global) surface.push_back(points[v]);
   const TetgenOptions to{.radius_edge = o.radius_edge,
                          .min_dihedral_deg = o.min_dihedral_deg,
-                         .max_volume = regular_tet_volume(o.size),
+                         .max_volume = regular_tet_volume(
+                             o.core_size > 0.0 && !t.grains[t.regions[r].grain].matrix ? o.core_size : o.size),
                          .deadline = o.deadline};
   TetgenFill fill =
       tetgen.fill(surface, tris, to, "region " + std::to_string(r) + " (grain " + std::to_string(t.regions[r].grain) + ")");
@@ -74,7 +75,8 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
 
 double size_for_tets_per_grain(const Tessellation3& t, double per_grain) {
   constexpr double kTetsPerBound = 1.3;
-  const double grain = t.width * t.height * t.depth / static_cast<double>(std::max<std::size_t>(1, t.grains.size()));
+  const auto grains = std::count_if(t.grains.begin(), t.grains.end(), [](const Grain3& g) { return !g.matrix; });
+  const double grain = t.width * t.height * t.depth / static_cast<double>(std::max<std::ptrdiff_t>(1, grains));
   return regular_tet_edge(kTetsPerBound * grain / per_grain);
 }
 

@@ -14,6 +14,7 @@ namespace grainmesh {
 
 struct GrainMesh3Options {
   double size = 0.0;               // element edge length h, the tessellation's unit; > 0
+  double core_size = 0.0;          // > size: the grains' (not the matrix's) volume bound, their surfaces staying at size
   int threads = 0;                 // regions filled in parallel; 0 = all cores
   // TetGen's quality bounds (-q): radius-edge ratio and smallest dihedral angle; its
   // volume bound is the regular tetrahedron of edge `size`.

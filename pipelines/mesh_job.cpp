@@ -130,8 +130,16 @@ MeshJob<3> read_mesh_job<3>(const Config& c) {
 
 MeshJob<3> resolve_mesh_job(MeshJob<3> job, const Tessellation3& t) {
   GrainMesh3Options& o = job.options;
-  if (job.per_grain) o.size = size_for_tets_per_grain(t, *job.per_grain);
-  const double tets = t.width * t.height * t.depth / regular_tet_volume(o.size);
+  if (job.per_grain) {
+    o.size = size_for_tets_per_grain(t, *job.per_grain);
+    // Binder mode: the surfaces as fine as the binder layer is thick, the grains' cores
+    // filled to the size asked for.
+    if (t.stats.binder_layer > 0.0 && t.stats.binder_layer < o.size) {
+      o.core_size = o.size;
+      o.size = t.stats.binder_layer;
+    }
+  }
+  const double tets = t.width * t.height * t.depth / regular_tet_volume(o.core_size > 0.0 ? o.core_size : o.size);
   if (tets > kMaxTets)
     job.origin.fail(job.per_grain ? "mesh.tets_per_grain" : job.size_key,
                     "asks for about " + to_text(tets) + " tetrahedra, more than " + to_text(kMaxTets) + ": coarsen it");

@@ -19,8 +19,14 @@ namespace grainmesh {
 
 namespace {
 
-// Binder mode's matrix phase: named, else the phase called matrix or binder.
-void read_matrix_phase(const Config& c, TessellationOptions& o) {
+// tessellation.phase_mode and binder mode's matrix phase: named, else the phase called
+// matrix or binder (2D and 3D).
+template <class Options>
+void read_phase_mode(const Config& c, Options& o) {
+  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
+  if (mode == "grain") o.phase_mode = PhaseMode::grain;
+  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
+  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
   if (o.phase_mode == PhaseMode::binder) {
     std::string matrix = c.optional_text("tessellation.matrix_phase").value_or("");
     if (matrix.empty())
@@ -36,16 +42,13 @@ void read_matrix_phase(const Config& c, TessellationOptions& o) {
   }
 }
 
-// Whether the options are a 2D cell's in binder mode (3D cells have grain mode only).
 template <class Options>
 bool binder_mode(const Options& o) {
-  if constexpr (requires { o.phase_mode; }) return o.phase_mode == PhaseMode::binder;
-  return false;
+  return o.phase_mode == PhaseMode::binder;
 }
 template <class Options>
 int matrix_phase(const Options& o) {
-  if constexpr (requires { o.matrix_phase; }) return o.matrix_phase;
-  return -1;
+  return o.matrix_phase;
 }
 
 // A contiguity target and the phase it is of (2D and 3D).
@@ -94,14 +97,6 @@ void check_contiguity(const Cell& t, const TessellateJob<D>& job) {
                           to_text(range->first, 3) + " to " + to_text(range->second, 3)
                     : "it reached " + to_text(reached, 3)) +
              "; ask within that, or change the fractions or the grains");
-}
-
-// Keys of the 2D stage with no 3D meaning yet, and why.
-void refuse_2d_only(const Config& c) {
-  if (c.has("tessellation.matrix_phase"))
-    c.fail("tessellation.matrix_phase", "not available for 3D cells yet (domain.depth is set)");
-  if (c.optional_text("tessellation.phase_mode").value_or("grain") != "grain")
-    c.fail("tessellation.phase_mode", "3D cells have grain mode only so far, got '" + c.text("tessellation.phase_mode") + "'");
 }
 
 // tessellation.neper: the file read and checked against the config, its domain the cell;
@@ -217,11 +212,7 @@ TessellateJob<2> read_tessellate_job<2>(const Config& c) {
   TessellateJob<2> job;
   read_shared_keys(c, job);
   TessellationOptions& o = job.options;
-  const std::string mode = c.optional_text("tessellation.phase_mode").value_or("grain");
-  if (mode == "grain") o.phase_mode = PhaseMode::grain;
-  else if (mode == "binder") o.phase_mode = PhaseMode::binder;
-  else c.fail("tessellation.phase_mode", "unknown mode '" + mode + "' (grain or binder)");
-  read_matrix_phase(c, o);
+  read_phase_mode(c, o);
   read_contiguity(c, o);
   if (!job.image.file.empty()) {
     job.image.options.phases = o.phases;
@@ -236,9 +227,9 @@ TessellateJob<2> read_tessellate_job<2>(const Config& c) {
 template <>
 TessellateJob<3> read_tessellate_job<3>(const Config& c) {
   c.check_keys(tessellate_config_keys());
-  refuse_2d_only(c);
   TessellateJob<3> job;
   read_shared_keys(c, job);
+  read_phase_mode(c, job.options);
   read_contiguity(c, job.options);
   job.section = c.number("output.section", job.section);
   if (!(job.section > 0.0 && job.section < 1.0))
@@ -278,6 +269,11 @@ Tessellation3 run_tessellate_job(const TessellateJob<3>& job) {
   Tessellation3 t;
   try {
     t = tessellate_3d(job.options, rng);
+  } catch (const ConfigError& e) {
+    // The only option tessellate_3d() can find unreachable is the binder fraction.
+    const Tessellation3Options& o = job.options;
+    if (o.phase_mode != PhaseMode::binder) throw;
+    job.origin.fail("phase." + o.phases[std::max(o.matrix_phase, 0)].name + ".fraction", e.what());
   } catch (const GeometryError& e) {
     // The stage's own checks failed: an inconsistency no config should be able to make.
     throw GeometryError(std::string("the 3D tessellation failed its own check (") + e.what() +
@@ -297,7 +293,7 @@ void check_phases(const Tessellation& t, const TessellateJob<2>& job, Warnings& 
 }
 
 void check_phases(const Tessellation3& t, const TessellateJob<3>& job, Warnings& warnings) {
-  check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin);
+  check_phases_have_grains(t.phases, t.stats.phases, t.stats.grains, job.origin, job.options.matrix_phase);
   if (!job.neper.group_phases.empty()) return;  // the file's own fractions, not targets
   for (const std::string& w : phase_fraction_warnings(t.phases, t.stats.phases, t.stats.grains)) warnings.add(w);
 }

@@ -11,11 +11,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <type_traits>
 
 #include "common/errors.hpp"
+#include "tessellate/exact_polyhedron.hpp"
 
 namespace grainmesh {
 
@@ -115,8 +117,7 @@ struct Diagram {
   // their axis 1e14 away, where the power distances round alike); then it is constructed
   // exactly and rounded.
   Point power_centre(typename Regular::Cell_handle c) const {
-    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-    const Point p = c->weighted_circumcenter();
+        const Point p = c->weighted_circumcenter();
     if constexpr (std::is_same_v<K, EK>) {
       return p;
     } else {
@@ -171,91 +172,8 @@ struct Diagram {
 
 using Approx = Diagram<CGAL::Exact_predicates_inexact_constructions_kernel>;
 using Exact = Diagram<CGAL::Exact_predicates_exact_constructions_kernel>;
-using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 
 Vec3 to_vec(const CGAL::Exact_predicates_inexact_constructions_kernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
-
-// A convex polyhedron in exact coordinates, faces counter-clockwise seen from outside.
-struct ExactPolyhedron {
-  std::vector<EK::Point_3> points;
-  std::vector<std::vector<int>> faces;
-};
-
-EK::FT coord(const EK::Point_3& p, int axis) { return axis == 0 ? p.x() : axis == 1 ? p.y() : p.z(); }
-
-// The part of `poly` on the side coord(axis) >= c (keep_above) or <= c, closed by a new
-// face in the plane. Empty when nothing of positive volume is left.
-ExactPolyhedron clip(const ExactPolyhedron& poly, int axis, const EK::FT& c, bool keep_above) {
-  const std::size_t n = poly.points.size();
-  std::vector<int> side(n);
-  bool inside = false, outside = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    const CGAL::Comparison_result r = CGAL::compare(coord(poly.points[k], axis), c);
-    side[k] = r == CGAL::EQUAL ? 0 : ((r == CGAL::LARGER) == keep_above ? 1 : -1);
-    inside = inside || side[k] > 0;
-    outside = outside || side[k] < 0;
-  }
-  if (!inside) return {};
-  if (!outside) return poly;
-  ExactPolyhedron out;
-  out.points = poly.points;
-  std::map<std::pair<int, int>, int> crossing;
-  auto cut = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    const auto [it, added] = crossing.emplace(key, static_cast<int>(out.points.size()));
-    if (added) {
-      // From the lower id, so the point is computed the same way from either face.
-      const EK::Point_3& p = poly.points[key.first];
-      const EK::Point_3& q = poly.points[key.second];
-      const EK::FT t = (c - coord(p, axis)) / (coord(q, axis) - coord(p, axis));
-      out.points.push_back(p + (q - p) * t);
-    }
-    return it->second;
-  };
-  std::vector<int> on_plane;
-  for (const auto& face : poly.faces) {
-    std::vector<int> ring;
-    bool keeps = false;
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const int a = face[k], b = face[(k + 1) % face.size()];
-      if (side[a] >= 0) ring.push_back(a);
-      if (side[a] == 0) on_plane.push_back(a);
-      keeps = keeps || side[a] > 0;
-      if (side[a] * side[b] < 0) {
-        ring.push_back(cut(a, b));
-        on_plane.push_back(ring.back());
-      }
-    }
-    if (keeps && ring.size() >= 3) out.faces.push_back(std::move(ring));
-  }
-  std::sort(on_plane.begin(), on_plane.end());
-  on_plane.erase(std::unique(on_plane.begin(), on_plane.end()), on_plane.end());
-  // The new face: its points in the plane ordered by angle about their centroid, in the
-  // (u, v) axes that make `axis` the right-hand normal; reversed to face outward.
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  EK::FT cu(0), cv(0);
-  for (int id : on_plane) {
-    cu = cu + coord(out.points[id], u);
-    cv = cv + coord(out.points[id], v);
-  }
-  cu = cu / EK::FT(static_cast<int>(on_plane.size()));
-  cv = cv / EK::FT(static_cast<int>(on_plane.size()));
-  auto half = [&](int id) {
-    const auto du = CGAL::compare(coord(out.points[id], u), cu), dv = CGAL::compare(coord(out.points[id], v), cv);
-    return dv == CGAL::LARGER || (dv == CGAL::EQUAL && du == CGAL::LARGER) ? 0 : 1;
-  };
-  std::sort(on_plane.begin(), on_plane.end(), [&](int a, int b) {
-    const int ha = half(a), hb = half(b);
-    if (ha != hb) return ha < hb;
-    const EK::FT au = coord(out.points[a], u) - cu, av = coord(out.points[a], v) - cv;
-    const EK::FT bu = coord(out.points[b], u) - cu, bv = coord(out.points[b], v) - cv;
-    return CGAL::is_positive(au * bv - av * bu);
-  });
-  // Counter-clockwise about +axis; the outward normal is -axis when keeping above.
-  if (keep_above) std::reverse(on_plane.begin(), on_plane.end());
-  if (on_plane.size() >= 3) out.faces.push_back(std::move(on_plane));
-  return out;
-}
 
 }  // namespace
 
@@ -310,9 +228,21 @@ class ExactVertices {
 
 // The pieces of `poly` in the periodic box's images m (lo[a] <= m[a] <= hi[a]), each moved
 // back by -m periods, as pieces of `seed`; a bounded box (periodic false) keeps it whole.
-void add_pieces(const ExactPolyhedron& poly, int seed, Vec3 box, bool periodic, std::array<int, 3> lo,
+void add_pieces(const ExactPolyhedron& poly, int seed, int face, Vec3 box, bool periodic, std::array<int, 3> lo,
                 std::array<int, 3> hi, ExactVertices& vertices, LaguerreCut& out) {
   if (!periodic) lo = hi = {0, 0, 0};
+  // Only the images the polyhedron's rounded extent (with a margin) reaches.
+  for (int a = 0; a < 3 && periodic; ++a) {
+    double pmin = std::numeric_limits<double>::infinity(), pmax = -pmin;
+    for (const EK::Point_3& p : poly.points) {
+      const double x = CGAL::to_double(coord(p, a));
+      pmin = std::min(pmin, x);
+      pmax = std::max(pmax, x);
+    }
+    const double margin = 1e-6 * box[a];
+    lo[a] = std::max(lo[a], static_cast<int>(std::floor((pmin - margin) / box[a])));
+    hi[a] = std::min(hi[a], static_cast<int>(std::floor((pmax + margin) / box[a])));
+  }
   for (int mz = lo[2]; mz <= hi[2]; ++mz)
     for (int my = lo[1]; my <= hi[1]; ++my)
       for (int mx = lo[0]; mx <= hi[0]; ++mx) {
@@ -328,7 +258,7 @@ void add_pieces(const ExactPolyhedron& poly, int seed, Vec3 box, bool periodic, 
         const EK::Vector_3 back(EK::FT(box.x) * EK::FT(-m[0]), EK::FT(box.y) * EK::FT(-m[1]),
                                 EK::FT(box.z) * EK::FT(-m[2]));
         std::vector<int> global(piece.points.size(), -1);
-        BoxPiece bp{.seed = seed, .faces = {}};
+        BoxPiece bp{.seed = seed, .face = face, .faces = {}};
         for (const auto& face : piece.faces) {
           std::vector<int> ring;
           for (int id : face) {
@@ -357,13 +287,57 @@ std::vector<std::vector<std::vector<Vec3>>> laguerre_cells(const std::vector<Vec
   return out;
 }
 
+namespace {
+
+// The whole cells' faces with the seed and face across each (see WholeFace).
+std::vector<std::vector<WholeFace>> whole_faces(const Exact& d) {
+  const int n = static_cast<int>(d.cells.size()), per = d.code.per_seed();
+  std::map<std::pair<int, int>, int> face_of;  // (seed, site across) -> face index
+  std::vector<std::vector<WholeFace>> out(n);
+  for (int i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < d.cells[i].rings.size(); ++k) {
+      WholeFace f;
+      for (int id : d.cells[i].rings[k]) {
+        const auto& p = d.points[id];
+        f.ring.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+      }
+      const int site = d.cells[i].across[k];
+      if (d.code.periodic || site % per == d.code.own()) f.across = site / per;
+      face_of[{i, site}] = static_cast<int>(k);
+      out[i].push_back(std::move(f));
+    }
+  // Across the face of i towards j's image m lies j's face towards i's image -m.
+  for (int i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < out[i].size(); ++k) {
+      WholeFace& f = out[i][k];
+      if (f.across < 0) continue;
+      const int image = d.cells[i].across[k] % per;
+      const int back = i * per + (d.code.periodic ? 26 - image : d.code.own());
+      const auto it = face_of.find({f.across, back});
+      if (it == face_of.end()) throw GeometryError("3D Laguerre diagram: a face has no partner across it");
+      f.across_face = it->second;
+    }
+  return out;
+}
+
+// Binder mode: the cell's core and its frustums, each cut into the box as a piece.
+void add_layers(const ExactPolyhedron& poly, int seed, const EK::Point_3& centre, const EK::FT& scale, Vec3 box,
+                bool periodic, ExactVertices& vertices, LaguerreCut& out) {
+  const std::vector<ExactPolyhedron> parts = core_and_frustums(poly, centre, scale);
+  for (int k = 0; k < static_cast<int>(parts.size()); ++k)
+    add_pieces(parts[k], seed, k - 1, box, periodic, {-1, -1, -1}, {1, 1, 1}, vertices, out);
+}
+
+}  // namespace
+
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
-                             bool periodic) {
+                             bool periodic, const Layering* layering) {
   const Exact d(seeds, weights, box, periodic);
   LaguerreCut out;
   const int n = static_cast<int>(seeds.size());
   out.cell_faces.assign(n, 0);
   out.neighbours.resize(n);
+  out.whole = whole_faces(d);
   ExactVertices vertices(out.vertices);
   for (int i = 0; i < n; ++i) {
     const Exact::Cell& cell = d.cells[i];
@@ -387,7 +361,12 @@ LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<d
       }
       poly.faces.push_back(std::move(face));
     }
-    add_pieces(poly, i, box, periodic, {-1, -1, -1}, {1, 1, 1}, vertices, out);
+    if (layering) {
+      const Vec3 c = layering->centres[i];
+      add_layers(poly, i, EK::Point_3(c.x, c.y, c.z), EK::FT(layering->scale), box, periodic, vertices, out);
+    } else {
+      add_pieces(poly, i, -1, box, periodic, {-1, -1, -1}, {1, 1, 1}, vertices, out);
+    }
   }
   return out;
 }
@@ -426,7 +405,7 @@ LaguerreCut periodic_box_cut(const std::vector<Vec3>& bases,
       mlo[a] = static_cast<int>(std::floor(lo[a] / box[a])) - 1;
       mhi[a] = static_cast<int>(std::floor(hi[a] / box[a])) + 1;
     }
-    add_pieces(poly, c, box, true, mlo, mhi, vertices, out);
+    add_pieces(poly, c, -1, box, true, mlo, mhi, vertices, out);
   }
   return out;
 }

@@ -39,16 +39,34 @@ std::vector<std::vector<std::vector<Vec3>>> laguerre_cells(const std::vector<Vec
 // side's coordinate (0 or the box's edge) exactly.
 struct BoxPiece {
   int seed = 0;
+  int face = -1;  // layered: the frustum on this face of the seed's whole cell; -1 the cell (or its core)
   std::vector<std::vector<int>> faces;  // rings of vertex ids, counter-clockwise seen from outside
+};
+// A face of a seed's whole (uncut) cell: its ring in floating point, counter-clockwise seen
+// from outside, and the seed across it with that seed's face index matching it (-1 for a
+// side of a bounded box, which the seed's mirror image makes).
+struct WholeFace {
+  std::vector<Vec3> ring;
+  int across = -1;
+  int across_face = -1;
 };
 struct LaguerreCut {
   std::vector<Vec3> vertices;                // each exact point once
   std::vector<BoxPiece> pieces;              // a periodic cell the box cuts gives several
   std::vector<int> cell_faces;               // faces of each seed's uncut cell (0: hidden)
   std::vector<std::vector<int>> neighbours;  // seeds sharing a face with each seed's cell, ascending
+  std::vector<std::vector<WholeFace>> whole; // each seed's whole cell (laguerre_box_cut only)
+};
+// Binder mode's layers: each whole cell split, before the box cuts it, into its core (the
+// cell scaled by `scale` about the seed's centre) and one frustum per face, between the
+// face and the core's copy of it (each frustum convex; neighbouring frustums share their
+// faces exactly, as the cells do).
+struct Layering {
+  std::vector<Vec3> centres;  // per seed, inside its cell
+  double scale = 1.0;         // in (0, 1)
 };
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
-                             bool periodic);
+                             bool periodic, const Layering* layering = nullptr);
 
 // A corner of a periodic cell given whole (a Neper file's): the point bases[base] moved by
 // `shift` periods along each axis, computed exactly, so each image of one point is that

@@ -346,9 +346,9 @@ Tessellation3 solid_tessellation(const NeperTess& n, const NeperPhases& ph, Rng&
                               .faces = static_cast<int>(n.polyhedra[c].size()),
                               .neighbours = neighbours[c]});
   if (n.periodic) {
-    std::vector<int> grain_of_cell(n.cells());
-    for (int c = 0; c < n.cells(); ++c) grain_of_cell[c] = c;
-    assemble_box_cut(cut, grain_of_cell, t);
+    std::vector<int> grain_of_piece;  // the cell's own
+    for (const BoxPiece& piece : cut.pieces) grain_of_piece.push_back(piece.seed);
+    assemble_box_cut(cut, grain_of_piece, t);
   }
   double sum = 0.0;
   for (Region3& r : t.regions) {

@@ -12,6 +12,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/binder_3d.hpp"
 #include "tessellate/contiguity.hpp"
 #include "tessellate/laguerre_3d.hpp"
 #include "tessellate/phases.hpp"
@@ -31,6 +32,9 @@ void check_options(const Tessellation3Options& o) {
   if (o.contiguity && (!(*o.contiguity > 0.0 && *o.contiguity < 1.0) || o.contiguity_phase < 0 ||
                        o.contiguity_phase >= static_cast<int>(o.phases.size())))
     throw ConfigError("a contiguity target lies in (0, 1), for a phase");
+  if (o.phase_mode == PhaseMode::binder && (o.matrix_phase < 0 || o.matrix_phase >= static_cast<int>(o.phases.size()) ||
+                                            o.phases.size() < 2))
+    throw ConfigError("binder mode needs a matrix phase and a grain phase");
   if (!o.seeds.empty() && static_cast<int>(o.seeds.size()) != o.grains)
     throw ConfigError("the number of grains must equal the number of given seeds");
   const Vec3 box{o.width, o.height, o.depth};
@@ -235,14 +239,16 @@ Extremes extremes(const Tessellation3& t) {
 
 void measure_tessellation(Tessellation3& t) {
   Tessellation3Stats& st = t.stats;
-  st.grains = static_cast<int>(t.grains.size());
   std::vector<double> volumes, diameters;
   double faces = 0.0, neighbours = 0.0;
+  st.grains = 0;
   for (const Grain3& g : t.grains) {
+    if (g.matrix) continue;
+    ++st.grains;
     volumes.push_back(g.volume);
     diameters.push_back(std::cbrt(6.0 * g.volume / std::numbers::pi));
     faces += g.faces;
-    neighbours += static_cast<double>(g.neighbours.size());
+    for (int m : g.neighbours) neighbours += t.grains[static_cast<std::size_t>(m)].matrix ? 0.0 : 1.0;
   }
   mean_std(volumes, &st.volume_mean, &st.volume_std);
   mean_std(diameters, &st.diameter_mean, &st.diameter_std);
@@ -272,14 +278,20 @@ void measure_tessellation(Tessellation3& t) {
     s.intercept_length = std::nan("");  // not measured in 3D
     s.mean_free_path = std::nan("");
   }
+  for (const Grain3& g : t.grains)
+    if (g.matrix) {
+      double wetted = 0.0;
+      for (int q = 0; q < np; ++q) wetted += q == g.phase ? 0.0 : shared[g.phase * np + q];
+      st.binder_layer = wetted > 0.0 ? 2.0 * g.volume / wetted : 0.0;
+    }
 }
 
-void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tessellation3& t) {
+void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_piece, Tessellation3& t) {
   t.vertices = cut.vertices;
   std::map<std::vector<int>, int> by_key;
   for (const BoxPiece& piece : cut.pieces) {
     const int r = static_cast<int>(t.regions.size());
-    const int g = grain_of_seed[piece.seed];
+    const int g = grain_of_piece[static_cast<std::size_t>(r)];
     Region3 region{.grain = g, .phase = t.grains[g].phase, .faces = {}, .volume = 0.0};
     for (const auto& ring : piece.faces) {
       std::vector<int> key = ring;
@@ -364,6 +376,40 @@ std::vector<int> grain_phases(Tessellation3& t, const Tessellation3Options& o, R
   return label;
 }
 
+// Binder mode: the layout of cores, binder and contacts on the whole cells of `cut`, and
+// the cut made again with those layers.
+BinderLayout3 binder_cut(const Tessellation3Options& o, const std::vector<Vec3>& seeds,
+                         const std::vector<double>& weights, Rng& rng, LaguerreCut& cut) {
+  const Vec3 box{o.width, o.height, o.depth};
+  const bool voronoi = std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights[0]; });
+  Layering layering{.centres = layer_centres(cut.whole, seeds, voronoi), .scale = 1.0};
+  BinderLayout3 layout = binder_layout_3d(cut.whole, layering.centres, o.width * o.height * o.depth,
+                                          target_fraction(o.phases, o.matrix_phase), o.contiguity, rng);
+  layering.scale = layout.scale;
+  cut = laguerre_box_cut(seeds, weights, box, o.periodic, &layering);
+  return layout;
+}
+
+// Binder mode's grain phases: the phases but the matrix, by volume; the matrix grain last.
+std::vector<int> binder_phases(Tessellation3& t, const Tessellation3Options& o, Rng& rng) {
+  std::vector<double> volumes;
+  std::vector<std::vector<int>> neighbours;
+  for (const Grain3& g : t.grains)
+    if (!g.matrix) {
+      volumes.push_back(g.volume);
+      neighbours.push_back({});
+      for (int m : g.neighbours)
+        if (!t.grains[static_cast<std::size_t>(m)].matrix) neighbours.back().push_back(m);
+    }
+  std::vector<int> hard;
+  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
+    if (p != o.matrix_phase) hard.push_back(p);
+  std::vector<int> label =
+      assign_phases(volumes, neighbours, o.phases, hard, o.width * o.height * o.depth, o.arrangement, rng);
+  label.push_back(o.matrix_phase);
+  return label;
+}
+
 }  // namespace
 
 Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
@@ -386,7 +432,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
       for (int a = 0; a < 3; ++a) s[a] = reduce(s[a] - origin[a], box[a]);
     t.stats.window_origin = origin;
   }
-  const LaguerreCut cut = laguerre_box_cut(seeds, weights, box, o.periodic);
+  LaguerreCut cut = laguerre_box_cut(seeds, weights, box, o.periodic);
 
   // Grains: the seeds with a cell, numbered in seed order.
   std::vector<int> grain_of_seed(o.grains, -1), seed_of_grain;
@@ -402,8 +448,27 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     for (int j : cut.neighbours[i]) grain.neighbours.push_back(grain_of_seed[j]);
     t.grains.push_back(std::move(grain));
   }
-  assemble_box_cut(cut, grain_of_seed, t);
-  {
+  if (o.phase_mode == PhaseMode::binder) {
+    const BinderLayout3 layout = binder_cut(o, seeds, weights, rng, cut);
+    t.stats.binder_scale = layout.scale;
+    t.stats.binder_contacts = layout.contacts;
+    t.stats.contiguity_range = layout.range;
+    const int matrix = static_cast<int>(t.grains.size());
+    Grain3 binder{.id = matrix, .phase = o.matrix_phase, .seed = {}, .volume = 0.0, .faces = 0, .neighbours = {}};
+    binder.matrix = true;
+    for (Grain3& g : t.grains) {
+      g.neighbours.push_back(matrix);
+      binder.neighbours.push_back(g.id);
+    }
+    t.grains.push_back(std::move(binder));
+    std::vector<int> grain_of_piece;
+    for (const BoxPiece& p : cut.pieces)
+      grain_of_piece.push_back(p.face < 0 || layout.contact[p.seed][p.face] ? grain_of_seed[p.seed] : matrix);
+    assemble_box_cut(cut, grain_of_piece, t);
+  } else {
+    std::vector<int> grain_of_piece;
+    for (const BoxPiece& p : cut.pieces) grain_of_piece.push_back(grain_of_seed[p.seed]);
+    assemble_box_cut(cut, grain_of_piece, t);
     const Extremes before = extremes(t);
     Tessellation3Stats& st = t.stats;
     st.shortest_edge_before = before.shortest_edge;
@@ -420,7 +485,7 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     t.grains[r.grain].volume += r.volume;
   }
   if (o.periodic) t.partners = box_partners(t);
-  const std::vector<int> label = grain_phases(t, o, rng);
+  const std::vector<int> label = o.phase_mode == PhaseMode::binder ? binder_phases(t, o, rng) : grain_phases(t, o, rng);
   for (Grain3& g : t.grains) g.phase = label[g.id];
   for (Region3& r : t.regions) r.phase = t.grains[r.grain].phase;
   measure_tessellation(t);

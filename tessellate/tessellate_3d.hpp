@@ -22,8 +22,8 @@ void measure_tessellation(Tessellation3& t);
 
 // The regions and their shared faces from an exact cut's pieces (a face met twice lies
 // between two regions, a face met once on the box), each piece a region of the grain
-// grain_of_seed[piece.seed] with that grain's phase. The grains must be set.
-void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_seed, Tessellation3& t);
+// grain_of_piece[k] (cut.pieces[k]'s) with that grain's phase. The grains must be set.
+void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_piece, Tessellation3& t);
 
 // Each vertex on a low side of the box with the vertex at its position plus the box's
 // edge; GeometryError naming a side vertex without its image.

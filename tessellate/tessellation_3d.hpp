@@ -34,6 +34,10 @@ struct Tessellation3Options {
   // trades, as in 2D: contiguity.hpp); none: as the arrangement gives it.
   std::optional<double> contiguity;
   int contiguity_phase = -1;
+  // Binder mode (binder_3d.hpp): the grains' cores in a matrix of phase `matrix_phase`; the
+  // contiguity target (of the one grain phase) is met by the faces left without binder.
+  PhaseMode phase_mode = PhaseMode::grain;
+  int matrix_phase = -1;
   Deadline deadline{};           // asked every Lloyd step
 };
 
@@ -61,13 +65,17 @@ struct Grain3 {
   double volume = 0.0;          // summed over its pieces
   int faces = 0;                // faces of the whole (uncut) polyhedron
   std::vector<int> neighbours;  // grain ids sharing a face, ascending (on the torus when periodic)
+  bool matrix = false;          // binder mode: the matrix, one grain for all its regions (the last)
 };
 
 struct Tessellation3Stats {
   // A contiguity target missed by more than kContiguityTolerance: the lowest and highest
   // contiguity the label trades reach from the same start (none when met).
   std::optional<std::pair<double, double>> contiguity_range;
-  int grains = 0;                    // with a cell (hidden Laguerre cells do not count)
+  int grains = 0;                    // with a cell (hidden Laguerre cells and the matrix do not count)
+  double binder_scale = 0.0;         // binder mode: the cores' scale of their cells (0: grain mode)
+  int binder_contacts = 0;           // binder mode: faces two grains touch across
+  double binder_layer = 0.0;         // binder mode: its mean thickness, 2 x its volume / its area with the grains
   int removed_grains = 0;            // hidden Laguerre cells
   double volume_mean = 0.0, volume_std = 0.0;
   double diameter_mean = 0.0, diameter_std = 0.0;  // equivalent-sphere diameters

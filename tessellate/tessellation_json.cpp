@@ -237,9 +237,11 @@ std::string tessellation_to_json(const Tessellation3& t) {
   j["domain"] = {{"width", t.width}, {"height", t.height}, {"depth", t.depth}, {"periodic", t.periodic}};
   j["phases"] = phases_list(t.phases);
   Json grains = Json::array();
-  for (const Grain3& g : t.grains)
+  for (const Grain3& g : t.grains) {
     grains.push_back({{"id", g.id}, {"phase", g.phase}, {"seed", point(g.seed)}, {"volume", g.volume},
                       {"faces", g.faces}, {"neighbours", g.neighbours}});
+    if (g.matrix) grains.back()["matrix"] = true;  // binder mode's matrix (absent: a grain)
+  }
   j["grains"] = grains;
   Json vertices = Json::array();
   for (Vec3 v : t.vertices) vertices.push_back(point(v));
@@ -277,6 +279,11 @@ nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::v
   j["shortest_edge_before"] = s.shortest_edge_before;
   j["sharpest_dihedral_before_deg"] = s.sharpest_dihedral_before_deg;
   j["window_origin"] = point(s.window_origin);
+  if (s.binder_scale > 0.0) {  // binder mode only, so grain mode's files keep their bytes
+    j["binder_scale"] = s.binder_scale;
+    j["binder_contacts"] = s.binder_contacts;
+    j["binder_layer"] = s.binder_layer;
+  }
   j["phases"] = phases_json(phases, s.phases);
   j["contiguity"] = Json::object();
   for (std::size_t p = 0; p < phases.size(); ++p) j["contiguity"][phases[p].name] = value(s.phases[p].contiguity);
@@ -307,6 +314,11 @@ Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phas
   s.shortest_edge_before = j.at("shortest_edge_before").get<double>();
   s.sharpest_dihedral_before_deg = j.at("sharpest_dihedral_before_deg").get<double>();
   s.window_origin = read_point3(j.at("window_origin"));
+  if (j.contains("binder_scale")) {
+    s.binder_scale = j.at("binder_scale").get<double>();
+    s.binder_contacts = read_int(j.at("binder_contacts"));
+    s.binder_layer = j.at("binder_layer").get<double>();
+  }
   const Json& ph = j.at("phases");
   if (!ph.is_array() || ph.size() != phases.size()) throw GeometryError("statistics: not one entry per phase");
   for (std::size_t p = 0; p < phases.size(); ++p) {
@@ -335,7 +347,8 @@ Tessellation3 tessellation_from_json<3>(const std::string& text, const std::stri
     t.phases = read_phases(j.at("phases"));
     for (const Json& g : j.at("grains")) {
       t.grains.push_back(Grain3{read_int(g.at("id")), read_int(g.at("phase")), read_point3(g.at("seed")),
-                                g.at("volume").get<double>(), read_int(g.at("faces")), read_ints(g.at("neighbours"))});
+                                g.at("volume").get<double>(), read_int(g.at("faces")), read_ints(g.at("neighbours")),
+                                g.contains("matrix") && g.at("matrix").get<bool>()});
       if (t.grains.back().id != static_cast<int>(t.grains.size()) - 1) throw GeometryError("grain ids are not 0, 1, 2, ...");
       if (t.grains.back().phase < 0 || t.grains.back().phase >= static_cast<int>(t.phases.size()))
         throw GeometryError("a grain's phase is out of range");

@@ -249,3 +249,28 @@ TEST_CASE("3D pictures' scale bars carry the run's length unit", "[cli][run3d]")
   }
   CHECK(test::read_file(dir / "1e-6/mesh.vtu") == test::read_file(dir / "1e-3/mesh.vtu"));  // the same mesh
 }
+
+TEST_CASE("grainmesh run --solve in 3D binder mode: the binder's fraction exact, the modulus inside the bounds",
+          "[cli][solve][run3d][binder3d]") {
+  test::ScratchDir dir("run3d_binder");
+  const fs::path out = dir / "b";
+  const auto r = run_grainmesh({"run", test::example("grains_3d_wc_co").string(), "-o", out.string(), "--solve", "--set",
+                                "tessellation.grains=8", "--set", "tessellation.phase_mode=binder", "--set",
+                                "tessellation.matrix_phase=Co", "--set", "tessellation.arrangement=", "--set",
+                                "phase.Co.fraction=0.2"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto report = nlohmann::json::parse(test::read_file(out / "report.json"));
+  // The mesh's surfaces as fine as the layer is thick, the cores coarser.
+  CHECK(report["statistics"]["binder_layer"].get<double>() > 0.0);
+  CHECK(report["size"].get<double>() == Approx(report["statistics"]["binder_layer"].get<double>()));
+  CHECK(report["conforming"].get<bool>());
+  const auto& eff = report["effective"];
+  CHECK(eff["inside_bounds"]["voigt_reuss"].get<bool>());
+  CHECK(eff["modulus"].get<double>() > eff["reuss"].get<double>());
+  CHECK(eff["modulus"].get<double>() < eff["voigt"].get<double>());
+  // The binder's fraction exact, the eight grains wrapped by it (no contact asked for).
+  CHECK(report["phases"][1]["achieved_fraction"].get<double>() == Approx(0.2).epsilon(1e-9));
+  CHECK(report["statistics"]["binder_contacts"].get<int>() == 0);
+  CHECK(report["statistics"]["contiguity"]["WC"].get<double>() == 0.0);
+}
