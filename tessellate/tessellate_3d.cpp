@@ -376,6 +376,18 @@ std::vector<int> grain_phases(Tessellation3& t, const Tessellation3Options& o, R
   return label;
 }
 
+// Edges shorter than `threshold` collapsed (regularise_3d.hpp), the extremes before kept.
+void regularise(Tessellation3& t, const Tessellation3Options& o, double threshold) {
+  const Extremes before = extremes(t);
+  Tessellation3Stats& st = t.stats;
+  st.shortest_edge_before = before.shortest_edge;
+  st.sharpest_dihedral_before_deg = before.sharpest_dihedral * 180.0 / std::numbers::pi;
+  st.edge_threshold = o.min_edge > 0.0 ? threshold : 0.0;
+  const Regularisation done = collapse_short_edges(t, st.edge_threshold);
+  st.collapsed_edges = done.collapsed_edges;
+  st.removed_regions = done.removed_regions;
+}
+
 // Binder mode: the layout of cores, binder and contacts on the whole cells of `cut`, and
 // the cut made again with those layers.
 BinderLayout3 binder_cut(const Tessellation3Options& o, const std::vector<Vec3>& seeds,
@@ -448,6 +460,8 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     for (int j : cut.neighbours[i]) grain.neighbours.push_back(grain_of_seed[j]);
     t.grains.push_back(std::move(grain));
   }
+  const double diameter =
+      std::cbrt(6.0 * o.width * o.height * o.depth / (std::numbers::pi * static_cast<double>(seed_of_grain.size())));
   if (o.phase_mode == PhaseMode::binder) {
     const BinderLayout3 layout = binder_cut(o, seeds, weights, rng, cut);
     t.stats.binder_scale = layout.scale;
@@ -465,19 +479,14 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
     for (const BoxPiece& p : cut.pieces)
       grain_of_piece.push_back(p.face < 0 || layout.contact[p.seed][p.face] ? grain_of_seed[p.seed] : matrix);
     assemble_box_cut(cut, grain_of_piece, t);
+    // No collapse: it would move the binder off its exact fraction, and on the cells tried
+    // it made no better mesh (the short edges it may collapse are few).
+    regularise(t, o, 0.0);
   } else {
     std::vector<int> grain_of_piece;
     for (const BoxPiece& p : cut.pieces) grain_of_piece.push_back(grain_of_seed[p.seed]);
     assemble_box_cut(cut, grain_of_piece, t);
-    const Extremes before = extremes(t);
-    Tessellation3Stats& st = t.stats;
-    st.shortest_edge_before = before.shortest_edge;
-    st.sharpest_dihedral_before_deg = before.sharpest_dihedral * 180.0 / std::numbers::pi;
-    const double diameter = std::cbrt(6.0 * o.width * o.height * o.depth / (std::numbers::pi * static_cast<double>(t.grains.size())));
-    st.edge_threshold = o.min_edge * diameter;
-    const Regularisation done = collapse_short_edges(t, st.edge_threshold);
-    st.collapsed_edges = done.collapsed_edges;
-    st.removed_regions = done.removed_regions;
+    regularise(t, o, o.min_edge * diameter);
   }
   // Phases by volume, from the pieces' volumes (known before the labels are).
   for (Region3& r : t.regions) {
