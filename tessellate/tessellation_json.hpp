@@ -12,13 +12,14 @@
 //   statistics  the TessellationStats fields, and the descriptors (descriptors_json)
 // Version 2 (3D), the same keys where they mean the same, and:
 //   domain      {width, height, depth, periodic}
-//   grains      [{id, phase, seed: [x, y, z], volume, faces, neighbours}]
+//   grains      [{id, phase, seed: [x, y, z], volume, faces, neighbours, matrix (binder
+//               mode's matrix grain only: true)}]
 //   vertices    [[x, y, z]]
 //   faces       [{back, front, ring: [vertex ids]}]  ring's right-hand normal from back
 //               into front; front -1 on the box
 //   regions     [{grain, phase, faces: [face ids]}]
 //   partners    {x, y, z: [[low, high]]}
-//   statistics  the Tessellation3Stats fields, contiguity {PHASE: value}
+//   statistics  the Tessellation3Stats fields (binder_* in binder mode only), contiguity {PHASE: value}
 // Doubles are written in shortest round-trip form, so reading gives the same bits.
 #pragma once
 
