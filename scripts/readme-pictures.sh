@@ -20,6 +20,8 @@ cp "$tmp/3d/tessellation.png" docs/images/grains_3d_wc_co.png
 ./build/grainmesh mesh "$tmp/3d/tessellation.json" -o "$tmp/3d_mesh" --set output.picture_width=480 > /dev/null 2>&1
 cp "$tmp/3d_mesh/mesh.png" docs/images/grains_3d_wc_co_mesh.png
 cp "$tmp/3d_mesh/mesh_view.png" docs/images/grains_3d_wc_co_view.png
+./build/grainmesh tessellate data/examples/grains_3d_wc_co_binder.ini -o "$tmp/3d_binder" --set output.picture_width=900 > /dev/null
+cp "$tmp/3d_binder/tessellation_view.png" docs/images/grains_3d_wc_co_binder_view.png
 ./build/grainmesh run data/examples/grains_3d_wc_co.ini -o "$tmp/3d_run" --solve --set homogenise.boundary=periodic \
   --set export.convert_to_meters=1e-6 --set load.delta_T=-1000 --set phase.WC.alpha=5.2e-6 \
   --set phase.Co.alpha=13.8e-6 --set output.picture_width=600 > /dev/null 2>&1
