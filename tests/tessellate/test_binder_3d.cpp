@@ -69,6 +69,21 @@ TEST_CASE("3D binder: the binder's fraction exact, every grain wrapped, bounded 
   }
 }
 
+TEST_CASE("3D binder: Laguerre cells (layers about their centroids) and a bounded box reach a target too",
+          "[binder3d]") {
+  for (const bool periodic : {true, false}) {
+    Tessellation3Options o = binder_options(30, periodic, 0.15);
+    o.size_cv = 0.5;  // Laguerre cells: scaled about their centroids, not their seeds
+    o.lloyd_iterations = 0;
+    o.contiguity = 0.4;
+    const Tessellation3 t = make(o, 4);
+    INFO((periodic ? "periodic" : "bounded"));
+    CHECK(t.stats.phases[1].achieved_fraction == Approx(0.15).epsilon(1e-9));
+    CHECK(std::abs(t.stats.phases[0].contiguity - 0.4) <= kContiguityTolerance);
+    CHECK(grain_contacts(t) > 0);
+  }
+}
+
 TEST_CASE("3D binder: contiguity targets 0.2, 0.4 and 0.6 met on five seeds", "[binder3d]") {
 #ifdef GRAINMESH_SANITIZED
   const int seeds = 1;  // memory, not coverage, is the point there
