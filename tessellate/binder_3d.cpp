@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/phases.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
@@ -172,6 +173,25 @@ BinderLayout3 binder_layout_3d(const std::vector<std::vector<WholeFace>>& whole,
   settle(n);
   if (std::abs(out.contiguity - *contiguity) > kContiguityTolerance) out.range = std::pair{0.0, reached(most)};
   return out;
+}
+
+std::vector<int> binder_phases(const Tessellation3& t, const Tessellation3Options& o, Rng& rng) {
+  std::vector<double> volumes;
+  std::vector<std::vector<int>> neighbours;
+  for (const Grain3& g : t.grains)
+    if (!g.matrix) {
+      volumes.push_back(g.volume);
+      neighbours.push_back({});
+      for (int m : g.neighbours)
+        if (!t.grains[static_cast<std::size_t>(m)].matrix) neighbours.back().push_back(m);
+    }
+  std::vector<int> hard;
+  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
+    if (p != o.matrix_phase) hard.push_back(p);
+  std::vector<int> label =
+      assign_phases(volumes, neighbours, o.phases, hard, o.width * o.height * o.depth, o.arrangement, rng);
+  label.push_back(o.matrix_phase);
+  return label;
 }
 
 }  // namespace grainmesh

@@ -16,6 +16,7 @@
 #include "common/random.hpp"
 #include "common/vec3.hpp"
 #include "tessellate/laguerre_3d.hpp"
+#include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
 
@@ -45,5 +46,9 @@ std::vector<Vec3> layer_centres(const std::vector<std::vector<WholeFace>>& whole
 // fraction when even no contact leaves the cores below kMinCoreScale3.
 BinderLayout3 binder_layout_3d(const std::vector<std::vector<WholeFace>>& whole, const std::vector<Vec3>& centres,
                                double volume, double fraction, std::optional<double> contiguity, Rng& rng);
+
+// The grains' phases (all but the matrix), by volume and the arrangement, with the matrix
+// grain's (the last) appended.
+std::vector<int> binder_phases(const Tessellation3& t, const Tessellation3Options& o, Rng& rng);
 
 }  // namespace grainmesh

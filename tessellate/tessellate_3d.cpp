@@ -402,26 +402,6 @@ BinderLayout3 binder_cut(const Tessellation3Options& o, const std::vector<Vec3>&
   return layout;
 }
 
-// Binder mode's grain phases: the phases but the matrix, by volume; the matrix grain last.
-std::vector<int> binder_phases(Tessellation3& t, const Tessellation3Options& o, Rng& rng) {
-  std::vector<double> volumes;
-  std::vector<std::vector<int>> neighbours;
-  for (const Grain3& g : t.grains)
-    if (!g.matrix) {
-      volumes.push_back(g.volume);
-      neighbours.push_back({});
-      for (int m : g.neighbours)
-        if (!t.grains[static_cast<std::size_t>(m)].matrix) neighbours.back().push_back(m);
-    }
-  std::vector<int> hard;
-  for (int p = 0; p < static_cast<int>(o.phases.size()); ++p)
-    if (p != o.matrix_phase) hard.push_back(p);
-  std::vector<int> label =
-      assign_phases(volumes, neighbours, o.phases, hard, o.width * o.height * o.depth, o.arrangement, rng);
-  label.push_back(o.matrix_phase);
-  return label;
-}
-
 }  // namespace
 
 Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
