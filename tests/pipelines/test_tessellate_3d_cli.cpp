@@ -123,7 +123,7 @@ TEST_CASE("bad 3D tessellation input gives one line naming the key and no output
       {"tessellate", two, {"output.section=0.5"}, "output.section: only for 3D cells (with domain.depth)"},
       {"converge", three, {"mesh.size=0.1"}, "mesh.size: fixes an element size, which would not follow the study's levels (mesh.tets_per_grain = --start)"},
       {"run", three, {"solve.processes=0"}, "solve.processes: must be a count from 1 to 1024"},
-      {"run", three, {"tessellation.phase_mode=binder", "tessellation.matrix_phase=Co", "phase.Co.fraction=0.02"},
+      {"run", three, {"tessellation.grains=20", "tessellation.phase_mode=binder", "tessellation.matrix_phase=Co", "phase.Co.fraction=0.01"},
        "binder mode meshes the surfaces as fine as the binder layer is thick"},
       {"run", three, {"export.cells=tetrahedra", "export.plane_faces=true"}, "export.plane_faces: splits the faces of polyhedra"},
       {"run", two, {"export.plane_faces=true"}, "export.plane_faces: only for 3D cells' polyhedra"},

@@ -53,10 +53,10 @@ int grain_contacts(const Tessellation3& t) {
 
 TEST_CASE("3D binder: the binder's fraction exact, every grain wrapped, bounded grains off the box", "[binder3d]") {
   for (const bool periodic : {true, false}) {
-    const Tessellation3 t = make(binder_options(40, periodic, 0.12), 3);
+    const Tessellation3 t = make(binder_options(24, periodic, 0.12), 3);
     INFO((periodic ? "periodic" : "bounded"));
     REQUIRE(t.grains.back().matrix);
-    CHECK(t.stats.grains == 40);
+    CHECK(t.stats.grains == 24);
     CHECK(t.stats.phases[1].achieved_fraction == Approx(0.12).epsilon(1e-9));
     CHECK(t.stats.phases[0].achieved_fraction == Approx(0.88).epsilon(1e-9));
     CHECK(t.stats.binder_scale > 0.9);
