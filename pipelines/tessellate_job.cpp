@@ -42,22 +42,13 @@ void read_phase_mode(const Config& c, Options& o) {
   }
 }
 
-template <class Options>
-bool binder_mode(const Options& o) {
-  return o.phase_mode == PhaseMode::binder;
-}
-template <class Options>
-int matrix_phase(const Options& o) {
-  return o.matrix_phase;
-}
-
 // A contiguity target and the phase it is of (2D and 3D).
 template <class Options>
 void read_contiguity(const Config& c, Options& o) {
   if (c.has("tessellation.contiguity")) {
     const double target = c.number("tessellation.contiguity");
     if (!(target > 0.0 && target < 1.0)) c.fail("tessellation.contiguity", "must lie in (0, 1), got " + c.text("tessellation.contiguity"));
-    const bool binder = binder_mode(o);
+    const bool binder = o.phase_mode == PhaseMode::binder;
     if (binder && o.phases.size() != 2)
       c.fail("tessellation.contiguity", "in binder mode a target for one grain phase beside the matrix, got " +
                                             std::to_string(o.phases.size() - 1) + " grain phases");
@@ -68,11 +59,11 @@ void read_contiguity(const Config& c, Options& o) {
     // else the first.
     const std::string name = c.optional_text("tessellation.contiguity_phase").value_or("");
     for (std::size_t p = 0; p < o.phases.size(); ++p)
-      if (name.empty() ? (binder ? static_cast<int>(p) != matrix_phase(o) : o.phases[p].rest) : o.phases[p].name == name)
+      if (name.empty() ? (binder ? static_cast<int>(p) != o.matrix_phase : o.phases[p].rest) : o.phases[p].name == name)
         o.contiguity_phase = static_cast<int>(p);
     if (!name.empty() && o.contiguity_phase < 0)
       c.fail("tessellation.contiguity_phase", "no phase is named '" + name + "'");
-    if (binder && o.contiguity_phase == matrix_phase(o))
+    if (binder && o.contiguity_phase == o.matrix_phase)
       c.fail("tessellation.contiguity_phase", "binder mode sets the contiguity of the grains, not of the matrix '" + name + "'");
     if (o.contiguity_phase < 0) o.contiguity_phase = 0;
   } else if (c.has("tessellation.contiguity_phase")) {
@@ -92,7 +83,7 @@ void check_contiguity(const Cell& t, const TessellateJob<D>& job) {
   job.origin.fail("tessellation.contiguity",
          to_text(*o.contiguity) + " is out of reach for phase " + phase + " with these grains and fractions (seed " +
              std::to_string(job.seed) + "): " +
-             (range ? (binder_mode(o) ? "binder-free contacts between grains move its contiguity from "
+             (range ? (o.phase_mode == PhaseMode::binder ? "binder-free contacts between grains move its contiguity from "
                                                          : "trading like-sized grains' labels moves its contiguity from ") +
                           to_text(range->first, 3) + " to " + to_text(range->second, 3)
                     : "it reached " + to_text(reached, 3)) +
