@@ -3,6 +3,7 @@
 // exact layered tensor.
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -159,35 +160,44 @@ LaminateErrors laminate_errors(const Stiffness<6>& c, const Stiffness<6>& exact)
 
 }  // namespace
 
-TEST_CASE("3D homogenisation: a laminate of stiffness ratio 3 gives the exact layered tensor within 1 %",
-          "[homogenise3d][solve]") {
-  const Laminate3 l = laminate_cell(3.0);
-  INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
-  const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
-  // Measured: C55 and C66 +0.59 %, the others within 0.03 %.
-  for (double e : err.component) CHECK(e < 0.01);
-  CHECK(err.others < 1e-3);
-  CHECK(symmetry_error(l.h.stiffness) < 1e-3);
-}
+// The ratios both tests below take: the sanitizer build, there for memory and undefined
+// behaviour, solves the same code once, at 3.
+#ifdef GRAINMESH_SANITIZED
+const std::vector<double> kLaminateRatios{3.0};
+#else
+const std::vector<double> kLaminateRatios{3.0, 20.0};
+#endif
 
-TEST_CASE("3D homogenisation: a laminate of stiffness ratio 20 at the same mesh, the error in the shears across",
+TEST_CASE("3D homogenisation: laminates of stiffness ratio 3 and 20, the exact layered tensor within 1 % at 3, the "
+          "error in the shears across at 20",
           "[homogenise3d][solve]") {
-  const Laminate3 l = laminate_cell(20.0);
-  INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
-  const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
-  // Measured: C11 +0.96 %, C12 = C13 +0.80 %, C55 and C66 +3.4 %, the others within
-  // 0.05 %: the error of the cells next to the interfaces, first order in their size
-  // (C55 +1.1 % at h = 0.025 on a two-slab cell). Issue 24 asks 1 % for all nine: not met
-  // by the shears across at this mesh; held here so that it does not get worse.
-  for (int k : {0, 1, 2, 3, 4, 5, 6}) CHECK(err.component[k] < 0.01);
-  for (int k : {7, 8}) CHECK(err.component[k] < 0.04);
-  CHECK(err.others < 2e-3);
-  CHECK(symmetry_error(l.h.stiffness) < 2e-3);
+  for (const double ratio : kLaminateRatios) {
+    CAPTURE(ratio);
+    const Laminate3 l = laminate_cell(ratio);
+    INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));
+    const LaminateErrors err = laminate_errors(l.h.stiffness, l.exact);
+    if (ratio == 3.0) {
+      // Measured: C55 and C66 +0.59 %, the others within 0.03 %.
+      for (double e : err.component) CHECK(e < 0.01);
+      CHECK(err.others < 1e-3);
+      CHECK(symmetry_error(l.h.stiffness) < 1e-3);
+    } else {
+      // At the same mesh. Measured: C11 +0.96 %, C12 = C13 +0.80 %, C55 and C66 +3.4 %, the
+      // others within 0.05 %: the error of the cells next to the interfaces, first order in
+      // their size (C55 +1.1 % at h = 0.025 on a two-slab cell). Issue 24 asks 1 % for all
+      // nine: not met by the shears across at this mesh; held here so that it does not get
+      // worse.
+      for (int k : {0, 1, 2, 3, 4, 5, 6}) CHECK(err.component[k] < 0.01);
+      for (int k : {7, 8}) CHECK(err.component[k] < 0.04);
+      CHECK(err.others < 2e-3);
+      CHECK(symmetry_error(l.h.stiffness) < 2e-3);
+    }
+  }
 }
 
 TEST_CASE("3D homogenisation on the dual: laminates of ratio 3 and 20, the error across the layers",
           "[homogenise3d][dual3d][solve]") {
-  for (const double ratio : {3.0, 20.0}) {
+  for (const double ratio : kLaminateRatios) {
     CAPTURE(ratio);
     const Laminate3 l = laminate_cell(ratio, FoamOptions::Cells::polygons);
     INFO(show(l.h.stiffness) << "exact:\n" << show(l.exact));

@@ -180,7 +180,12 @@ std::size_t triangles_crossed(const TriMesh& mesh, const std::vector<int>& tris,
 }  // namespace
 
 TEST_CASE("binder at 5 %: two elements across the thinnest layers and q_min >= 0.5", "[mesh][grain][quality]") {
-  for (std::uint64_t seed : {1u, 2u}) {
+#ifdef GRAINMESH_SANITIZED
+  const std::vector<std::uint64_t> seeds{1};  // memory and UB there: the same code
+#else
+  const std::vector<std::uint64_t> seeds{1, 2};
+#endif
+  for (const std::uint64_t seed : seeds) {
     INFO("seed " << seed);
     TessellationOptions o;
     o.grains = 16;

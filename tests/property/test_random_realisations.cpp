@@ -26,7 +26,7 @@ namespace {
 // Realisations per test case (there are kCases). Fewer in the sanitizer build, where
 // the point is memory and undefined behaviour, not coverage of shapes.
 #ifdef GRAINMESH_SANITIZED
-constexpr int kPerCase = 6;
+constexpr int kPerCase = 4;
 #else
 constexpr int kPerCase = 90;
 #endif

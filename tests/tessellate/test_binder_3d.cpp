@@ -70,6 +70,28 @@ TEST_CASE("3D binder: the binder's fraction exact, every grain wrapped, bounded 
   }
 }
 
+TEST_CASE("3D binder: on Kelvin cells the layer's thickness is the closed form's", "[binder3d]") {
+  // Seeds on a body-centred cubic lattice of spacing L give truncated octahedra: volume
+  // L^3 / 2, area (6 + 12 sqrt 3) L^2 / 8. Wrapped cores are the cells scaled by s about
+  // their seeds, so binder_layer (2 x binder volume / its area with the grains) is
+  // 2 (1 - s^3) V / (s^2 A).
+  constexpr int n = 2;
+  constexpr double L = 1.0 / n, binder = 0.1;
+  Tessellation3Options o = binder_options(2 * n * n * n, true, binder);
+  o.lloyd_iterations = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        for (const double c : {0.25, 0.75}) o.seeds.push_back({(i + c) * L, (j + c) * L, (k + c) * L});
+  const Tessellation3 t = make(o, 1);
+  const double s = std::cbrt(1.0 - binder), V = L * L * L / 2, A = (6 + 12 * std::sqrt(3.0)) * L * L / 8;
+  REQUIRE(t.stats.grains == 2 * n * n * n);
+  for (const Grain3& g : t.grains)
+    if (!g.matrix) CHECK(g.volume == Approx(s * s * s * V).epsilon(1e-9));
+  CHECK(t.stats.binder_scale == Approx(s).epsilon(1e-12));
+  CHECK(t.stats.binder_layer == Approx(2 * (1 - s * s * s) * V / (s * s * A)).epsilon(1e-9));
+}
+
 TEST_CASE("3D binder: Laguerre cells (layers about their centroids) and a bounded box reach a target too",
           "[binder3d]") {
   for (const bool periodic : {true, false}) {
