@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "tessellate/binder_contacts.hpp"
+#include "tessellate/contiguity.hpp"
 #include "tessellate/cut.hpp"
 #include "tessellate/phases.hpp"
 #include "tessellate/window.hpp"
@@ -78,12 +79,7 @@ std::pair<int, double> contacts_for_target(const std::vector<std::vector<Vec2>>&
     st.contiguity_range = std::pair{0.0, most};
     return {hi, offset(hi)};
   }
-  int lo = 0;  // contiguity(lo) < target <= contiguity(hi)
-  while (hi - lo > 1) {
-    const int mid = (lo + hi) / 2;
-    (contiguity(mid) < target ? lo : hi) = mid;
-  }
-  const int best = std::abs(contiguity(lo) - target) < std::abs(contiguity(hi) - target) ? lo : hi;
+  const int best = contacts_nearest(hi, target, contiguity);
   return {best, offset(best)};
 }
 

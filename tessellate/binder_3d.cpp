@@ -7,7 +7,9 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/contiguity.hpp"
 #include "tessellate/phases.hpp"
+#include "tessellate/solid_moments.hpp"
 #include "tessellate/tessellation.hpp"
 
 namespace grainmesh {
@@ -106,17 +108,10 @@ std::vector<Vec3> layer_centres(const std::vector<std::vector<WholeFace>>& whole
   if (voronoi) return out;
   for (std::size_t i = 0; i < whole.size(); ++i) {
     if (whole[i].empty()) continue;
-    const Vec3 o = whole[i][0].ring[0];
-    double volume = 0.0;
-    Vec3 moment{};
+    SolidMoments m(whole[i][0].ring[0]);
     for (const WholeFace& f : whole[i])
-      for (std::size_t e = 1; e + 1 < f.ring.size(); ++e) {
-        const Vec3 a = f.ring[0] - o, b = f.ring[e] - o, c = f.ring[e + 1] - o;
-        const double v = dot(a, cross(b, c)) / 6.0;
-        volume += v;
-        moment += (v / 4.0) * (a + b + c);
-      }
-    out[i] = o + moment / volume;
+      for (std::size_t e = 1; e + 1 < f.ring.size(); ++e) m.add_triangle(f.ring[0], f.ring[e], f.ring[e + 1]);
+    out[i] = m.centroid();
   }
   return out;
 }
@@ -160,17 +155,7 @@ BinderLayout3 binder_layout_3d(const std::vector<std::vector<WholeFace>>& whole,
     const auto c = l.contacts(n);
     return l.contiguity(c, l.scale(c));
   };
-  lo = 0;
-  hi = most;
-  while (lo < hi) {
-    const int mid = (lo + hi) / 2;
-    if (reached(mid) >= *contiguity)
-      hi = mid;
-    else
-      lo = mid + 1;
-  }
-  const int n = lo > 0 && std::abs(reached(lo - 1) - *contiguity) < std::abs(reached(lo) - *contiguity) ? lo - 1 : lo;
-  settle(n);
+  settle(contacts_nearest(most, *contiguity, reached));
   if (std::abs(out.contiguity - *contiguity) > kContiguityTolerance) out.range = std::pair{0.0, reached(most)};
   return out;
 }

@@ -133,4 +133,16 @@ std::optional<std::pair<double, double>> reach_contiguity(std::vector<int>& labe
   return range;
 }
 
+int contacts_nearest(int most, double target, const std::function<double(int)>& contiguity) {
+  int lo = 0, hi = most;  // the fewest reaching the target lie in [lo, hi]
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    if (contiguity(mid) >= target)
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return lo > 0 && std::abs(contiguity(lo - 1) - target) < std::abs(contiguity(lo) - target) ? lo - 1 : lo;
+}
+
 }  // namespace grainmesh

@@ -2,6 +2,7 @@
 // labels to move it toward a target.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -32,5 +33,10 @@ double arrange_contiguity(std::vector<int>& label, const std::vector<double>& ar
 std::optional<std::pair<double, double>> reach_contiguity(std::vector<int>& label, const std::vector<double>& areas,
                                                           const SharedBoundaries& shared, int phase, double target,
                                                           double target_area, double slack, double tolerance, Rng& rng);
+
+// Binder mode's contacts: the count n in [0, most] whose contiguity(n) (not falling as n
+// grows) is nearest `target`, the fewest that reach it or one fewer when that is nearer,
+// found by bisection on n.
+int contacts_nearest(int most, double target, const std::function<double(int)>& contiguity);
 
 }  // namespace grainmesh

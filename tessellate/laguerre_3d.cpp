@@ -18,6 +18,7 @@
 
 #include "common/errors.hpp"
 #include "tessellate/exact_polyhedron.hpp"
+#include "tessellate/solid_moments.hpp"
 
 namespace grainmesh {
 
@@ -184,24 +185,18 @@ CellMoments laguerre_moments(const std::vector<Vec3>& seeds, const std::vector<d
   m.volume.assign(seeds.size(), 0.0);
   m.centroid = seeds;
   for (std::size_t i = 0; i < seeds.size(); ++i) {
-    double volume = 0.0;
-    Vec3 moment{};
-    const Vec3 o = seeds[i];
+    SolidMoments solid(seeds[i]);
     for (const auto& ring : d.cells[i].rings) {
-      const Vec3 a = to_vec(d.points[ring[0]]) - o;
-      for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
-        const Vec3 b = to_vec(d.points[ring[k]]) - o, c = to_vec(d.points[ring[k + 1]]) - o;
-        const double v = dot(a, cross(b, c)) / 6.0;
-        volume += v;
-        moment += (v / 4.0) * (a + b + c);
-      }
+      const Vec3 a = to_vec(d.points[ring[0]]);
+      for (std::size_t k = 1; k + 1 < ring.size(); ++k)
+        solid.add_triangle(a, to_vec(d.points[ring[k]]), to_vec(d.points[ring[k + 1]]));
       for (std::size_t k = 0; k < ring.size(); ++k) {
         m.vertices.push_back(to_vec(d.points[ring[k]]));
         m.edges.emplace_back(m.vertices.back(), to_vec(d.points[ring[(k + 1) % ring.size()]]));
       }
     }
-    m.volume[i] = volume;
-    if (volume > 0.0) m.centroid[i] = o + moment / volume;
+    m.volume[i] = solid.volume();
+    m.centroid[i] = solid.centroid();
   }
   return m;
 }
