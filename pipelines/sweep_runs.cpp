@@ -65,7 +65,7 @@ void add_run(const Json& j, const std::string& x_phase, const TensorQuantities& 
     add("achieved_fraction_" + phase["name"].get<std::string>(), phase["achieved_fraction"]);
   }
   if (j.contains("statistics"))
-    for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})  // 3D cells: contiguity alone
+    for (const char* key : {"contiguity", "intercept_length", "mean_free_path"})
       if (j["statistics"].contains(key))
         for (const auto& [phase, value] : j["statistics"][key].items()) add(std::string(key) + "_" + phase, value);
   if (j.contains("stresses"))

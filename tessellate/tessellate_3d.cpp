@@ -269,21 +269,24 @@ void measure_tessellation(Tessellation3& t) {
     st.phases[g.phase].achieved_fraction += g.volume / total;
     ++st.phases[g.phase].grains;
   }
+  // The stereology of descriptors.hpp in space: a random line crosses S_V / 2 boundaries
+  // per unit length (as (2 / pi) L_A in a plane), so the mean chord of a phase is
+  // 4 V_p / (2 S_pp + S_pq) and its mean free path 4 V_p / S_pq (Cauchy's 4 V / S).
   for (int p = 0; p < np; ++p) {
     double own = 0.0, other = 0.0;
     for (int q = 0; q < np; ++q) (q == p ? own : other) += shared[p * np + q];
     own *= 0.5;  // counted from both grains
     PhaseStats& s = st.phases[p];
-    s.contiguity = own + other > 0.0 ? 2.0 * own / (2.0 * own + other) : std::nan("");
-    s.intercept_length = std::nan("");  // not measured in 3D
-    s.mean_free_path = std::nan("");
+    const double boundary = 2.0 * own + other, volume = s.achieved_fraction * total;
+    s.contiguity = boundary > 0.0 ? 2.0 * own / boundary : std::nan("");
+    s.intercept_length = boundary > 0.0 ? 4.0 * volume / boundary : std::nan("");
+    s.mean_free_path = other > 0.0 ? 4.0 * volume / other : std::numeric_limits<double>::infinity();
   }
+  // Binder mode: the binder touches only grains, so its layer (2 x its volume / its area
+  // with them) is half its mean free path.
   for (const Grain3& g : t.grains)
-    if (g.matrix) {
-      double wetted = 0.0;
-      for (int q = 0; q < np; ++q) wetted += q == g.phase ? 0.0 : shared[g.phase * np + q];
-      st.binder_layer = wetted > 0.0 ? 2.0 * g.volume / wetted : 0.0;
-    }
+    if (g.matrix && std::isfinite(st.phases[g.phase].mean_free_path))
+      st.binder_layer = 0.5 * st.phases[g.phase].mean_free_path;
 }
 
 void assemble_box_cut(const LaguerreCut& cut, const std::vector<int>& grain_of_piece, Tessellation3& t) {

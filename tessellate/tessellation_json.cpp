@@ -157,19 +157,19 @@ std::string tessellation_to_json(const Tessellation& t) {
 
 Json statistics_json(const Tessellation& t) {
   Json j = statistics(t.stats, t.phases);
-  j.update(descriptors_json(t));
+  j.update(descriptors_json(t.phases, t.stats.phases));
   return j;
 }
 
-Json descriptors_json(const Tessellation& t) {
+Json descriptors_json(const std::vector<Phase>& phases, const std::vector<PhaseStats>& stats) {
   auto value = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
   Json out;
   for (const char* key : {"contiguity", "intercept_length", "mean_free_path"}) out[key] = Json::object();
-  for (std::size_t p = 0; p < t.phases.size() && p < t.stats.phases.size(); ++p) {
-    const PhaseStats& s = t.stats.phases[p];
-    out["contiguity"][t.phases[p].name] = value(s.contiguity);
-    out["intercept_length"][t.phases[p].name] = value(s.intercept_length);
-    out["mean_free_path"][t.phases[p].name] = value(s.mean_free_path);
+  for (std::size_t p = 0; p < phases.size() && p < stats.size(); ++p) {
+    const PhaseStats& s = stats[p];
+    out["contiguity"][phases[p].name] = value(s.contiguity);
+    out["intercept_length"][phases[p].name] = value(s.intercept_length);
+    out["mean_free_path"][phases[p].name] = value(s.mean_free_path);
   }
   return out;
 }
@@ -260,7 +260,6 @@ std::string tessellation_to_json(const Tessellation3& t) {
 nlohmann::ordered_json statistics_json(const Tessellation3& t) { return statistics_json(t.stats, t.phases); }
 
 nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::vector<Phase>& phases) {
-  auto value = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
   Json j;
   j["grains"] = s.grains;
   j["removed_grains"] = s.removed_grains;
@@ -279,14 +278,13 @@ nlohmann::ordered_json statistics_json(const Tessellation3Stats& s, const std::v
   j["shortest_edge_before"] = s.shortest_edge_before;
   j["sharpest_dihedral_before_deg"] = s.sharpest_dihedral_before_deg;
   j["window_origin"] = point(s.window_origin);
-  if (s.binder_scale > 0.0) {  // binder mode only, so grain mode's files keep their bytes
+  if (s.binder_scale > 0.0) {  // binder mode only
     j["binder_scale"] = s.binder_scale;
     j["binder_contacts"] = s.binder_contacts;
     j["binder_layer"] = s.binder_layer;
   }
   j["phases"] = phases_json(phases, s.phases);
-  j["contiguity"] = Json::object();
-  for (std::size_t p = 0; p < phases.size(); ++p) j["contiguity"][phases[p].name] = value(s.phases[p].contiguity);
+  j.update(descriptors_json(phases, s.phases));
   return j;
 }
 
@@ -327,7 +325,11 @@ Tessellation3Stats read_statistics(const Json& j, const std::vector<Phase>& phas
     ps.achieved_fraction = ph[p].at("achieved_fraction").get<double>();
     ps.grains = read_int(ph[p].at("grains"));
     ps.contiguity = read_double_or_nan(j.at("contiguity").at(phases[p].name));
-    ps.intercept_length = ps.mean_free_path = std::nan("");
+    // Files from before 3D cells had them: not measured.
+    ps.intercept_length = j.contains("intercept_length") ? read_double_or_nan(j["intercept_length"].at(phases[p].name))
+                                                         : std::nan("");
+    ps.mean_free_path = j.contains("mean_free_path") ? read_double_or_nan(j["mean_free_path"].at(phases[p].name))
+                                                     : std::nan("");
     s.phases.push_back(ps);
   }
   return s;

@@ -39,10 +39,11 @@ std::string tessellation_to_json(const Tessellation& t);
 // fields, phases [{name, target_fraction, achieved_fraction, grains}] and the descriptors.
 nlohmann::ordered_json statistics_json(const Tessellation& t);
 
-// The WC-Co descriptors of `t` (TessellationStats), as tessellation.json's statistics and
-// the reports carry them: {contiguity, intercept_length, mean_free_path}, each
-// {PHASE: value}, null where undefined (no boundary; no other phase touching).
-nlohmann::ordered_json descriptors_json(const Tessellation& t);
+// The WC-Co descriptors of a 2D or 3D tessellation's phases (PhaseStats), as
+// tessellation.json's statistics and the reports carry them: {contiguity,
+// intercept_length, mean_free_path}, each {PHASE: value}, null where undefined (no
+// boundary; no other phase touching).
+nlohmann::ordered_json descriptors_json(const std::vector<Phase>& phases, const std::vector<PhaseStats>& stats);
 
 // The phases as the reports give them: [{name, target_fraction, achieved_fraction, grains}].
 nlohmann::ordered_json phases_json(const Tessellation& t);

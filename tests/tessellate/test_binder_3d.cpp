@@ -70,11 +70,13 @@ TEST_CASE("3D binder: the binder's fraction exact, every grain wrapped, bounded 
   }
 }
 
-TEST_CASE("3D binder: on Kelvin cells the layer's thickness is the closed form's", "[binder3d]") {
+TEST_CASE("3D binder: on Kelvin cells the layer's thickness, the intercept and the free path are the closed form's",
+          "[binder3d]") {
   // Seeds on a body-centred cubic lattice of spacing L give truncated octahedra: volume
   // L^3 / 2, area (6 + 12 sqrt 3) L^2 / 8. Wrapped cores are the cells scaled by s about
   // their seeds, so binder_layer (2 x binder volume / its area with the grains) is
-  // 2 (1 - s^3) V / (s^2 A).
+  // 2 (1 - s^3) V / (s^2 A), the binder's mean free path (4 V / S) twice that, and the
+  // carbide's mean intercept 4 s^3 V / (s^2 A).
   constexpr int n = 2;
   constexpr double L = 1.0 / n, binder = 0.1;
   Tessellation3Options o = binder_options(2 * n * n * n, true, binder);
@@ -90,6 +92,11 @@ TEST_CASE("3D binder: on Kelvin cells the layer's thickness is the closed form's
     if (!g.matrix) CHECK(g.volume == Approx(s * s * s * V).epsilon(1e-9));
   CHECK(t.stats.binder_scale == Approx(s).epsilon(1e-12));
   CHECK(t.stats.binder_layer == Approx(2 * (1 - s * s * s) * V / (s * s * A)).epsilon(1e-9));
+  const PhaseStats &wc = t.stats.phases[0], &co = t.stats.phases[1];
+  CHECK(co.mean_free_path == Approx(4 * (1 - s * s * s) * V / (s * s * A)).epsilon(1e-9));
+  CHECK(co.intercept_length == Approx(co.mean_free_path).epsilon(1e-12));  // no Co-Co boundary
+  CHECK(wc.intercept_length == Approx(4 * s * V / A).epsilon(1e-9));
+  CHECK(wc.mean_free_path == Approx(wc.intercept_length).epsilon(1e-12));  // no contact
 }
 
 TEST_CASE("3D binder: Laguerre cells (layers about their centroids) and a bounded box reach a target too",
@@ -126,6 +133,12 @@ TEST_CASE("3D binder: contiguity targets 0.2, 0.4 and 0.6 met on five seeds", "[
       CHECK(t.stats.phases[1].achieved_fraction == Approx(binder).epsilon(1e-9));
       CHECK(grain_contacts(t) > 0);
       CHECK(t.stats.binder_contacts > 0);
+      // Gurland and Fullman's relation between the three: the binder's free path is the
+      // carbide's intercept times V_Co / (V_WC (1 - C)).
+      const PhaseStats &wc = t.stats.phases[0], &co = t.stats.phases[1];
+      CHECK(co.mean_free_path == Approx(wc.intercept_length * co.achieved_fraction /
+                                        (wc.achieved_fraction * (1 - wc.contiguity)))
+                                     .epsilon(1e-9));
     }
 }
 

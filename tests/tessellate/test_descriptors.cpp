@@ -80,7 +80,7 @@ TEST_CASE("one phase touches only itself: contiguity 1, no free path", "[tessell
     if (!periodic) CHECK(s.intercept_length == Approx(std::numbers::pi * 2.0 / (2.0 * boundary)).epsilon(1e-12));
     CHECK(s.intercept_length < std::numbers::pi * 2.0 / (2.0 * boundary) + 1e-12);  // sides can only add
     // In the reports: null where undefined.
-    const auto j = descriptors_json(t);
+    const auto j = descriptors_json(t.phases, t.stats.phases);
     CHECK(j["contiguity"]["WC"].get<double>() == 1.0);
     CHECK(j["mean_free_path"]["WC"].is_null());
   }
