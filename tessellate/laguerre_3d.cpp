@@ -326,13 +326,14 @@ void add_layers(const ExactPolyhedron& poly, int seed, const EK::Point_3& centre
 }  // namespace
 
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
-                             bool periodic, const Layering* layering) {
+                             bool periodic, const LayeringOf& layering_of) {
   const Exact d(seeds, weights, box, periodic);
   LaguerreCut out;
   const int n = static_cast<int>(seeds.size());
   out.cell_faces.assign(n, 0);
   out.neighbours.resize(n);
   out.whole = whole_faces(d);
+  const std::optional<Layering> layering = layering_of ? layering_of(out.whole) : std::nullopt;
   ExactVertices vertices(out.vertices);
   for (int i = 0; i < n; ++i) {
     const Exact::Cell& cell = d.cells[i];

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -65,8 +67,10 @@ struct Layering {
   std::vector<Vec3> centres;  // per seed, inside its cell
   double scale = 1.0;         // in (0, 1)
 };
+// The layers to split the cells into, chosen from the whole cells (none: cut them whole).
+using LayeringOf = std::function<std::optional<Layering>(const std::vector<std::vector<WholeFace>>& whole)>;
 LaguerreCut laguerre_box_cut(const std::vector<Vec3>& seeds, const std::vector<double>& weights, Vec3 box,
-                             bool periodic, const Layering* layering = nullptr);
+                             bool periodic, const LayeringOf& layering = {});
 
 // A corner of a periodic cell given whole (a Neper file's): the point bases[base] moved by
 // `shift` periods along each axis, computed exactly, so each image of one point is that

@@ -391,18 +391,20 @@ void regularise(Tessellation3& t, const Tessellation3Options& o, double threshol
   st.removed_regions = done.removed_regions;
 }
 
-// Binder mode: the layout of cores, binder and contacts on the whole cells of `cut`, and
-// the cut made again with those layers.
-BinderLayout3 binder_cut(const Tessellation3Options& o, const std::vector<Vec3>& seeds,
-                         const std::vector<double>& weights, Rng& rng, LaguerreCut& cut) {
+// The exact cut of the cells into the box; in binder mode each cell split first into its
+// core and frustums, as `layout` (chosen on the whole cells) says.
+LaguerreCut box_cut(const Tessellation3Options& o, const std::vector<Vec3>& seeds, const std::vector<double>& weights,
+                    Rng& rng, BinderLayout3& layout) {
   const Vec3 box{o.width, o.height, o.depth};
+  if (o.phase_mode != PhaseMode::binder) return laguerre_box_cut(seeds, weights, box, o.periodic);
   const bool voronoi = std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights[0]; });
-  Layering layering{.centres = layer_centres(cut.whole, seeds, voronoi), .scale = 1.0};
-  BinderLayout3 layout = binder_layout_3d(cut.whole, layering.centres, o.width * o.height * o.depth,
-                                          target_fraction(o.phases, o.matrix_phase), o.contiguity, rng);
-  layering.scale = layout.scale;
-  cut = laguerre_box_cut(seeds, weights, box, o.periodic, &layering);
-  return layout;
+  return laguerre_box_cut(seeds, weights, box, o.periodic, [&](const std::vector<std::vector<WholeFace>>& whole) {
+    Layering layering{.centres = layer_centres(whole, seeds, voronoi), .scale = 1.0};
+    layout = binder_layout_3d(whole, layering.centres, o.width * o.height * o.depth,
+                              target_fraction(o.phases, o.matrix_phase), o.contiguity, rng);
+    layering.scale = layout.scale;
+    return std::optional<Layering>(std::move(layering));
+  });
 }
 
 }  // namespace
@@ -427,7 +429,8 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
       for (int a = 0; a < 3; ++a) s[a] = reduce(s[a] - origin[a], box[a]);
     t.stats.window_origin = origin;
   }
-  LaguerreCut cut = laguerre_box_cut(seeds, weights, box, o.periodic);
+  BinderLayout3 layout;
+  const LaguerreCut cut = box_cut(o, seeds, weights, rng, layout);
 
   // Grains: the seeds with a cell, numbered in seed order.
   std::vector<int> grain_of_seed(o.grains, -1), seed_of_grain;
@@ -446,7 +449,6 @@ Tessellation3 tessellate_3d(const Tessellation3Options& o, Rng& rng) {
   const double diameter =
       std::cbrt(6.0 * o.width * o.height * o.depth / (std::numbers::pi * static_cast<double>(seed_of_grain.size())));
   if (o.phase_mode == PhaseMode::binder) {
-    const BinderLayout3 layout = binder_cut(o, seeds, weights, rng, cut);
     t.stats.binder_scale = layout.scale;
     t.stats.binder_contacts = layout.contacts;
     t.stats.contiguity_range = layout.range;
