@@ -1,5 +1,6 @@
 #include "pipelines/tessellation_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -30,15 +31,32 @@ Json cell_fields(const T& t, std::uint64_t seed) {
           {"statistics", statistics}, {"vertices", t.vertices.size()}, {"regions", t.regions.size()}};
 }
 
-// The phases with their targets and contiguity (a phase of grains), and the grains' sizes
-// as measured, under the summary line.
+// Binder mode's binder: a phase without grains of its own (2D), the matrix grain's (3D).
+bool is_binder(const Tessellation& t, std::size_t p) {
+  return t.stats.phases[p].grains == 0 && t.stats.phases[p].achieved_fraction > 0.0;
+}
+bool is_binder(const Tessellation3& t, std::size_t p) {
+  return std::any_of(t.grains.begin(), t.grains.end(),
+                     [&](const Grain3& g) { return g.matrix && g.phase == static_cast<int>(p); });
+}
+
+// The phases with their targets and descriptors (a phase of grains: its contiguity and
+// mean intercept; the binder: its mean free path), and the grains' sizes as measured,
+// under the summary line.
 template <class T>
 void print_phases(const T& t, const char* diameter) {
   for (std::size_t p = 0; p < t.phases.size(); ++p) {
     const auto& s = t.stats.phases[p];
-    std::printf("  phase %-10s target %.4f achieved %.4f (%d grains)", t.phases[p].name.c_str(), s.target_fraction,
-                s.achieved_fraction, s.grains);
-    if (s.grains > 0 && std::isfinite(s.contiguity)) std::printf(", contiguity %.3f", s.contiguity);
+    std::printf("  phase %-10s target %.4f achieved %.4f", t.phases[p].name.c_str(), s.target_fraction,
+                s.achieved_fraction);
+    if (is_binder(t, p)) {
+      std::printf(" (binder)");
+      if (std::isfinite(s.mean_free_path)) std::printf(", mean free path %.4g", s.mean_free_path);
+    } else {
+      std::printf(" (%d grain%s)", s.grains, s.grains == 1 ? "" : "s");
+      if (s.grains > 0 && std::isfinite(s.contiguity)) std::printf(", contiguity %.3f", s.contiguity);
+      if (s.grains > 0 && std::isfinite(s.intercept_length)) std::printf(", mean intercept %.4g", s.intercept_length);
+    }
     std::printf("\n");
   }
   if (t.stats.diameter_mean > 0.0)

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "helpers.hpp"
 #include "tessellate/tessellation_json.hpp"
@@ -38,7 +39,13 @@ TEST_CASE("every 3D grains example tessellates, meets its phase targets and read
     // The grains' volumes and (binder mode) the matrix's fill the box.
     const double matrix = s.contains("binder_scale") ? report["phases"][1]["achieved_fraction"].get<double>() : 0.0;
     CHECK(s["volume_mean"].get<double>() * s["grains"].get<double>() == Approx((1.0 - matrix) * box).epsilon(1e-9));
-    if (stem == "grains_3d_wc_co_binder") CHECK(std::abs(s["contiguity"]["WC"].get<double>() - 0.4) <= 0.02);
+    if (stem == "grains_3d_wc_co_binder") {
+      CHECK(std::abs(s["contiguity"]["WC"].get<double>() - 0.4) <= 0.02);
+      // The summary names the binder and gives its mean free path, the report's to its digits.
+      char said[64];
+      std::snprintf(said, sizeof said, "(binder), mean free path %.4g\n", s["mean_free_path"]["Co"].get<double>());
+      CHECK(r.out.find(said) != std::string::npos);
+    }
     // Read back bit for bit (and validated on the way).
     const auto path = (dir / "out" / "tessellation.json").string();
     const Tessellation3 t = tessellation_from_json<3>(test::read_file(path), path);
