@@ -8,6 +8,7 @@
 #include "common/format.hpp"
 #include "grains/conformity.hpp"
 #include "pipelines/mesh_outputs.hpp"
+#include "pipelines/drawing.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "tessellate/tessellation_json.hpp"
@@ -32,7 +33,7 @@ void mesh_cell(const T& t, const std::filesystem::path& tessellation, const Conf
               {"tessellation", tessellation.string()},
               {"grains", t.stats.grains},
               {"regions", t.regions.size()}};
-  report.update(write_mesh_files(staged.dir(), t, m, job, Drawing{}, warnings));
+  report.update(write_mesh_files(staged.dir(), t, m, job, stage_drawing(c), warnings));
   report["seconds"] = m.seconds;
   report = finish_stage(staged, std::move(report), job.deadline(), warnings);
   print_mesh_summary(m, report["mesh"]);

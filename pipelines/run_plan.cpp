@@ -19,15 +19,6 @@ Boundary read_boundary(const Config& c) {
   c.fail("homogenise.boundary", "must be mixed or periodic, got '" + b + "'");
 }
 
-Pictures read_pictures(const Config& c) {
-  if (!c.has("output.pictures")) return Pictures::all;
-  const std::string p = c.text("output.pictures");
-  if (p == "none" || p == "false") return Pictures::none;
-  if (p == "basic") return Pictures::basic;
-  if (p == "all" || p == "true") return Pictures::all;
-  c.fail("output.pictures", "must be none, basic or all, got '" + p + "'");
-}
-
 bool read_keep_cases(const Config& c, bool solve) {
   const std::string cases = c.has("output.cases") ? c.text("output.cases") : "keep";
   if (cases != "keep" && cases != "answers") c.fail("output.cases", "must be keep or answers, got '" + cases + "'");

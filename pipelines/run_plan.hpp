@@ -12,17 +12,12 @@
 #include "analysis/homogenise.hpp"
 #include "export/foam_options.hpp"
 #include "pipelines/config.hpp"
+#include "pipelines/drawing.hpp"
 #include "pipelines/element_files.hpp"
 #include "pipelines/mesh_job.hpp"
 #include "pipelines/tessellate_job.hpp"
 
 namespace grainmesh {
-
-// Which pictures a run draws (output.pictures): none (no PNG, and no results.vtu: what a
-// sweep wants); basic (tessellation.png, mesh.png and, solved, stress_xx.png and
-// results.vtu); all (also mesh_detail.png, stress_yy.png, stress_xy.png and
-// displacement.png), the default. true and false are all and none.
-enum class Pictures { none, basic, all };
 
 // The jobs of a D-dimensional cell's tessellation and mesh.
 template <int D>

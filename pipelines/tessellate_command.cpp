@@ -4,6 +4,7 @@
 #include <string>
 
 #include "pipelines/config.hpp"
+#include "pipelines/drawing.hpp"
 #include "pipelines/output_dir.hpp"
 #include "pipelines/report.hpp"
 #include "pipelines/tessellation_outputs.hpp"
@@ -24,7 +25,7 @@ void tessellate_cell(const Config& c, const std::filesystem::path& out) {
 
   StagedOutput staged(out, "tessellate");
   Json report{{"config", c.source()}};
-  report.update(write_tessellation_files(staged.dir(), t, job, Drawing{}, warnings));
+  report.update(write_tessellation_files(staged.dir(), t, job, stage_drawing(c), warnings));
   write_tessellation_viewer(staged.dir(), t);
   report["seconds"] = seconds;
   report = finish_stage(staged, std::move(report), job.options.deadline, warnings);

@@ -168,3 +168,27 @@ TEST_CASE("a 2D mesh.vtu names its phases, as the 3D one does", "[cli][vtu]") {
   CHECK(vtu.labels[0].name == "phase_names");
   CHECK(vtu.labels[0].labels == std::vector<std::string>{"particulate", "matrix"});
 }
+
+TEST_CASE("grainmesh tessellate and mesh draw no picture under output.pictures = none, in 2D and 3D", "[cli]") {
+  test::ScratchDir dir("stage-pictures");
+  std::ofstream(dir / "solid.ini") << "[domain]\nwidth = 1\nheight = 1\ndepth = 1\n[tessellation]\ngrains = 8\n"
+                                      "[phase.WC]\nfraction = rest\nE = 700e9\nnu = 0.2\n[mesh]\ntets_per_grain = 60\n";
+  const std::string plane = (test::source_dir() / "data/default.ini").string();
+  for (const std::string& config : {plane, (dir / "solid.ini").string()}) {
+    for (const char* pictures : {"none", "basic"}) {
+      const fs::path out = dir / ((config == plane ? "plane-" : "solid-") + std::string(pictures));
+      REQUIRE(run_grainmesh({"tessellate", config, "-o", (out / "t").string(), "--set", "tessellation.grains=8", "--set",
+                             std::string("output.pictures=") + pictures})
+                  .exit_code == 0);
+      REQUIRE(run_grainmesh({"mesh", (out / "t/tessellation.json").string(), "-o", (out / "m").string(), "--set",
+                             std::string("output.pictures=") + pictures})
+                  .exit_code == 0);
+      int png = 0;
+      for (const fs::path& f : test::files_under(out)) png += f.extension() == ".png";
+      INFO(out.filename().string());
+      CHECK((png == 0) == (std::string(pictures) == "none"));
+      CHECK(fs::exists(out / "t/tessellation.json"));
+      CHECK(fs::exists(out / "m/mesh.vtu"));
+    }
+  }
+}
