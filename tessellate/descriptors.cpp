@@ -61,14 +61,22 @@ std::vector<PhaseDescriptors> phase_descriptors(const Tessellation& t) {
   }
 
   for (PhaseDescriptors& p : d) {
-    const double perimeter = 2.0 * p.own_boundary + p.other_boundary;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    p.contiguity = perimeter > 0.0 ? 2.0 * p.own_boundary / perimeter : nan;
-    p.intercept_length = perimeter > 0.0 ? std::numbers::pi * p.area / perimeter : nan;
-    p.mean_free_path =
-        p.other_boundary > 0.0 ? std::numbers::pi * p.area / p.other_boundary : std::numeric_limits<double>::infinity();
+    const Stereology s = stereology(2, p.area, p.own_boundary, p.other_boundary);
+    p.contiguity = s.contiguity;
+    p.intercept_length = s.intercept_length;
+    p.mean_free_path = s.mean_free_path;
   }
   return d;
+}
+
+Stereology stereology(int dimensions, double size, double own_boundary, double other_boundary) {
+  const double chord = dimensions == 2 ? std::numbers::pi : 4.0;
+  const double boundary = 2.0 * own_boundary + other_boundary;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {.contiguity = boundary > 0.0 ? 2.0 * own_boundary / boundary : nan,
+          .intercept_length = boundary > 0.0 ? chord * size / boundary : nan,
+          .mean_free_path =
+              other_boundary > 0.0 ? chord * size / other_boundary : std::numeric_limits<double>::infinity()};
 }
 
 }  // namespace grainmesh

@@ -29,6 +29,19 @@ struct PhaseDescriptors {
   double mean_free_path = 0.0;
 };
 
+// Gurland's contiguity and the mean chords of a phase from its size (area in a plane,
+// volume in space) and its boundary with its own phase (each boundary once) and with the
+// others (lengths in a plane, areas in space). A random line crosses (2 / pi) L_A
+// boundaries per unit length in a plane and S_V / 2 in space, so a mean chord is
+// pi A / L or 4 V / S (Cauchy). NaN without boundary; the free path infinite when no
+// other phase touches.
+struct Stereology {
+  double contiguity = 0.0;
+  double intercept_length = 0.0;
+  double mean_free_path = 0.0;
+};
+Stereology stereology(int dimensions, double size, double own_boundary, double other_boundary);
+
 // Per phase of `t`, in its order. In a periodic cell a grain boundary along a cell side
 // counts once (the pieces across the side are compared); in a plane cell the sides are the
 // cell's edge, not a boundary.

@@ -14,6 +14,7 @@
 #include "common/format.hpp"
 #include "tessellate/binder_3d.hpp"
 #include "tessellate/contiguity.hpp"
+#include "tessellate/descriptors.hpp"
 #include "tessellate/laguerre_3d.hpp"
 #include "tessellate/phases.hpp"
 #include "tessellate/radii.hpp"
@@ -269,18 +270,15 @@ void measure_tessellation(Tessellation3& t) {
     st.phases[g.phase].achieved_fraction += g.volume / total;
     ++st.phases[g.phase].grains;
   }
-  // The stereology of descriptors.hpp in space: a random line crosses S_V / 2 boundaries
-  // per unit length (as (2 / pi) L_A in a plane), so the mean chord of a phase is
-  // 4 V_p / (2 S_pp + S_pq) and its mean free path 4 V_p / S_pq (Cauchy's 4 V / S).
   for (int p = 0; p < np; ++p) {
     double own = 0.0, other = 0.0;
     for (int q = 0; q < np; ++q) (q == p ? own : other) += shared[p * np + q];
     own *= 0.5;  // counted from both grains
     PhaseStats& s = st.phases[p];
-    const double boundary = 2.0 * own + other, volume = s.achieved_fraction * total;
-    s.contiguity = boundary > 0.0 ? 2.0 * own / boundary : std::nan("");
-    s.intercept_length = boundary > 0.0 ? 4.0 * volume / boundary : std::nan("");
-    s.mean_free_path = other > 0.0 ? 4.0 * volume / other : std::numeric_limits<double>::infinity();
+    const Stereology d = stereology(3, s.achieved_fraction * total, own, other);  // descriptors.hpp
+    s.contiguity = d.contiguity;
+    s.intercept_length = d.intercept_length;
+    s.mean_free_path = d.mean_free_path;
   }
   // Binder mode: the binder touches only grains, so its layer (2 x its volume / its area
   // with them) is half its mean free path.

@@ -1,5 +1,7 @@
 #include "tessellate/tessellation_3d.hpp"
 
+#include "tessellate/solid_moments.hpp"
+
 namespace grainmesh {
 
 Vec3 ring_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
@@ -11,18 +13,18 @@ Vec3 ring_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
 double face_area(const Tessellation3& t, const Face3& f) { return 0.5 * norm(ring_normal(t.vertices, f.ring)); }
 
 double region_volume(const Tessellation3& t, const Region3& r) {
-  // Divergence theorem over fans of the outward faces, about the first face's first vertex.
-  const Vec3 o = t.vertices[t.faces[r.faces[0]].ring[0]];
+  // Fans of the faces turned outward, about the first face's first vertex.
+  SolidMoments m(t.vertices[t.faces[r.faces[0]].ring[0]]);
   const int self = static_cast<int>(&r - t.regions.data());
-  double v = 0.0;
   for (int f : r.faces) {
     const Face3& face = t.faces[f];
-    const double sign = face.back == self ? 1.0 : -1.0;
-    const Vec3 a = t.vertices[face.ring[0]] - o;
-    for (std::size_t k = 1; k + 1 < face.ring.size(); ++k)
-      v += sign * dot(a, cross(t.vertices[face.ring[k]] - o, t.vertices[face.ring[k + 1]] - o)) / 6.0;
+    const bool outward = face.back == self;
+    for (std::size_t k = 1; k + 1 < face.ring.size(); ++k) {
+      const Vec3 a = t.vertices[face.ring[0]], b = t.vertices[face.ring[k]], c = t.vertices[face.ring[k + 1]];
+      outward ? m.add_triangle(a, b, c) : m.add_triangle(a, c, b);
+    }
   }
-  return v;
+  return m.volume();
 }
 
 std::pair<int, int> box_side(const Tessellation3& t, const std::vector<int>& ring) {
