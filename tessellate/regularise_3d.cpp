@@ -18,6 +18,9 @@ namespace {
 
 // A collapse may not make a dihedral angle of a region sharper than this.
 constexpr double kMinDihedral = 20.0 * std::numbers::pi / 180.0;
+// Angles equal to this (radians) count as unchanged: a collapse that leaves a region's
+// sharpest angle where it was must not be refused by the rounding of its recomputation.
+constexpr double kAngleRounding = 1e-9;
 // Nor move more than this share of a grain's volume to its neighbours: a short edge's
 // collapse moves a sliver; a layer of a laminate the box cut in two (pieces half its
 // thickness, below the threshold when the layers are thin) must keep its volume.
@@ -339,7 +342,7 @@ class Collapser {
     for (int r : regions) {
       if (!ok) break;
       if (flat(r) && removable(r, flattened)) flattened.push_back(r);
-      else ok = region_ok(r) && region_sharpest(r) >= std::min(before[r], kMinDihedral);
+      else ok = region_ok(r) && region_sharpest(r) >= std::min(before[r], kMinDihedral) - kAngleRounding;
     }
     if (!ok) {
       revert(s);
@@ -434,7 +437,7 @@ class Collapser {
     const double before = sharpest();
     fan_centre_[f] = static_cast<int>(t_.vertices.size());
     t_.vertices.push_back(fan.centre);
-    if (sharpest() >= std::min(before, kMinDihedral)) return true;
+    if (sharpest() >= std::min(before, kMinDihedral) - kAngleRounding) return true;
     fan_centre_.erase(f);
     t_.vertices.pop_back();
     return false;
