@@ -105,7 +105,8 @@ void write_surface_geo(const std::filesystem::path& dir, const Tessellation3& t,
   geo << "Merge \"surface.msh\";\n";
   for (std::size_t r = 0; r < t.regions.size(); ++r) {
     std::string loop;
-    for (int f : t.regions[r].faces) loop += (loop.empty() ? "" : ", ") + std::to_string(f + 1);
+    for (int f : t.regions[r].faces)  // a bent face's pieces: its triangles on some (surface_mesh.hpp)
+      if (!s.faces[f].empty()) loop += (loop.empty() ? "" : ", ") + std::to_string(f + 1);
     geo << "Surface Loop(" << r + 1 << ") = {" << loop << "};\nVolume(" << r + 1 << ") = {" << r + 1 << "};\n";
   }
   geo << "Mesh.CharacteristicLengthMax = " << h << ";\nMesh.Optimize = 1;\nMesh.SaveAll = 1;\n";

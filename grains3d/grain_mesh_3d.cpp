@@ -74,7 +74,7 @@ RegionTets fill_region(const Tessellation3& t, int r, const std::vector<Vec3>& p
 }  // namespace
 
 double size_for_tets_per_grain(const Tessellation3& t, double per_grain) {
-  constexpr double kTetsPerBound = 1.3;
+  constexpr double kTetsPerBound = 1.05;
   const auto grains = std::count_if(t.grains.begin(), t.grains.end(), [](const Grain3& g) { return !g.matrix; });
   const double grain = t.width * t.height * t.depth / static_cast<double>(std::max<std::ptrdiff_t>(1, grains));
   return regular_tet_edge(kTetsPerBound * grain / per_grain);

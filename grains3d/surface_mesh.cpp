@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
+#include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -10,10 +13,24 @@
 #include "common/geometry.hpp"
 #include "common/ring.hpp"
 #include "mesh/delaunay.hpp"
+#include "tessellate/bent_face.hpp"
 
 namespace grainmesh {
 
 namespace {
+
+// A bent face's pieces meeting at a larger angle than this keep their diagonal as an edge
+// of the mesh (its volume exact there); across gentler folds the triangles run straight.
+constexpr double kFold = 20.0 * std::numbers::pi / 180.0;
+
+// A face to mesh: its ring (turning about its normal) and, for a bent face
+// the regularisation split into planar pieces, those pieces and its inner vertices.
+struct FaceToMesh {
+  std::vector<int> ring;                   // vertex ids
+  std::vector<std::array<int, 3>> pieces;  // empty: one planar face
+  std::vector<int> inner;                  // tessellation vertices inside it (a fan's centre)
+  std::vector<std::pair<int, int>> folds;  // diagonals between pieces bent by more than kFold, kept as edges
+};
 
 struct Edges {
   std::map<std::pair<int, int>, int> id;  // (min, max) vertex ids -> edge
@@ -21,42 +38,49 @@ struct Edges {
   std::vector<std::vector<int>> seeds;    // point ids of the seeds from ends.first to ends.second
 };
 
-// Every edge once, cut into equal pieces of length nearest h. The direction is fixed by
-// the points alone (lexicographic), so an edge and its periodic image are seeded alike:
-// their seeds differ by exactly the box's edge in the side's coordinate.
-Edges seed_edges(const Tessellation3& t, double h, std::vector<Vec3>& points) {
+// Every edge once (the faces' rings and the folds kept), cut into equal pieces of length
+// nearest h. The direction is fixed by the points alone (lexicographic), so an edge and its
+// periodic image are seeded alike: their seeds differ by exactly the box's edge in the
+// side's coordinate.
+Edges seed_edges(const std::vector<std::pair<std::vector<int>, FaceToMesh>>& faces, double h, std::vector<Vec3>& points) {
   Edges e;
-  for (const Face3& f : t.faces)
-    for (std::size_t k = 0; k < f.ring.size(); ++k) {
-      int a = f.ring[k], b = f.ring[(k + 1) % f.ring.size()];
-      if (!e.id.emplace(std::minmax(a, b), static_cast<int>(e.ends.size())).second) continue;
-      const Vec3 pa = t.vertices[a], pb = t.vertices[b];
-      if (std::tie(pb.x, pb.y, pb.z) < std::tie(pa.x, pa.y, pa.z)) std::swap(a, b);
-      e.ends.emplace_back(a, b);
-      const Vec3 p = t.vertices[a], q = t.vertices[b];
-      const int n = std::max(1, static_cast<int>(std::lround(norm(q - p) / h)));
-      std::vector<int> seeds;
-      for (int s = 1; s < n; ++s) {
-        const double u = static_cast<double>(s) / n;
-        seeds.push_back(static_cast<int>(points.size()));
-        points.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y), p.z + u * (q.z - p.z)});
-      }
-      e.seeds.push_back(std::move(seeds));
+  auto seed = [&](int a, int b) {
+    if (!e.id.emplace(std::minmax(a, b), static_cast<int>(e.ends.size())).second) return;
+    const Vec3 pa = points[a], pb = points[b];
+    if (std::tie(pb.x, pb.y, pb.z) < std::tie(pa.x, pa.y, pa.z)) std::swap(a, b);
+    e.ends.emplace_back(a, b);
+    const Vec3 p = points[a], q = points[b];
+    const int n = std::max(1, static_cast<int>(std::lround(norm(q - p) / h)));
+    std::vector<int> seeds;
+    for (int s = 1; s < n; ++s) {
+      const double u = static_cast<double>(s) / n;
+      seeds.push_back(static_cast<int>(points.size()));
+      points.push_back({p.x + u * (q.x - p.x), p.y + u * (q.y - p.y), p.z + u * (q.z - p.z)});
     }
+    e.seeds.push_back(std::move(seeds));
+  };
+  for (const auto& [group, f] : faces) {
+    for (std::size_t k = 0; k < f.ring.size(); ++k) seed(f.ring[k], f.ring[(k + 1) % f.ring.size()]);
+    for (const auto& [a, b] : f.folds) seed(a, b);
+  }
   return e;
 }
 
-// The boundary of face f as point ids, counter-clockwise about its normal: its vertices
-// with the seeds of each edge between.
-std::vector<int> face_boundary(const Face3& f, const Edges& e) {
+// The seeds of edge a b, from a to b.
+std::vector<int> edge_seeds(int a, int b, const Edges& e) {
+  const int id = e.id.at(std::minmax(a, b));
+  const auto& seeds = e.seeds[id];
+  if (e.ends[id].first == a) return seeds;
+  return {seeds.rbegin(), seeds.rend()};
+}
+
+// The boundary of a ring as point ids: its vertices with the seeds of each edge between.
+std::vector<int> ring_boundary(const std::vector<int>& ring, const Edges& e) {
   std::vector<int> out;
-  for (std::size_t k = 0; k < f.ring.size(); ++k) {
-    const int a = f.ring[k], b = f.ring[(k + 1) % f.ring.size()];
-    const int id = e.id.at(std::minmax(a, b));
-    out.push_back(a);
-    const auto& seeds = e.seeds[id];
-    if (e.ends[id].first == a) out.insert(out.end(), seeds.begin(), seeds.end());
-    else out.insert(out.end(), seeds.rbegin(), seeds.rend());
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    out.push_back(ring[k]);
+    const auto seeds = edge_seeds(ring[k], ring[(k + 1) % ring.size()], e);
+    out.insert(out.end(), seeds.begin(), seeds.end());
   }
   return out;
 }
@@ -67,35 +91,30 @@ Vec3 newell_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
   return n / norm(n);
 }
 
-// Meshes one planar face: lattice points inside, a constrained Delaunay triangulation,
-// Laplacian smoothing of the inner points with flips. New points are appended to
-// `points` (on the box side `side` exactly, when axis >= 0); returns the triangles.
-std::vector<std::array<int, 3>> mesh_face(const std::vector<int>& boundary, std::pair<int, int> side, Vec3 box,
-                                          double h, std::vector<Vec3>& points) {
-  const Vec3 n = newell_normal(points, boundary);
-  const Vec3 o = points[boundary[0]];
-  Vec3 u = points[boundary[1]] - o;
-  u = u / norm(u);
-  const Vec3 w = cross(n, u);
-  std::vector<Vec2> xy;
-  for (int id : boundary) xy.push_back({dot(points[id] - o, u), dot(points[id] - o, w)});
-  const std::size_t nb = xy.size();
+// A face in its plane: the first `nb` points its boundary, the rest up to the
+// constraints' fixed; lattice points of spacing h added 0.6 h clear of the boundary, the
+// fixed points and the constraints, a constrained Delaunay triangulation, Laplacian
+// smoothing of the lattice points with flips (xy gets them).
+Triangulation triangulate_plane(std::vector<Vec2>& xy, std::size_t nb, const std::vector<std::array<int, 2>>& constraints,
+                                double h) {
+  const std::size_t fixed = xy.size();
   Box bounds;
   for (Vec2 p : xy) bounds.extend(p);
   const double row = h * std::sqrt(3.0) / 2.0;
-  const std::vector<Vec2> ring(xy.begin(), xy.end());
+  const std::vector<Vec2> ring(xy.begin(), xy.begin() + static_cast<std::ptrdiff_t>(nb));
   for (int j = 0; bounds.lo.y + (j + 0.5) * row < bounds.hi.y; ++j)
     for (int i = 0; bounds.lo.x + (i + 0.5) * h < bounds.hi.x; ++i) {
       const Vec2 p{bounds.lo.x + (i + (j % 2 == 0 ? 0.5 : 1.0)) * h, bounds.lo.y + (j + 0.5) * row};
       if (!inside_ring(ring, p)) continue;
       double clear = 1e300;
       for (std::size_t k = 0; k < nb; ++k) clear = std::min(clear, segment_distance2(p, xy[k], xy[(k + 1) % nb]));
+      for (std::size_t k = nb; k < fixed; ++k) clear = std::min(clear, norm2(p - xy[k]));
+      for (std::size_t k = nb; k < constraints.size(); ++k)
+        clear = std::min(clear, segment_distance2(p, xy[constraints[k][0]], xy[constraints[k][1]]));
       if (clear >= 0.36 * h * h) xy.push_back(p);
     }
-  std::vector<std::array<int, 2>> constraints;
-  for (std::size_t k = 0; k < nb; ++k) constraints.push_back({static_cast<int>(k), static_cast<int>((k + 1) % nb)});
   Triangulation tri = constrained_delaunay_triangulation(xy, constraints);
-  for (int pass = 0; pass < 5 && xy.size() > nb; ++pass) {
+  for (int pass = 0; pass < 5 && xy.size() > fixed; ++pass) {
     std::vector<Vec2> sum(xy.size(), Vec2{});
     std::vector<int> count(xy.size(), 0);
     for (const auto& tr : tri.triangles)
@@ -104,21 +123,191 @@ std::vector<std::array<int, 3>> mesh_face(const std::vector<int>& boundary, std:
           sum[tr[k]] += xy[tr[(k + m) % 3]];
           ++count[tr[k]];
         }
-    for (std::size_t p = nb; p < xy.size(); ++p)
+    for (std::size_t p = fixed; p < xy.size(); ++p)
       if (count[p] > 0) xy[p] = sum[p] / static_cast<double>(count[p]);
     if (!restore_delaunay(tri, xy)) tri = constrained_delaunay_triangulation(xy, constraints);
   }
+  return tri;
+}
+
+// Meshes one face in its plane (a bent face: in the plane of its boundary, each point
+// lifted onto the piece under it): lattice points inside, a constrained Delaunay
+// triangulation, Laplacian smoothing of the lattice points with flips. New points are
+// appended to `points` (on the box side `side` exactly, when axis >= 0); returns the
+// triangles and, for a bent face, the piece under each one's centroid.
+std::vector<std::array<int, 3>> mesh_face(const FaceToMesh& face, const Edges& edges, std::pair<int, int> side,
+                                          Vec3 box, double h, std::vector<Vec3>& points, std::vector<int>& piece_of) {
+  const std::vector<int> boundary = ring_boundary(face.ring, edges);
+  const Vec3 n = newell_normal(points, boundary);
+  const Vec3 o = points[boundary[0]];
+  Vec3 u = points[boundary[1]] - o;
+  u = u / norm(u);
+  const Vec3 w = cross(n, u);
+  auto flat = [&](int id) { return Vec2{dot(points[id] - o, u), dot(points[id] - o, w)}; };
+  std::vector<Vec2> xy;
+  for (int id : boundary) xy.push_back(flat(id));
+  const std::size_t nb = xy.size();
+  for (int id : face.inner) xy.push_back(flat(id));
   std::vector<int> id(boundary);
-  for (std::size_t p = nb; p < xy.size(); ++p) {
+  id.insert(id.end(), face.inner.begin(), face.inner.end());
+  std::vector<std::array<int, 2>> constraints;
+  for (std::size_t k = 0; k < nb; ++k) constraints.push_back({static_cast<int>(k), static_cast<int>((k + 1) % nb)});
+  // The folds kept: their seeds fixed, their pieces constraints.
+  for (const auto& [a, b] : face.folds) {
+    const auto at = [&](int v) { return static_cast<int>(std::find(id.begin(), id.end(), v) - id.begin()); };
+    int last = at(a);
+    for (int v : edge_seeds(a, b, edges)) {
+      id.push_back(v);
+      xy.push_back(flat(v));
+      constraints.push_back({last, static_cast<int>(xy.size()) - 1});
+      last = static_cast<int>(xy.size()) - 1;
+    }
+    constraints.push_back({last, at(b)});
+  }
+  const std::size_t fixed = xy.size();
+  const Triangulation tri = triangulate_plane(xy, nb, constraints, h);
+  if (tri.triangles.empty()) throw GeometryError("3D surface mesh: a face could not be triangulated");
+  // The piece under a point of the plane: the one whose smallest barycentric coordinate
+  // there is largest (inside it: >= 0), with those coordinates.
+  auto under = [&](Vec2 p) {
+    std::pair<int, std::array<double, 3>> best{-1, {}};
+    double best_min = -1e300;
+    for (std::size_t k = 0; k < face.pieces.size(); ++k) {
+      const Vec2 a = flat(face.pieces[k][0]), b = flat(face.pieces[k][1]), c = flat(face.pieces[k][2]);
+      const double area = cross(b - a, c - a);
+      const std::array<double, 3> l{cross(b - p, c - p) / area, cross(c - p, a - p) / area, cross(a - p, b - p) / area};
+      const double m = std::min({l[0], l[1], l[2]});
+      if (m > best_min) best_min = m, best = {static_cast<int>(k), l};
+    }
+    return best;
+  };
+  for (std::size_t p = fixed; p < xy.size(); ++p) {
     Vec3 q = o + xy[p].x * u + xy[p].y * w;
+    if (!face.pieces.empty()) {
+      const auto [k, l] = under(xy[p]);
+      const auto& piece = face.pieces[k];
+      q = l[0] * points[piece[0]] + l[1] * points[piece[1]] + l[2] * points[piece[2]];
+    }
     if (side.first >= 0) q[side.first] = side.second == 0 ? 0.0 : box[side.first];
     id.push_back(static_cast<int>(points.size()));
     points.push_back(q);
   }
-  if (tri.triangles.empty()) throw GeometryError("3D surface mesh: a face could not be triangulated");
   std::vector<std::array<int, 3>> out;
-  for (const auto& tr : tri.triangles) out.push_back({id[tr[0]], id[tr[1]], id[tr[2]]});
+  piece_of.clear();
+  for (const auto& tr : tri.triangles) {
+    out.push_back({id[tr[0]], id[tr[1]], id[tr[2]]});
+    if (!face.pieces.empty()) piece_of.push_back(under((xy[tr[0]] + xy[tr[1]] + xy[tr[2]]) / 3.0).first);
+  }
   return out;
+}
+
+// Whether a chord of the ring could lie in a side of the box, where the box's own face is:
+// some side holds three of its vertices, or two not next to each other.
+bool chord_in_a_side(const std::vector<int>& ring, const std::vector<Vec3>& points, Vec3 box) {
+  for (int bit = 0; bit < 6; ++bit) {
+    std::vector<std::size_t> on;
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      if ((side_mask(points[ring[k]], box) >> bit) & 1) on.push_back(k);
+    if (on.size() >= 3 || (on.size() == 2 && on[1] - on[0] != 1 && on[1] - on[0] != ring.size() - 1)) return true;
+  }
+  return false;
+}
+
+FaceToMesh alone(const Face3& f) {
+  FaceToMesh out;
+  out.ring = f.ring;
+  return out;
+}
+
+// The planar pieces a bent face was split into (the triangles between two regions) as one
+// surface: when they turn alike, their outer edges make one ring, seen from whose plane
+// every piece turns as the ring does, and no chord of the ring can lie in a side of the box.
+std::optional<FaceToMesh> whole_face(const Tessellation3& t, const std::vector<int>& group) {
+  const std::vector<Vec3>& points = t.vertices;
+  if (group.size() < 2) return std::nullopt;
+  std::set<std::pair<int, int>> directed;  // edge a -> b as a piece turns
+  for (int f : group) {
+    if (t.faces[f].back != t.faces[group.front()].back) return std::nullopt;
+    const auto& r = t.faces[f].ring;
+    for (int k = 0; k < 3; ++k)
+      if (!directed.emplace(r[k], r[(k + 1) % 3]).second) return std::nullopt;
+  }
+  std::map<int, int> next;  // the ring's edges: those no other piece turns back along
+  std::set<int> vertices;
+  for (const auto& [a, b] : directed) {
+    vertices.insert(a);
+    if (!directed.contains({b, a}) && !next.emplace(a, b).second) return std::nullopt;
+  }
+  FaceToMesh whole;
+  whole.ring.push_back(next.begin()->first);
+  for (std::size_t k = 1; k < next.size(); ++k) {
+    const auto it = next.find(whole.ring.back());
+    if (it == next.end() || it->second == whole.ring.front()) return std::nullopt;
+    whole.ring.push_back(it->second);
+  }
+  if (next.at(whole.ring.back()) != whole.ring.front() || chord_in_a_side(whole.ring, points, t.size()))
+    return std::nullopt;
+  for (int v : vertices)
+    if (!next.contains(v)) whole.inner.push_back(v);
+  const Vec3 n = ring_normal(points, whole.ring);
+  std::map<std::pair<int, int>, Vec3> normal;  // a -> b: the unit normal of the piece it turns in
+  for (int f : group) {
+    const auto& r = t.faces[f].ring;
+    const Vec3 m = ring_normal(points, r);
+    if (!(dot(m, n) > 0.0)) return std::nullopt;
+    whole.pieces.push_back({r[0], r[1], r[2]});
+    for (int k = 0; k < 3; ++k) normal[{r[k], r[(k + 1) % 3]}] = m / norm(m);
+  }
+  for (const auto& [ab, m] : normal) {
+    const auto other = normal.find({ab.second, ab.first});
+    if (ab.first < ab.second && other != normal.end() && dot(m, other->second) < std::cos(kFold))
+      whole.folds.push_back(ab);
+  }
+  return whole;
+}
+
+// The faces to mesh, each with its face ids (ascending): every face alone, but a bent
+// face's pieces (regularise_3d.cpp) as one surface where whole_face takes them.
+std::vector<std::pair<std::vector<int>, FaceToMesh>> faces_to_mesh(const Tessellation3& t) {
+  std::map<std::pair<int, int>, std::vector<int>> between;
+  std::vector<std::pair<std::vector<int>, FaceToMesh>> out;
+  for (int f = 0; f < static_cast<int>(t.faces.size()); ++f) {
+    const Face3& face = t.faces[f];
+    if (face.front >= 0 && face.ring.size() == 3) between[std::minmax(face.back, face.front)].push_back(f);
+    else out.push_back({{f}, alone(face)});
+  }
+  for (const auto& [regions, group] : between) {
+    if (auto whole = whole_face(t, group)) out.push_back({group, std::move(*whole)});
+    else
+      for (int f : group) out.push_back({{f}, alone(t.faces[f])});
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first.front() < b.first.front(); });
+  return out;
+}
+
+// Meshes every face (a bent face's triangles go to the piece under each) but those on a
+// high side of a periodic box, which are returned to be copied from their partners;
+// `interior`: each face's own new points, [first, last).
+std::vector<int> mesh_faces(const Tessellation3& t, const std::vector<std::pair<std::vector<int>, FaceToMesh>>& faces,
+                            const Edges& edges, double h, SurfaceMesh& s, std::vector<std::pair<int, int>>& interior) {
+  s.faces.resize(t.faces.size());
+  std::vector<int> deferred;
+  std::vector<int> piece_of;
+  for (const auto& [group, face] : faces) {
+    const int f = group.front();
+    const auto side = group.size() == 1 ? box_side(t, t.faces[f].ring) : std::pair{-1, 0};
+    if (t.periodic && side.first >= 0 && side.second == 1) {
+      deferred.push_back(f);
+      continue;
+    }
+    const int first = static_cast<int>(s.points.size());
+    const auto triangles = mesh_face(face, edges, side, t.size(), h, s.points, piece_of);
+    interior[f] = {first, static_cast<int>(s.points.size())};
+    if (group.size() == 1) s.faces[f] = triangles;
+    else
+      for (std::size_t k = 0; k < triangles.size(); ++k) s.faces[group[piece_of[k]]].push_back(triangles[k]);
+  }
+  return deferred;
 }
 
 }  // namespace
@@ -127,21 +316,11 @@ SurfaceMesh mesh_surfaces(const Tessellation3& t, double h) {
   if (!(h > 0.0)) throw GeometryError("3D surface mesh: the element size must be positive");
   SurfaceMesh s;
   s.points = t.vertices;
-  const Edges edges = seed_edges(t, h, s.points);
+  const auto faces = faces_to_mesh(t);
+  const Edges edges = seed_edges(faces, h, s.points);
   const Vec3 box = t.size();
-  s.faces.resize(t.faces.size());
   std::vector<std::pair<int, int>> interior(t.faces.size());  // [first, last) of each face's own points
-  std::vector<int> deferred;                                 // high-side faces, copied below
-  for (int f = 0; f < static_cast<int>(t.faces.size()); ++f) {
-    const auto side = box_side(t, t.faces[f].ring);
-    if (t.periodic && side.first >= 0 && side.second == 1) {
-      deferred.push_back(f);
-      continue;
-    }
-    const int first = static_cast<int>(s.points.size());
-    s.faces[f] = mesh_face(face_boundary(t.faces[f], edges), side, box, h, s.points);
-    interior[f] = {first, static_cast<int>(s.points.size())};
-  }
+  const std::vector<int> deferred = mesh_faces(t, faces, edges, h, s, interior);
   if (!t.periodic) return s;
 
   // The images: a vertex's partner, an edge's image edge, a low face's image face.

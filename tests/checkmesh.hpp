@@ -40,7 +40,10 @@ inline std::map<std::string, int> zone_cells(const std::string& log) {
 inline std::map<std::string, int> check_mesh_ok(const std::filesystem::path& case_dir,
                                                 const std::vector<FoamPhase>& phases, const std::vector<int>& phase) {
   const auto r = run_openfoam(case_dir, "checkMesh");
-  INFO(r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0));
+  std::string failed;  // checkMesh marks each failed check with ***
+  for (std::size_t at = r.out.find("***"); at != std::string::npos; at = r.out.find("***", at + 3))
+    failed += r.out.substr(at, r.out.find('\n', at) - at) + "\n";
+  INFO(failed + r.out.substr(r.out.size() > 2000 ? r.out.size() - 2000 : 0));
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("Mesh OK.") != std::string::npos);
   const auto zones = zone_cells(r.out);

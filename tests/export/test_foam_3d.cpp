@@ -33,7 +33,7 @@ ExportMesh<3> cell_3d(bool periodic) {
   o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
   Rng rng(3);
   const Tessellation3 t = tessellate_3d(o, rng);
-  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200)}));
+  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 160)}));
 }
 
 // The polyMesh in DIR/constant/polyMesh with the least of a case checkMesh reads.

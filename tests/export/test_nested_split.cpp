@@ -60,7 +60,7 @@ ExportMesh<3> cell_3d() {
   o.phases = {Phase{"WC", 0.0, true, 700e9, 0.24, {}}, Phase{"Co", 0.2, false, 211e9, 0.31, {}}};
   Rng rng(3);
   const Tessellation3 t = tessellate_3d(o, rng);
-  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 60)}));
+  return grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 48)}));
 }
 
 std::map<int, double> grain_areas(const ExportMesh<2>& m) {
@@ -279,7 +279,7 @@ TEST_CASE("the finite elements' error estimate covers their error measured on th
     Rng rng(3);
     const Tessellation3 t = tessellate_3d(o, rng);
     const ExportMesh<3> m =
-        heated(grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 30)})));
+        heated(grain_export_mesh(t, mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 24)})));
     const ExportMesh<3> s1 = split_nested(m);
     const FeNested<6> levels = fe_homogenise_nested(m, s1, true);
     const FeNested<6> next = fe_homogenise_nested(s1, split_nested(s1), true);

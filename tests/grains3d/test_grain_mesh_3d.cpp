@@ -2,6 +2,8 @@
 // periodic and bounded: the conformity checker, exact grain volumes, paired surface
 // points, the quality reached, and the same mesh whatever the thread count.
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <catch2/catch.hpp>
 
@@ -48,8 +50,8 @@ TEST_CASE("3D mesh: drawn cells conform, periodic surfaces pair up, grain volume
     for (std::uint64_t seed : {1u, 2u}) {
       CAPTURE(periodic, seed);
       const Tessellation3 t = cell(20, periodic, seed);
-      const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 300)});
-      REQUIRE_NOTHROW(check_conformity(t, m));  // also the grain volumes to 1e-9
+      const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 240)});
+      REQUIRE_NOTHROW(check_conformity(t, m));  // also the grain volumes (kBentFaceVolume)
       if (periodic)
         for (int a = 0; a < 3; ++a) REQUIRE(m.pairs.axis[a].size() > t.partners.axis[a].size());
       const TetQuality q = measure_quality(m.mesh);
@@ -62,10 +64,54 @@ TEST_CASE("3D mesh: drawn cells conform, periodic surfaces pair up, grain volume
     }
 }
 
+TEST_CASE("3D mesh: a bent face's pieces meshed as one surface, every point on a piece, volumes within the bound",
+          "[mesh3d]") {
+  int bent = 0;
+  for (std::uint64_t seed : {1u, 2u}) {
+    CAPTURE(seed);
+    const Tessellation3 t = cell(20, true, seed);
+    const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 240)});
+    REQUIRE_NOTHROW(check_conformity(t, m));  // the tetrahedra fill the surfaces to 1e-9
+    // The bent faces: two or more triangles between the same two regions (bent_face.hpp).
+    std::map<std::pair<int, int>, std::vector<int>> between;
+    for (int f = 0; f < static_cast<int>(t.faces.size()); ++f)
+      if (t.faces[f].front >= 0 && t.faces[f].ring.size() == 3)
+        between[std::minmax(t.faces[f].back, t.faces[f].front)].push_back(f);
+    for (const auto& [regions, pieces] : between) {
+      if (pieces.size() < 2) continue;
+      ++bent;
+      bool across = false;  // some triangle not on the pieces' diagonals: the pieces meshed as one
+      for (int f : pieces)
+        for (const auto& tr : m.faces[f])
+          for (int v : tr) {
+            double off = 1e300;  // from the nearest piece's plane
+            for (int g : pieces) {
+              const auto& r = t.faces[g].ring;
+              const Vec3 n = ring_normal(t.vertices, r);
+              off = std::min(off, std::abs(dot(m.mesh.points[v] - t.vertices[r[0]], n)) / norm(n));
+            }
+            REQUIRE(off < 1e-12);
+          }
+      for (int f : pieces) {
+        std::set<int> corners(t.faces[f].ring.begin(), t.faces[f].ring.end());
+        for (const auto& tr : m.faces[f])
+          for (int v : tr) across = across || (v < static_cast<int>(t.vertices.size()) && !corners.contains(v));
+      }
+      bent += across ? 1000 : 0;
+    }
+    const std::vector<double> enclosed = surface_volumes(t, m);
+    for (std::size_t g = 0; g < t.grains.size(); ++g) {
+      CHECK(std::abs(enclosed[g] - t.grains[g].volume) < kBentFaceVolume * t.grains[g].volume);
+    }
+  }
+  CHECK(bent % 1000 > 0);  // bent faces were met
+  CHECK(bent / 1000 > 0);  // and some meshed across their pieces
+}
+
 TEST_CASE("3D mesh: the same mesh for 1 and 2 threads", "[mesh3d]") {
   const Tessellation3 t = cell(20, true, 3);
-  const GrainMesh3 one = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200), .threads = 1});
-  const GrainMesh3 two = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 200), .threads = 2});
+  const GrainMesh3 one = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 160), .threads = 1});
+  const GrainMesh3 two = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 160), .threads = 2});
   REQUIRE(one.mesh.points == two.mesh.points);
   REQUIRE(one.mesh.tets == two.mesh.tets);
   REQUIRE(one.grain == two.grain);

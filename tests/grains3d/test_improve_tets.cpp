@@ -101,7 +101,7 @@ TEST_CASE("improved grain meshes conform and beat the unimproved ones", "[mesh3d
   o.phases = {Phase{"WC", 0.8, false, 1.0, 0.3, {}}, Phase{"Co", 0.2, true, 1.0, 0.3, {}}};
   Rng rng(4);
   const Tessellation3 t = tessellate_3d(o, rng);
-  const double size = size_for_tets_per_grain(t, 300);
+  const double size = size_for_tets_per_grain(t, 240);
   const GrainMesh3 plain = mesh_tessellation_3d(t, {.size = size, .improvement_passes = 0});
   const GrainMesh3 improved = mesh_tessellation_3d(t, {.size = size});
   REQUIRE_NOTHROW(check_conformity(t, improved));

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grains3d/conformity_3d.hpp"
 #include "common/text_file.hpp"
 #include "tessellate/label_image.hpp"
 #include "view/picture.hpp"
@@ -93,9 +94,12 @@ TEST_CASE("grainmesh run --solve on a periodic 3D cell: six load cases, the 6 x 
   CHECK(eff["engineering"]["E_x"].get<double>() < 700e9);
   CHECK(std::abs(eff["engineering"]["nu_xy"].get<double>() - 0.25) < 0.03);
   CHECK(eff["anisotropy"]["universal"].get<double>() < 0.05);
-  // The phases' volumes: the cells', exactly the tessellation's.
-  CHECK(eff["volume_fractions"][1].get<double>() ==
-        Approx(report["phases"][1]["achieved_fraction"].get<double>()).epsilon(1e-6));
+  // The phases' volumes: the cells', the tessellation's but for the bent faces meshed as one
+  // surface, which move no phase by more than its grains move (report: mesh).
+  const double moved = report["mesh"]["grain_volume_change_max"].get<double>();
+  CHECK(moved < kBentFaceVolume);
+  const double achieved = report["phases"][1]["achieved_fraction"].get<double>();
+  CHECK(std::abs(eff["volume_fractions"][1].get<double>() - achieved) <= moved * achieved + 1e-9);
   // The mean stress of the xx case: the phases' volume-weighted means of the cell
   // stresses add up to it within 1 % (measured 0.5 %: the cells' gradients, unlike the
   // face forces, do not average to the imposed strain exactly).

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "grains3d/conformity_3d.hpp"
 #include "helpers.hpp"
 #include "tessellate/tessellation_json.hpp"
 #include "view/vtu.hpp"
@@ -183,8 +184,9 @@ TEST_CASE("grainmesh mesh meshes a 3D tessellation into conforming tetrahedra an
   CHECK(report["conforming"].get<bool>());
   for (const char* axis : {"x", "y", "z"}) CHECK(report["pairs"][axis].get<int>() > 0);
   // The conformity measured on the files written: as many tetrahedra as reported, every one
-  // turned positive, each grain's summing to its volume in tessellation.json (1e-9), so the
-  // grains fill the box without gaps or overlaps.
+  // turned positive, all filling the box (1e-9), each grain's its volume in
+  // tessellation.json within the reported change (bent faces meshed as one surface), which
+  // is below kBentFaceVolume.
   const Tessellation3 t = tessellation_from_json<3>(test::read_file(tess), tess);
   const VtuContents v = read_vtu(dir / "m" / "mesh.vtu");
   const std::vector<int>* grain = v.ints("grain");
@@ -198,7 +200,14 @@ TEST_CASE("grainmesh mesh meshes a 3D tessellation into conforming tetrahedra an
     volume[static_cast<std::size_t>((*grain)[c])] += v.solid_volumes[c];
   }
   CHECK(inverted == 0);
-  for (std::size_t g = 0; g < t.grains.size(); ++g) CHECK(volume[g] == Approx(t.grains[g].volume).epsilon(1e-9));
+  double total = 0.0, moved = 0.0;
+  for (std::size_t g = 0; g < t.grains.size(); ++g) {
+    total += volume[g];
+    moved = std::max(moved, std::abs(volume[g] - t.grains[g].volume) / t.grains[g].volume);
+  }
+  CHECK(total == Approx(t.width * t.height * t.depth).epsilon(1e-9));
+  CHECK(moved == Approx(m["grain_volume_change_max"].get<double>()).margin(1e-9));
+  CHECK(moved < kBentFaceVolume);
 
   // Keys of the 2D mesher refused by name for a 3D tessellation, and the 3D one in 2D.
   REQUIRE(run_grainmesh({"tessellate", test::example("grains_wc_co").string(), "-o", (dir / "t2").string()}).exit_code == 0);
