@@ -89,7 +89,7 @@ void check_conformity(const Tessellation3& t, const GrainMesh3& m) {
     if (std::abs(volume[g] - enclosed[g]) > 1e-9 * t.grains[g].volume)
       fail("grain " + std::to_string(g) + "'s tetrahedra fill " + to_text(volume[g], 15) + ", its surface triangles enclose " +
            to_text(enclosed[g], 15));
-    if (std::abs(enclosed[g] - t.grains[g].volume) > kBentFaceVolume * t.grains[g].volume)
+    if (std::abs(enclosed[g] - t.grains[g].volume) > (kBentFaceVolume + 1e-9) * t.grains[g].volume)
       fail("grain " + std::to_string(g) + "'s surface triangles enclose " + to_text(enclosed[g], 15) + ", its polyhedron " +
            to_text(t.grains[g].volume, 15));
   }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "grains3d/grain_mesh_3d.hpp"
+#include "grains3d/surface_mesh.hpp"
 #include "tessellate/tessellation_3d.hpp"
 
 namespace grainmesh {
@@ -12,14 +13,9 @@ namespace grainmesh {
 // shared by two tetrahedra, or by one on the box; the tessellation's faces made of
 // triangles with a tetrahedron of each region on their sides; each grain's tetrahedra
 // filling what its surface triangles enclose (1e-9 relative), and that its polyhedron's
-// volume within kBentFaceVolume; paired points images across the box (1e-12 of it).
+// volume within kBentFaceVolume (surface_mesh.hpp); paired points images across the box (1e-12 of it).
 // Throws GeometryError naming the first violation.
 void check_conformity(const Tessellation3& t, const GrainMesh3& m);
-
-// A bent face (split into planar pieces by the regularisation) is meshed as one surface
-// whose triangles cross its pieces' diagonals, off them by a little of its bend: the
-// grains' volumes move by up to this share (relative). Planar faces are met exactly.
-inline constexpr double kBentFaceVolume = 1e-2;
 
 // The volume each grain's surface triangles (m.faces) enclose.
 std::vector<double> surface_volumes(const Tessellation3& t, const GrainMesh3& m);

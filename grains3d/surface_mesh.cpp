@@ -267,8 +267,10 @@ std::optional<FaceToMesh> whole_face(const Tessellation3& t, const std::vector<i
 }
 
 // The faces to mesh, each with its face ids (ascending): every face alone, but a bent
-// face's pieces (regularise_3d.cpp) as one surface where whole_face takes them.
-std::vector<std::pair<std::vector<int>, FaceToMesh>> faces_to_mesh(const Tessellation3& t) {
+// face's pieces (regularise_3d.cpp) as one surface where whole_face takes them and its
+// first face is not in `split`.
+using FacesToMesh = std::vector<std::pair<std::vector<int>, FaceToMesh>>;
+FacesToMesh faces_to_mesh(const Tessellation3& t, const std::set<int>& split) {
   std::map<std::pair<int, int>, std::vector<int>> between;
   std::vector<std::pair<std::vector<int>, FaceToMesh>> out;
   for (int f = 0; f < static_cast<int>(t.faces.size()); ++f) {
@@ -277,7 +279,9 @@ std::vector<std::pair<std::vector<int>, FaceToMesh>> faces_to_mesh(const Tessell
     else out.push_back({{f}, alone(face)});
   }
   for (const auto& [regions, group] : between) {
-    if (auto whole = whole_face(t, group)) out.push_back({group, std::move(*whole)});
+    std::optional<FaceToMesh> whole;
+    if (!split.contains(group.front())) whole = whole_face(t, group);
+    if (whole) out.push_back({group, std::move(*whole)});
     else
       for (int f : group) out.push_back({{f}, alone(t.faces[f])});
   }
@@ -310,13 +314,52 @@ std::vector<int> mesh_faces(const Tessellation3& t, const std::vector<std::pair<
   return deferred;
 }
 
+// The bent faces meshed as one surface that take a grain's volume beyond its budget
+// (kBentFaceVolume of it, summed over its bent faces' volume changes in face order): their
+// first faces. A bent face's change is the volume between its triangles and its pieces.
+std::set<int> over_budget(const Tessellation3& t, const FacesToMesh& faces, const SurfaceMesh& s) {
+  const Vec3 o = 0.5 * t.size();
+  auto volume = [&](Vec3 a, Vec3 b, Vec3 c) { return dot(a - o, cross(b - o, c - o)) / 6.0; };
+  std::vector<double> spent(t.grains.size(), 0.0);
+  std::set<int> over;
+  for (const auto& [group, face] : faces) {
+    if (face.pieces.empty()) continue;
+    double change = 0.0;
+    for (int f : group)
+      for (const auto& tr : s.faces[f]) change += volume(s.points[tr[0]], s.points[tr[1]], s.points[tr[2]]);
+    for (const auto& p : face.pieces) change -= volume(t.vertices[p[0]], t.vertices[p[1]], t.vertices[p[2]]);
+    const Face3& first = t.faces[group.front()];
+    const int a = t.regions[first.back].grain, b = t.regions[first.front].grain;
+    auto fits = [&](int g) { return spent[g] + std::abs(change) <= kBentFaceVolume * t.grains[g].volume; };
+    if (!fits(a) || !fits(b)) {
+      over.insert(group.front());
+      continue;
+    }
+    spent[a] += std::abs(change);
+    if (b != a) spent[b] += std::abs(change);
+  }
+  return over;
+}
+
+// mesh_surfaces with the bent faces whose first face is in `split` meshed piece by piece.
+SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const std::set<int>& split);
+
 }  // namespace
 
 SurfaceMesh mesh_surfaces(const Tessellation3& t, double h) {
+  SurfaceMesh s = mesh_surfaces(t, h, {});
+  const std::set<int> over = over_budget(t, faces_to_mesh(t, {}), s);
+  // The bent faces within budget are meshed alike again (the same points, other ids).
+  return over.empty() ? s : mesh_surfaces(t, h, over);
+}
+
+namespace {
+
+SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const std::set<int>& split) {
   if (!(h > 0.0)) throw GeometryError("3D surface mesh: the element size must be positive");
   SurfaceMesh s;
   s.points = t.vertices;
-  const auto faces = faces_to_mesh(t);
+  const auto faces = faces_to_mesh(t, split);
   const Edges edges = seed_edges(faces, h, s.points);
   const Vec3 box = t.size();
   std::vector<std::pair<int, int>> interior(t.faces.size());  // [first, last) of each face's own points
@@ -382,5 +425,7 @@ SurfaceMesh mesh_surfaces(const Tessellation3& t, double h) {
   }
   return s;
 }
+
+}  // namespace
 
 }  // namespace grainmesh

@@ -22,9 +22,16 @@ struct SurfaceMesh {
   PeriodicPairs pairs;  // surface points on the box's sides with their images; empty when bounded
 };
 
+// A bent face (split into planar pieces by the regularisation) is meshed as one surface
+// whose triangles cross its pieces' diagonals, off them by a little of its bend; a grain's
+// bent faces together move its volume by at most this share of it (those that would move
+// it further are meshed piece by piece). Planar faces are met exactly.
+inline constexpr double kBentFaceVolume = 5e-3;
+
 // Triangles of edge length about `h` (the tessellation's unit) on every face: edges cut
 // into equal pieces nearest h, faces filled with a triangular lattice of spacing h kept
-// 0.6 h from their boundary, triangulated (constrained Delaunay) and smoothed. Throws
+// 0.6 h from their boundary, triangulated (constrained Delaunay) and smoothed; a bent
+// face's pieces as one surface where kBentFaceVolume allows. Throws
 // GeometryError for a face that cannot be triangulated.
 SurfaceMesh mesh_surfaces(const Tessellation3& t, double h);
 
