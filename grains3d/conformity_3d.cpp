@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "tessellate/solid_moments.hpp"
 
 namespace grainmesh {
 
@@ -26,16 +27,26 @@ Key key(int a, int b, int c) {
 
 std::vector<double> surface_volumes(const Tessellation3& t, const GrainMesh3& m) {
   const auto& p = m.mesh.points;
-  std::vector<double> volume(t.grains.size(), 0.0);
-  const Vec3 o = 0.5 * t.size();  // near every point: the sum's rounding stays small
+  // About the box's centre, near every point: the sums' rounding stays small.
+  std::vector<SolidMoments> grain(t.grains.size(), SolidMoments(0.5 * t.size()));
   for (std::size_t f = 0; f < t.faces.size() && f < m.faces.size(); ++f)
-    for (const auto& tr : m.faces[f]) {
-      // The triangle's normal points out of the back region, into the front one.
-      const double v = dot(p[tr[0]] - o, cross(p[tr[1]] - o, p[tr[2]] - o)) / 6.0;
-      volume[t.regions[t.faces[f].back].grain] += v;
-      if (t.faces[f].front >= 0) volume[t.regions[t.faces[f].front].grain] -= v;
+    for (const auto& [a, b, c] : m.faces[f]) {
+      // The triangle turns outward of the back region, inward of the front one.
+      grain[t.regions[t.faces[f].back].grain].add_triangle(p[a], p[b], p[c]);
+      if (t.faces[f].front >= 0) grain[t.regions[t.faces[f].front].grain].add_triangle(p[a], p[c], p[b]);
     }
+  std::vector<double> volume;
+  for (const SolidMoments& g : grain) volume.push_back(g.volume());
   return volume;
+}
+
+double grain_volume_change_max(const Tessellation3& t, const GrainMesh3& m) {
+  const std::vector<double> enclosed = surface_volumes(t, m);
+  double largest = 0.0;
+  for (std::size_t g = 0; g < t.grains.size(); ++g)
+    if (t.grains[g].volume > 0.0)
+      largest = std::max(largest, std::abs(enclosed[g] - t.grains[g].volume) / t.grains[g].volume);
+  return largest;
 }
 
 void check_conformity(const Tessellation3& t, const GrainMesh3& m) {

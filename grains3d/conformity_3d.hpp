@@ -20,4 +20,7 @@ void check_conformity(const Tessellation3& t, const GrainMesh3& m);
 // The volume each grain's surface triangles (m.faces) enclose.
 std::vector<double> surface_volumes(const Tessellation3& t, const GrainMesh3& m);
 
+// The largest relative difference between that and a grain's polyhedron's volume.
+double grain_volume_change_max(const Tessellation3& t, const GrainMesh3& m);
+
 }  // namespace grainmesh

@@ -13,6 +13,7 @@
 #include "common/geometry.hpp"
 #include "common/ring.hpp"
 #include "mesh/delaunay.hpp"
+#include "tessellate/solid_moments.hpp"
 #include "tessellate/bent_face.hpp"
 
 namespace grainmesh {
@@ -85,9 +86,8 @@ std::vector<int> ring_boundary(const std::vector<int>& ring, const Edges& e) {
   return out;
 }
 
-Vec3 newell_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
-  Vec3 n{};
-  for (std::size_t k = 0; k < ring.size(); ++k) n += cross(p[ring[k]], p[ring[(k + 1) % ring.size()]]);
+Vec3 unit_normal(const std::vector<Vec3>& p, const std::vector<int>& ring) {
+  const Vec3 n = ring_normal(p, ring);
   return n / norm(n);
 }
 
@@ -138,7 +138,7 @@ Triangulation triangulate_plane(std::vector<Vec2>& xy, std::size_t nb, const std
 std::vector<std::array<int, 3>> mesh_face(const FaceToMesh& face, const Edges& edges, std::pair<int, int> side,
                                           Vec3 box, double h, std::vector<Vec3>& points, std::vector<int>& piece_of) {
   const std::vector<int> boundary = ring_boundary(face.ring, edges);
-  const Vec3 n = newell_normal(points, boundary);
+  const Vec3 n = unit_normal(points, boundary);
   const Vec3 o = points[boundary[0]];
   Vec3 u = points[boundary[1]] - o;
   u = u / norm(u);
@@ -318,16 +318,16 @@ std::vector<int> mesh_faces(const Tessellation3& t, const std::vector<std::pair<
 // (kBentFaceVolume of it, summed over its bent faces' volume changes in face order): their
 // first faces. A bent face's change is the volume between its triangles and its pieces.
 std::set<int> over_budget(const Tessellation3& t, const FacesToMesh& faces, const SurfaceMesh& s) {
-  const Vec3 o = 0.5 * t.size();
-  auto volume = [&](Vec3 a, Vec3 b, Vec3 c) { return dot(a - o, cross(b - o, c - o)) / 6.0; };
   std::vector<double> spent(t.grains.size(), 0.0);
   std::set<int> over;
   for (const auto& [group, face] : faces) {
     if (face.pieces.empty()) continue;
-    double change = 0.0;
+    // The triangles and the pieces turned back: a closed surface (they share their ring).
+    SolidMoments between(0.5 * t.size());
     for (int f : group)
-      for (const auto& tr : s.faces[f]) change += volume(s.points[tr[0]], s.points[tr[1]], s.points[tr[2]]);
-    for (const auto& p : face.pieces) change -= volume(t.vertices[p[0]], t.vertices[p[1]], t.vertices[p[2]]);
+      for (const auto& [a, b, c] : s.faces[f]) between.add_triangle(s.points[a], s.points[b], s.points[c]);
+    for (const auto& [a, b, c] : face.pieces) between.add_triangle(t.vertices[a], t.vertices[c], t.vertices[b]);
+    const double change = between.volume();
     const Face3& first = t.faces[group.front()];
     const int a = t.regions[first.back].grain, b = t.regions[first.front].grain;
     auto fits = [&](int g) { return spent[g] + std::abs(change) <= kBentFaceVolume * t.grains[g].volume; };
@@ -341,25 +341,25 @@ std::set<int> over_budget(const Tessellation3& t, const FacesToMesh& faces, cons
   return over;
 }
 
-// mesh_surfaces with the bent faces whose first face is in `split` meshed piece by piece.
-SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const std::set<int>& split);
+// The faces meshed (faces_to_mesh) and, when periodic, the high sides' copies.
+SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const FacesToMesh& faces);
 
 }  // namespace
 
 SurfaceMesh mesh_surfaces(const Tessellation3& t, double h) {
-  SurfaceMesh s = mesh_surfaces(t, h, {});
-  const std::set<int> over = over_budget(t, faces_to_mesh(t, {}), s);
-  // The bent faces within budget are meshed alike again (the same points, other ids).
-  return over.empty() ? s : mesh_surfaces(t, h, over);
+  if (!(h > 0.0)) throw GeometryError("3D surface mesh: the element size must be positive");
+  const FacesToMesh faces = faces_to_mesh(t, {});
+  SurfaceMesh s = mesh_surfaces(t, h, faces);
+  const std::set<int> over = over_budget(t, faces, s);
+  // Those over budget piece by piece; the others are meshed alike again (other point ids).
+  return over.empty() ? s : mesh_surfaces(t, h, faces_to_mesh(t, over));
 }
 
 namespace {
 
-SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const std::set<int>& split) {
-  if (!(h > 0.0)) throw GeometryError("3D surface mesh: the element size must be positive");
+SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const FacesToMesh& faces) {
   SurfaceMesh s;
   s.points = t.vertices;
-  const auto faces = faces_to_mesh(t, split);
   const Edges edges = seed_edges(faces, h, s.points);
   const Vec3 box = t.size();
   std::vector<std::pair<int, int>> interior(t.faces.size());  // [first, last) of each face's own points
@@ -417,7 +417,7 @@ SurfaceMesh mesh_surfaces(const Tessellation3& t, double h, const std::set<int>&
         s.faces[f].push_back({node_image[tr[0]], node_image[tr[1]], node_image[tr[2]]});
       }
       // The copy turns as the low face does; the high face's ring may turn the other way.
-      const Vec3 want = newell_normal(s.points, t.faces[f].ring);
+      const Vec3 want = unit_normal(s.points, t.faces[f].ring);
       const auto& tr = s.faces[f].front();
       if (dot(cross(s.points[tr[1]] - s.points[tr[0]], s.points[tr[2]] - s.points[tr[0]]), want) < 0.0)
         for (auto& x : s.faces[f]) std::swap(x[1], x[2]);

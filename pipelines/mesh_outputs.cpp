@@ -105,12 +105,6 @@ Json write_mesh_files(const std::filesystem::path& dir, const Tessellation& t, c
 Json write_mesh_files(const std::filesystem::path& dir, const Tessellation3& t, const GrainMesh3& m,
                       const MeshJob<3>& job, const Drawing& drawing, Warnings& warnings) {
   const TetQuality q = measure_quality(m.mesh);
-  // Bent faces meshed as one surface move the grains' volumes a little (conformity_3d.hpp).
-  const std::vector<double> enclosed = surface_volumes(t, m);
-  double volume_change = 0.0;
-  for (std::size_t g = 0; g < t.grains.size(); ++g)
-    if (t.grains[g].volume > 0.0)
-      volume_change = std::max(volume_change, std::abs(enclosed[g] - t.grains[g].volume) / t.grains[g].volume);
   std::vector<double> quality;
   for (const auto& tet : m.mesh.tets)
     quality.push_back(radius_ratio(m.mesh.points[tet[0]], m.mesh.points[tet[1]], m.mesh.points[tet[2]], m.mesh.points[tet[3]]));
@@ -152,7 +146,8 @@ Json write_mesh_files(const std::filesystem::path& dir, const Tessellation3& t, 
             {"max_dihedral_deg", q.max_dihedral_deg},
             {"share_dihedral_below_10", q.share_dihedral_below_10},
             {"cells_per_grain_mean", static_cast<double>(m.mesh.tets.size()) / std::max(1, t.stats.grains)},
-            {"grain_volume_change_max", volume_change}}},
+            // bent faces meshed as one surface move the grains' volumes a little (surface_mesh.hpp)
+            {"grain_volume_change_max", grain_volume_change_max(t, m)}}},
           {"size", job.options.size},
           {"pairs", {{"x", m.pairs.axis[0].size()}, {"y", m.pairs.axis[1].size()}, {"z", m.pairs.axis[2].size()}}},
           {"conforming", true},  // run_mesh_job's check passed
