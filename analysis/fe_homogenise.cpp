@@ -1,7 +1,7 @@
-// Eigen and CHOLMOD are included here only (fe_homogenise.hpp shows our own types).
+// Eigen and CHOLMOD are included here (fe_homogenise.hpp shows our own types; the factors
+// and the coarse level in the private fe_coarse_level.hpp).
 #include "analysis/fe_homogenise.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
@@ -17,11 +17,10 @@
 
 #include "analysis/blas_threads.hpp"
 #include "analysis/bounds.hpp"
+#include "analysis/fe_coarse_level.hpp"
 #include "analysis/fe_nodes.hpp"
 #include "analysis/fe_two_grid.hpp"
 #include "common/errors.hpp"
-#include "common/format.hpp"
-#include "common/memory.hpp"
 #include "common/side_by_side.hpp"
 
 namespace grainmesh {
@@ -280,45 +279,9 @@ Eigen::MatrixXd mean_stresses(const Problem<D>& p, const Eigen::MatrixXd& u) {
   return mean / volume;
 }
 
-// Refuses a factor that would not fit: CHOLMOD's count of its nonzeros (known after the
-// analysis, before any is made), 8 bytes each and 60 % more for the supernodes' padding
-// and CHOLMOD's workspace, beside the matrix (three copies), the loads' columns (right
-// sides and solutions) and the BLAS's own buffers (OpenBLAS takes 128 MiB per call of the
-// dense factorisation, and retries for ever where it cannot: under ulimit -v the run
-// would hang). On the 3D example: 4.9 GiB estimated, 5.2 GiB measured (the run's peak,
-// OpenFOAM's stage included).
-constexpr double kBlasBufferMiB = 256.0;
-void check_memory(const cholmod_common& analysed, const Eigen::SparseMatrix<double>& k, int loads, std::size_t unknowns,
-                  const FeOptions& o) {
-  constexpr double kMiB = 1024.0 * 1024.0;
-  const double need = (1.6 * 8.0 * analysed.lnz + 3.0 * 12.0 * static_cast<double>(k.nonZeros()) +
-                       3.0 * 8.0 * static_cast<double>(loads) * static_cast<double>(unknowns)) / kMiB +
-                      kBlasBufferMiB;
-  const double have = o.memory_mib > 0.0 ? o.memory_mib : available_memory_mib();
-  auto size = [](double mib) { return mib < 1024.0 ? to_text(mib, 3) + " MiB" : to_text(mib / 1024.0, 3) + " GiB"; };
-  const std::string key = o.reference ? "homogenise.reference" : "homogenise.solver";
-  if (need > have)
-    throw ConfigError(key + " = fe: the finite elements on this mesh (" + std::to_string(unknowns) +
-                      " unknowns) need about " + size(need) + ", more than the " + size(have) + " available: set " +
-                      key + (o.reference ? " = none" : " = openfoam") + ", or mesh coarser or fewer grains");
-}
-
-using Factor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
-
-// The sparse Cholesky factor of `k` (its lower triangle), refused before it is made when
-// it would not fit (check_memory).
 template <int D>
 std::unique_ptr<Factor> factorise(const Eigen::SparseMatrix<double>& k, const Problem<D>& p, const FeOptions& o) {
-  auto factor = std::make_unique<Factor>();
-  factor->cholmod().nmethods = 1;  // the unknowns are numbered in a fill-reducing order (fe_nodes.hpp)
-  factor->cholmod().method[0].ordering = CHOLMOD_NATURAL;
-  factor->analyzePattern(k);
-  check_memory(factor->cholmod(), k, p.loads, p.nodes.unknowns, o);
-  factor->factorize(k);
-  if (factor->info() != Eigen::Success)
-    throw GeometryError("finite-element reference: the stiffness matrix is not positive definite (a phase without "
-                        "stiffness, or a mesh the periodic ties do not hold)");
-  return factor;
+  return factorise(analyse(k), k, p.loads, o);
 }
 
 // The effective stiffness (and expansion, when thermal) from the solved fluctuations `u`.
@@ -425,7 +388,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   // The coarse level's factor and solve beside the fine level's assembly, which needs only
   // the coarse level's nodes (the 1,000-grain cell: 0.7 s each); each on one thread.
   std::optional<BlasThreads> one_blas_thread(std::in_place, 1);
-  std::unique_ptr<Factor> factor;
+  std::optional<CoarseLevel> level;
   Eigen::MatrixXd uc;
   std::optional<Problem<D>> pf;
   Eigen::SparseMatrix<double> kf, pr;
@@ -433,9 +396,10 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   auto coarse_done = start;
   side_by_side({0, 1}, threads, [&](int job) {
     if (job == 0) {
-      factor = factorise(kc, pc, o);
-      uc = factor->solve(fc);
+      level.emplace(kc, pc.nodes, pc.loads, o);
+      uc = level->solve(fc, kTwoGridTolerance, kTwoGridIterations);
       out.coarse = effective(pc, uc, thermal);
+      out.coarse.iterations = level->iterations();
       coarse_done = std::chrono::steady_clock::now();
     } else {
       pf.emplace(fine, pc);
@@ -447,7 +411,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   // assembly, beside the coarse factor, in neither), so that their sum is the whole.
   out.coarse.seconds = std::chrono::duration<double>(coarse_done - start).count();
   const TwoGridSolve s = two_grid_solve(
-      kf, ff, pr, [&](const Eigen::MatrixXd& r) { return Eigen::MatrixXd(factor->solve(r)); }, pr * uc,
+      kf, ff, pr, [&](const Eigen::MatrixXd& r) { return level->cycle(r); }, pr * uc,
       kTwoGridTolerance, kTwoGridIterations, threads);
   one_blas_thread.reset();  // the fine level's factor, where the cycles fail, on every core
   const Eigen::MatrixXd uf = s.converged ? s.u : factorise(kf, *pf, o)->solve(ff);

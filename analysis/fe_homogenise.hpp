@@ -46,6 +46,11 @@ struct FeOptions {
   // The key that asked for them, named when they are refused: homogenise.solver, or
   // homogenise.reference when they are OpenFOAM's reference.
   bool reference = false;
+  // The coarse of two nested levels is factorised when its factor costs at most this many
+  // operations (CHOLMOD's count; 1e10, about 2 s on one core), else solved iteratively
+  // (fe_homogenise_nested). Measured: the 1,000-grain 2D cell's 3.8e9 both ways alike, the
+  // 3D example's 4.9e10 by the cycles 7.6 s → 5.5 s.
+  double coarse_factor_flops = 1e10;
 };
 
 // The periodic cell `m` homogenised (2D: triangles only, under plane strain or
@@ -58,15 +63,21 @@ FeHomogenised<3> fe_homogenise(const ExportMesh<2>& m, bool plane_stress, bool t
 FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOptions& o = {});
 
 // The same on two nested levels: `coarse`, and `fine` = split_nested(coarse) (fine element
-// 2^D c + k a child of coarse element c). The coarse level is factorised; the fine level
-// solved by conjugate gradients preconditioned by a two-grid cycle on the coarse factor
-// (fe_two_grid.hpp), from the coarse solution, to a residual of 1e-6 of each load's —
+// 2^D c + k a child of coarse element c). The coarse level is factorised where its factor
+// takes at most o.coarse_factor_flops operations, else solved by conjugate gradients
+// preconditioned by a two-grid cycle on its own mesh's linear elements (their factor a
+// few per cent of its cost: on the 1,000-grain 3D cell a factor of 5.7e12 operations,
+// 156 s, gave way to 16 s), to the fine level's tolerance. The fine level is solved by
+// conjugate gradients preconditioned by a two-grid cycle whose coarse correction is the
+// coarse level's factor or one cycle of its own (a V-cycle over three levels;
+// fe_two_grid.hpp), from the coarse solution, to a residual of 1e-6 of each load's —
 // the answer as the fine level's factor gives it, without its fill (3D: a fraction of the
-// operations); factorised instead when 200 cycles do not reach it. The coarse factor is
-// made beside the fine level's assembly (on two threads where limit_fe_threads allows),
-// on one BLAS thread: the same answer to the bit on any number of threads. `seconds`:
-// the coarse level's to its answer, the fine level's from there. Throws as
-// fe_homogenise, and GeometryError when `fine` has not 2^D times coarse's elements.
+// operations); either level factorised instead when 200 cycles do not reach it. The
+// coarse level is solved beside the fine level's assembly (on two threads where
+// limit_fe_threads allows), on one BLAS thread: the same answer to the bit on any number
+// of threads. `seconds`: the coarse level's to its answer, the fine level's from there;
+// `iterations` each level's cycles (0: factorised). Throws as fe_homogenise, and
+// GeometryError when `fine` has not 2^D times coarse's elements.
 FeNested<3> fe_homogenise_nested(const ExportMesh<2>& coarse, const ExportMesh<2>& fine, bool plane_stress,
                                  bool thermal, const FeOptions& o = {});
 FeNested<6> fe_homogenise_nested(const ExportMesh<3>& coarse, const ExportMesh<3>& fine, bool thermal,

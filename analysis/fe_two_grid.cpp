@@ -105,17 +105,22 @@ struct Sweeps {
 // Each column's dot product of a and b.
 Eigen::RowVectorXd column_dots(const Block& a, const Block& b) { return a.cwiseProduct(b).colwise().sum(); }
 
-// One group of M columns solved: the conjugate gradients of the header, each cycle's
-// coarse correction through `coarse_solve`.
+// The cycle on M columns: z = the cycle on r, pre-smoothed (a forward sweep), corrected
+// on the coarse level, post-smoothed (a backward sweep): symmetric, and positive definite
+// where the coarse solve is.
 template <int M>
-TwoGridSolve solve_columns(const Lower& k, const Eigen::MatrixXd& f, const Eigen::SparseMatrix<double>& prolongation,
-                           const CoarseSolve& coarse_solve, const Eigen::MatrixXd& u0, double tolerance,
-                           int max_iterations) {
+struct Cycle {
   using S = Sweeps<M>;
-  Block work(f.rows(), M), t(f.rows(), M);
+  const Lower& k;
+  const Eigen::SparseMatrix<double>& prolongation;
+  const CoarseSolve& coarse_solve;
+  Block work, t;
   Eigen::MatrixXd coarse;
-  // z = the cycle on r: pre-smoothed, corrected on the coarse level, post-smoothed.
-  auto cycle = [&](const Block& r, Block& z) {
+
+  Cycle(const Lower& k_, const Eigen::SparseMatrix<double>& p, const CoarseSolve& c, Eigen::Index rows)
+      : k(k_), prolongation(p), coarse_solve(c), work(rows, M), t(rows, M) {}
+
+  void operator()(const Block& r, Block& z) {
     z = r;
     S::forward_sweep(k, z);
     S::strict_upper_product(k, z, work);
@@ -125,7 +130,18 @@ TwoGridSolve solve_columns(const Lower& k, const Eigen::MatrixXd& f, const Eigen
     t = r - work;
     S::backward_sweep(k, t);
     z += t;
-  };
+  }
+};
+
+// One group of M columns solved: the conjugate gradients of the header, each cycle's
+// coarse correction through `coarse_solve`.
+template <int M>
+TwoGridSolve solve_columns(const Lower& k, const Eigen::MatrixXd& f, const Eigen::SparseMatrix<double>& prolongation,
+                           const CoarseSolve& coarse_solve, const Eigen::MatrixXd& u0, double tolerance,
+                           int max_iterations) {
+  using S = Sweeps<M>;
+  Block work(f.rows(), M);
+  Cycle<M> cycle(k, prolongation, coarse_solve, f.rows());
   TwoGridSolve out;
   Block x = u0;
   S::product(k, x, work);
@@ -177,6 +193,18 @@ TwoGridSolve solve_group(int columns, const Lower& k, const Eigen::MatrixXd& f,
   return solve_columns<M>(k, f, prolongation, coarse_solve, u0, tolerance, max_iterations);
 }
 
+// One cycle on the columns of `r`, M of them.
+template <int M = 1>
+Eigen::MatrixXd cycle_columns(int columns, const Lower& k, const Eigen::MatrixXd& r,
+                              const Eigen::SparseMatrix<double>& prolongation, const CoarseSolve& coarse_solve) {
+  if constexpr (M < kMaxColumns)
+    if (columns != M) return cycle_columns<M + 1>(columns, k, r, prolongation, coarse_solve);
+  Cycle<M> cycle(k, prolongation, coarse_solve, r.rows());
+  Block z(r.rows(), M);
+  cycle(Block(r), z);
+  return z;
+}
+
 }  // namespace
 
 TwoGridSolve two_grid_solve(const Eigen::SparseMatrix<double>& k_lower, const Eigen::MatrixXd& f,
@@ -212,6 +240,17 @@ TwoGridSolve two_grid_solve(const Eigen::SparseMatrix<double>& k_lower, const Ei
     out.converged = out.converged && s.converged;
   }
   return out;
+}
+
+Eigen::MatrixXd two_grid_cycle(const Eigen::SparseMatrix<double>& k_lower, const Eigen::MatrixXd& r,
+                               const Eigen::SparseMatrix<double>& prolongation, const CoarseSolve& coarse_solve) {
+  const Lower k(k_lower);
+  Eigen::MatrixXd z(r.rows(), r.cols());
+  for (Eigen::Index begin = 0; begin < r.cols(); begin += kMaxColumns) {
+    const auto width = static_cast<int>(std::min<Eigen::Index>(kMaxColumns, r.cols() - begin));
+    z.middleCols(begin, width) = cycle_columns(width, k, r.middleCols(begin, width), prolongation, coarse_solve);
+  }
+  return z;
 }
 
 }  // namespace grainmesh

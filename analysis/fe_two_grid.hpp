@@ -32,4 +32,10 @@ TwoGridSolve two_grid_solve(const Eigen::SparseMatrix<double>& k_lower, const Ei
                             const Eigen::SparseMatrix<double>& prolongation, const CoarseSolve& coarse_solve,
                             const Eigen::MatrixXd& u0, double tolerance, int max_iterations, int threads);
 
+// One cycle of the preconditioner on the columns of `r`: K^-1 r as one two-grid cycle
+// approximates it, a symmetric positive definite operator wherever `coarse_solve` is one —
+// so it may serve as a finer level's coarse solve (the cycles nested: a V-cycle).
+Eigen::MatrixXd two_grid_cycle(const Eigen::SparseMatrix<double>& k_lower, const Eigen::MatrixXd& r,
+                               const Eigen::SparseMatrix<double>& prolongation, const CoarseSolve& coarse_solve);
+
 }  // namespace grainmesh

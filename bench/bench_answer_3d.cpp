@@ -1,14 +1,19 @@
-// make bench: time to a 3D answer. `grainmesh run --solve` end to end on the 3D WC-Co
-// example (data/examples/grains_3d_wc_co.ini: 85 % WC, 15 % Co, 500 tetrahedra per grain
-// solved on their dual's polyhedra) at 100 and 1,000 grains of the same size, periodic (six
-// load cases, the 6 x 6 tensor), serial and with solve.processes = 2: seconds per stage,
-// cells, the process tree's peak memory (the solver's included), the tensor's symmetry
-// and its bulk and shear moduli against Hashin-Shtrikman. One run each (a fresh process).
-// Writes bench/results.json ("answer_3d").
+// make bench: time to a 3D answer on the 3D WC-Co example
+// (data/examples/grains_3d_wc_co.ini: 85 % WC, 15 % Co, 500 tetrahedra per grain) at 100
+// and 1,000 grains of the same size, periodic, one run each (a fresh process, no pictures):
+// - the answer (`grainmesh run`, the finite elements on two nested levels) with the
+//   thermal load: the 6 x 6 tensor and the expansion with their error estimates; seconds
+//   per stage, the finite elements' unknowns, their levels' seconds and cycles, the
+//   process's peak memory, the largest estimate. Writes "answer_3d_fe".
+// - OpenFOAM's answer (`grainmesh run --solve`, homogenise.solver = openfoam: the
+//   tetrahedra's dual polyhedra, six load cases), serial and with solve.processes = 2: seconds per stage, cells, the process
+//   tree's peak memory (the solvers' included), the tensor's symmetry and its bulk and shear
+//   moduli against Hashin-Shtrikman. Writes "answer_3d".
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,43 +25,109 @@
 using namespace grainmesh;
 namespace fs = std::filesystem;
 
+namespace {
+
+struct Run {
+  Json report;
+  double seconds = 0.0;
+  double peak_mib = 0.0;
+};
+
+// grainmesh with `args` in a child of ours, so that its rusage is its process tree's
+// (solvers included); its report read back. Exits on failure.
+Run run_grainmesh(const std::string& args, const fs::path& dir, const fs::path& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string command = std::string(GRAINMESH_BINARY) + " " + args + " > " + (dir / "run.log").string() + " 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  Run r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::fprintf(stderr, "bench_answer_3d: grainmesh %s failed (see %s)\n", args.c_str(), (dir / "run.log").c_str());
+    std::exit(1);
+  }
+  r.report = read_json(out / "report.json");
+  r.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  return r;
+}
+
+// The example at `grains` grains of its own size, periodic, without pictures.
+std::string cell_args(const std::string& config, const fs::path& out, int grains) {
+  const double side = 2.0 * std::cbrt(grains / 100.0);
+  char args[512];
+  std::snprintf(args, sizeof args,
+                "run %s -o %s --quiet --set tessellation.grains=%d --set domain.width=%g --set domain.height=%g --set "
+                "domain.depth=%g --set homogenise.boundary=periodic --set output.pictures=none",
+                config.c_str(), out.string().c_str(), grains, side, side, side);
+  return args;
+}
+
+// The finite elements' answer with the thermal load (WC 5.2e-6, Co 13.8e-6 per K).
+Json fe_rows(const std::string& config, const fs::path& dir) {
+  Json results = Json::array();
+  std::printf("%7s %9s %10s %7s %7s %8s %6s %13s %6s %8s %8s  %s\n", "grains", "tets", "unknowns", "tess s",
+              "mesh s", "export s", "fe s", "coarse s (it)", "fine it", "total s", "peak MiB", "largest estimate");
+  for (const int grains : {100, 1000}) {
+    const fs::path out = dir / "run";
+    fs::remove_all(out);
+    const Run r = run_grainmesh(cell_args(config, out, grains) +
+                                    " --set load.delta_T=-1000 --set phase.WC.alpha=5.2e-6 --set phase.Co.alpha=13.8e-6",
+                                dir, out);
+    const Json& fe = r.report["effective"]["finite_elements"];
+    double largest = 0.0;
+    for (const auto& [key, value] : r.report["effective"]["error_estimate"]["stiffness"].items())
+      if (key[1] == key[2] || key == "C12") largest = std::max(largest, value.get<double>());
+    const Json& s = r.report["seconds"];
+    Json row{{"grains", grains},
+             {"tetrahedra", r.report["mesh"]["cells"]},
+             {"seconds", r.seconds},
+             {"stages", s},
+             {"finite_elements", fe},
+             {"peak_memory_mib", r.peak_mib},
+             {"largest_estimate", largest}};
+    std::printf("%7d %9d %10d %7.2f %7.2f %8.2f %6.1f %8.1f (%2d) %6d %8.1f %8.0f  %.2f %%\n", grains,
+                row["tetrahedra"].get<int>(), fe["unknowns"].get<int>(), s["tessellate"].get<double>(),
+                s["mesh"].get<double>(), s["export"].get<double>(), fe["seconds"].get<double>(),
+                fe["coarse"]["seconds"].get<double>(), fe["coarse"]["iterations"].get<int>(), fe["iterations"].get<int>(),
+                r.seconds, r.peak_mib, 100 * largest);
+    std::fflush(stdout);
+    results.push_back(row);
+  }
+  return results;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   const fs::path source = argc > 1 ? argv[1] : ".";
   const fs::path dir = fs::temp_directory_path() / "grainmesh-bench-answer-3d";
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string config = (source / "data" / "examples" / "grains_3d_wc_co.ini").string();
+  const Json fe = fe_rows(config, dir);
+  write_results(source / "bench" / "results.json", "answer_3d_fe",
+                "one run of grainmesh run (periodic, thermal load, the finite elements answering, no pictures) per row, "
+                "a fresh process, wall clock end to end; stages and the finite elements' levels from its report; peak "
+                "memory (wait4); the largest error estimate over the diagonal entries and C12",
+                fe);
   Json results = Json::array();
   std::printf("%7s %5s %9s %8s %8s %8s %8s %8s %8s %9s  %s\n", "grains", "procs", "tets", "cells", "tess s", "mesh s",
               "export s", "solve s", "total s", "peak MiB", "K, G vs HS upper; symmetry");
   for (const int grains : {100, 1000}) {
-    const double side = 2.0 * std::cbrt(grains / 100.0);  // the example's grain size
     for (const int processes : {1, 2}) {
       const fs::path out = dir / "run";
       fs::remove_all(out);
-      char args[512];
-      std::snprintf(args, sizeof args,
-                    "run %s -o %s --solve --quiet --set tessellation.grains=%d --set domain.width=%g --set "
-                    "domain.height=%g --set domain.depth=%g --set homogenise.boundary=periodic --set "
-                    "export.format=binary --set output.pictures=none --set solve.processes=%d",
-                    config.c_str(), out.string().c_str(), grains, side, side, side, processes);
-      const auto start = std::chrono::steady_clock::now();
-      // The run in a child of ours, so its rusage is its process tree's (solvers included).
-      const pid_t pid = fork();
-      if (pid == 0) {
-        const std::string command = std::string(GRAINMESH_BINARY) + " " + args + " > " + (dir / "run.log").string() + " 2>&1";
-        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-        _exit(127);
-      }
-      int status = 0;
-      rusage usage{};
-      wait4(pid, &status, 0, &usage);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        std::fprintf(stderr, "bench_answer_3d: grainmesh %s failed (see %s)\n", args, (dir / "run.log").c_str());
-        return 1;
-      }
-      const Json report = read_json(out / "report.json");
+      const Run r = run_grainmesh(cell_args(config, out, grains) + " --solve --set homogenise.solver=openfoam --set export.format=binary --set solve.processes=" +
+                                      std::to_string(processes),
+                                  dir, out);
+      const double seconds = r.seconds;
+      const Json& report = r.report;
       const Json& eff = report["effective"];
       const Json& hs = eff["hashin_shtrikman"];
       const double K = eff["bulk_modulus"].get<double>() / hs["bulk_upper"].get<double>() - 1.0;
@@ -67,7 +138,7 @@ int main(int argc, char** argv) {
                {"cells", report["case_cells"]["cells"]},
                {"seconds", seconds},
                {"stages", report["seconds"]},
-               {"peak_memory_mib", static_cast<double>(usage.ru_maxrss) / 1024.0},
+               {"peak_memory_mib", r.peak_mib},
                {"corrections", eff["corrections"]},
                {"symmetry_error", eff["symmetry_error"]},
                {"bulk_vs_hs_upper", K},

@@ -39,7 +39,7 @@ Json fe_solve_json(const FeLevels<N>& l) {
           {"unknowns", l.fine.unknowns},
           {"seconds", l.seconds()},
           {"iterations", l.fine.iterations},
-          {"coarse", {{"unknowns", l.coarse.unknowns}, {"seconds", l.coarse.seconds}}}};
+          {"coarse", {{"unknowns", l.coarse.unknowns}, {"seconds", l.coarse.seconds}, {"iterations", l.coarse.iterations}}}};
 }
 
 template <std::size_t N>

@@ -1,0 +1,69 @@
+// The sparse factors of the finite-element solve and the coarse of its two nested levels.
+// Private to that solve: Eigen's and CHOLMOD's types, included only by the .cpp files that
+// wrap them (fe_homogenise.cpp, fe_coarse_level.cpp).
+#pragma once
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <memory>
+
+#include "analysis/fe_homogenise.hpp"
+#include "analysis/fe_nodes.hpp"
+
+namespace grainmesh {
+
+using Factor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+
+// CHOLMOD's analysis of `k` (its lower triangle, its unknowns already in a fill-reducing
+// order, fe_nodes.hpp): the factor's pattern, its nonzeros and operations counted before
+// any is made.
+std::unique_ptr<Factor> analyse(const Eigen::SparseMatrix<double>& k);
+
+// The sparse Cholesky factor of `k` from its analysis, refused before it is made when it
+// would not fit beside `beside` bytes the solve holds besides: ConfigError naming
+// homogenise.solver (or .reference). GeometryError when `k` is not positive definite.
+std::unique_ptr<Factor> factorise(std::unique_ptr<Factor> analysed, const Eigen::SparseMatrix<double>& k, int loads,
+                                  const FeOptions& o, double beside = 0.0);
+
+// The coarse level's solves: by its own factor where that costs at most
+// FeOptions::coarse_factor_flops (CHOLMOD's count), else by conjugate gradients with a
+// two-grid cycle on its linear elements, whose factor is small (P^T K P, P from
+// linear_prolongation). Either way the level's answer is solved to the fine level's
+// tolerance, and its cycle (the fine level's coarse correction) is the factor's solve or
+// one two-grid cycle: the fine level's cycle is then a V-cycle over three levels.
+class CoarseLevel {
+ public:
+  // `k` (kept by reference) the level's matrix, its lower triangle; `nodes` its quadratic
+  // nodes; the fine level beside it 2^D times its elements.
+  template <int D>
+  CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>& nodes, int loads, const FeOptions& o);
+
+  // The level solved, each load's residual to `tolerance` of its norm; factorised after
+  // all when `max_iterations` cycles do not reach it.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& f, double tolerance, int max_iterations);
+  // The fine level's coarse correction: the factor's solve, or one cycle.
+  Eigen::MatrixXd cycle(const Eigen::MatrixXd& r) const;
+  // The conjugate gradients' cycles of the last solve (0: factorised).
+  int iterations() const { return iterations_; }
+
+ private:
+  Eigen::MatrixXd factor_solve(const Eigen::MatrixXd& r) const { return factor_->solve(r); }
+
+  const Eigen::SparseMatrix<double>& k_;
+  int loads_;
+  FeOptions options_;
+  std::unique_ptr<Factor> factor_;      // the level's own, or its linear elements'
+  Eigen::SparseMatrix<double> linear_;  // the prolongation from the linear elements; empty: `factor_` is the level's own
+  int iterations_ = 0;
+  double fine_ = 0.0;  // bytes the fine level holds beside this one
+};
+
+// The linear elements of a level's own mesh inside its quadratic ones: the prolongation
+// from the corners' unknowns (numbered in the quadratic level's order) to the level's — a
+// corner node's its own, a midside node's the mean of its edge's ends'.
+template <int D>
+Eigen::SparseMatrix<double> linear_prolongation(const FeNodes<D>& nodes);
+
+}  // namespace grainmesh
