@@ -70,9 +70,9 @@ FeHomogenised<6> fe_homogenise(const ExportMesh<3>& m, bool thermal, const FeOpt
 // 156 s, gave way to 16 s), to the fine level's tolerance. The fine level is solved by
 // conjugate gradients preconditioned by a two-grid cycle whose coarse correction is the
 // coarse level's factor or one cycle of its own (a V-cycle over three levels;
-// fe_two_grid.hpp), from the coarse solution, to a residual of 1e-6 of each load's —
-// the answer as the fine level's factor gives it, without its fill (3D: a fraction of the
-// operations); either level factorised instead when 200 cycles do not reach it. The
+// fe_two_grid.hpp), from the coarse solution, to a residual of 1e-4 of each load's —
+// the answer as the fine level's factor gives it to about 1e-8, without its fill (3D: a
+// fraction of the operations); either level factorised instead when 200 cycles do not reach it. The
 // coarse level is solved beside the fine level's assembly (on two threads where
 // limit_fe_threads allows), on one BLAS thread: the same answer to the bit on any number
 // of threads. `seconds`: the coarse level's to its answer, the fine level's from there;
