@@ -51,7 +51,9 @@ def read_run(out):
     phase_array = grid.GetCellData().GetArray("phase")
     phases = np.array([int(phase_array.GetValue(i)) for i in range(grid.GetNumberOfCells())], dtype=np.int32)
     names_array = grid.GetFieldData().GetAbstractArray("phase_names")
-    names = [names_array.GetValue(i) for i in range(names_array.GetNumberOfValues())]
+    values = [names_array.GetValue(i) for i in range(names_array.GetNumberOfValues())]
+    # The names as NUL-ended bytes (view/vtu.cpp writes them so, for meshio and VTK alike).
+    names = [n.decode() for n in bytes(values).split(b"\0")[:-1]] if values and isinstance(values[0], int) else values
     config = configparser.ConfigParser(inline_comment_prefixes=("#", ";"))
     config.read(os.path.join(out, "config.ini"))
     materials = [(float(config["phase." + n]["E"]), float(config["phase." + n]["nu"])) for n in names]
