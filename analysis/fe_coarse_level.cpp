@@ -100,8 +100,9 @@ CoarseLevel::CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>&
   // The fine level beside (2^D times the coarse level's elements, about as many times its
   // unknowns and entries): its matrix and its conjugate gradients' eight blocks of columns.
   constexpr double kSplit = 1 << D;
-  const auto entries = static_cast<double>(k.nonZeros()), unknowns = static_cast<double>(k.rows());
-  fine_ = kSplit * (12.0 * entries + 64.0 * loads * unknowns);
+  const auto entries = static_cast<double>(k.nonZeros());
+  const double columns = 64.0 * loads * static_cast<double>(k.rows());  // eight blocks of the loads' columns
+  fine_ = kSplit * (12.0 * entries + columns);
   factor_ = analyse(k);
   if (factor_->cholmod().fl <= o.coarse_factor_flops) {
     factor_ = factorise(std::move(factor_), k, loads, o, fine_);
@@ -110,7 +111,7 @@ CoarseLevel::CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>&
   // Beside the linear elements' factor: the coarse level's matrix twice more (the symmetric
   // copy), its conjugate gradients' columns, and the fine level; refused before the linear
   // elements are made where even they, without their (small) factor, would not fit.
-  const double beside = 24.0 * entries + 64.0 * loads * unknowns + fine_;
+  const double beside = 24.0 * entries + columns + fine_;
   check_memory(0.0, k, loads, static_cast<std::size_t>(k.rows()), o, beside);
   linear_ = linear_prolongation(nodes);
   const Eigen::SparseMatrix<double> full = k.selfadjointView<Eigen::Lower>();
@@ -123,13 +124,13 @@ template CoarseLevel::CoarseLevel(const Eigen::SparseMatrix<double>&, const FeNo
 template CoarseLevel::CoarseLevel(const Eigen::SparseMatrix<double>&, const FeNodes<3>&, int, const FeOptions&);
 
 Eigen::MatrixXd CoarseLevel::cycle(const Eigen::MatrixXd& r) const {
-  if (linear_.size() == 0) return factor_solve(r);
+  if (!cycled()) return factor_solve(r);
   return two_grid_cycle(k_, r, linear_, [this](const Eigen::MatrixXd& x) { return factor_solve(x); });
 }
 
 Eigen::MatrixXd CoarseLevel::solve(const Eigen::MatrixXd& f, double tolerance, int max_iterations) {
   iterations_ = 0;
-  if (linear_.size() == 0) return factor_solve(f);
+  if (!cycled()) return factor_solve(f);
   const TwoGridSolve s = two_grid_solve(
       k_, f, linear_, [this](const Eigen::MatrixXd& x) { return factor_solve(x); },
       Eigen::MatrixXd::Zero(f.rows(), f.cols()), tolerance, max_iterations, 1);  // beside the fine assembly

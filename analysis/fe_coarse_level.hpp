@@ -50,6 +50,7 @@ class CoarseLevel {
 
  private:
   Eigen::MatrixXd factor_solve(const Eigen::MatrixXd& r) const { return factor_->solve(r); }
+  bool cycled() const { return linear_.size() != 0; }  // solved by cycles, not by its own factor
 
   const Eigen::SparseMatrix<double>& k_;
   int loads_;

@@ -140,12 +140,11 @@ TwoGridSolve solve_columns(const Lower& k, const Eigen::MatrixXd& f, const Eigen
                            const CoarseSolve& coarse_solve, const Eigen::MatrixXd& u0, double tolerance,
                            int max_iterations) {
   using S = Sweeps<M>;
-  Block work(f.rows(), M);
   Cycle<M> cycle(k, prolongation, coarse_solve, f.rows());
   TwoGridSolve out;
   Block x = u0;
-  S::product(k, x, work);
-  Block r = Block(f) - work;
+  S::product(k, x, cycle.work);  // the cycle's work space, free before its first cycle
+  Block r = Block(f) - cycle.work;
   const Eigen::RowVectorXd limit = tolerance * f.colwise().norm();
   auto done = [&] { return (r.colwise().norm().array() <= limit.array()).all(); };
   if (done()) {

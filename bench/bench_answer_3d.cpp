@@ -9,18 +9,15 @@
 //   tetrahedra's dual polyhedra, six load cases), serial and with solve.processes = 2: seconds per stage, cells, the process
 //   tree's peak memory (the solvers' included), the tensor's symmetry and its bulk and shear
 //   moduli against Hashin-Shtrikman. Writes "answer_3d".
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "bench/child.hpp"
+#include "bench/peers.hpp"
 
 using namespace grainmesh;
 namespace fs = std::filesystem;
@@ -33,38 +30,32 @@ struct Run {
   double peak_mib = 0.0;
 };
 
-// grainmesh with `args` in a child of ours, so that its rusage is its process tree's
-// (solvers included); its report read back. Exits on failure.
-Run run_grainmesh(const std::string& args, const fs::path& dir, const fs::path& out) {
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const std::string command = std::string(GRAINMESH_BINARY) + " " + args + " > " + (dir / "run.log").string() + " 2>&1";
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  Run r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::fprintf(stderr, "bench_answer_3d: grainmesh %s failed (see %s)\n", args.c_str(), (dir / "run.log").c_str());
+// grainmesh with `args` in a child of ours (run_process), so that its rusage is its
+// process tree's (solvers included); its report read back. Exits on failure.
+Run run_grainmesh(const std::vector<std::string>& args, const fs::path& dir, const fs::path& out) {
+  std::vector<std::string> argv{GRAINMESH_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const ProcessRun p = run_process(argv, dir / "run.log");
+  if (p.exit_code != 0) {
+    std::fprintf(stderr, "bench_answer_3d: grainmesh failed with %d (see %s)\n", p.exit_code, (dir / "run.log").c_str());
     std::exit(1);
   }
-  r.report = read_json(out / "report.json");
-  r.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  return r;
+  return {read_json(out / "report.json"), p.seconds, p.peak_mib};
 }
 
-// The example at `grains` grains of its own size, periodic, without pictures.
-std::string cell_args(const std::string& config, const fs::path& out, int grains) {
-  const double side = 2.0 * std::cbrt(grains / 100.0);
-  char args[512];
-  std::snprintf(args, sizeof args,
-                "run %s -o %s --quiet --set tessellation.grains=%d --set domain.width=%g --set domain.height=%g --set "
-                "domain.depth=%g --set homogenise.boundary=periodic --set output.pictures=none",
-                config.c_str(), out.string().c_str(), grains, side, side, side);
+// The example at `grains` grains of its own size, periodic, without pictures, and `more`.
+std::vector<std::string> cell_args(const std::string& config, const fs::path& out, int grains,
+                                   const std::vector<std::string>& more) {
+  char side[32];
+  std::snprintf(side, sizeof side, "%g", 2.0 * std::cbrt(grains / 100.0));
+  std::vector<std::string> args{"run", config, "-o", out.string(), "--quiet"};
+  for (const std::string& set :
+       {"tessellation.grains=" + std::to_string(grains), "domain.width=" + std::string(side),
+        "domain.height=" + std::string(side), "domain.depth=" + std::string(side), std::string("homogenise.boundary=periodic"), std::string("output.pictures=none")}) {
+    args.push_back("--set");
+    args.push_back(set);
+  }
+  args.insert(args.end(), more.begin(), more.end());
   return args;
 }
 
@@ -76,8 +67,9 @@ Json fe_rows(const std::string& config, const fs::path& dir) {
   for (const int grains : {100, 1000}) {
     const fs::path out = dir / "run";
     fs::remove_all(out);
-    const Run r = run_grainmesh(cell_args(config, out, grains) +
-                                    " --set load.delta_T=-1000 --set phase.WC.alpha=5.2e-6 --set phase.Co.alpha=13.8e-6",
+    const Run r = run_grainmesh(cell_args(config, out, grains,
+                                          {"--set", "load.delta_T=-1000", "--set", "phase.WC.alpha=5.2e-6", "--set",
+                                           "phase.Co.alpha=13.8e-6"}),
                                 dir, out);
     const Json& fe = r.report["effective"]["finite_elements"];
     double largest = 0.0;
@@ -123,8 +115,9 @@ int main(int argc, char** argv) {
     for (const int processes : {1, 2}) {
       const fs::path out = dir / "run";
       fs::remove_all(out);
-      const Run r = run_grainmesh(cell_args(config, out, grains) + " --solve --set homogenise.solver=openfoam --set export.format=binary --set solve.processes=" +
-                                      std::to_string(processes),
+      const Run r = run_grainmesh(cell_args(config, out, grains,
+                                            {"--solve", "--set", "homogenise.solver=openfoam", "--set",
+                                             "export.format=binary", "--set", "solve.processes=" + std::to_string(processes)}),
                                   dir, out);
       const double seconds = r.seconds;
       const Json& report = r.report;
