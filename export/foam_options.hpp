@@ -57,6 +57,9 @@ struct FoamOptions {
   // triangles it is made of, so that OpenFOAM's face areas and cell volumes are the
   // polyhedra's exactly; false: one polygon per face.
   bool plane_faces = false;
+  // 3D dual: where checkMesh would fail a face or a cell, fold the faces between a point's
+  // cells and join cells (polymesh_dual_3d.hpp); false (tests) builds the plain dual.
+  bool mend_checks = true;
   // The linear solver of D's equation: automatic is multigrid (GAMG: fastest) in 2D and
   // conjugate gradients (PCG with DIC) in 3D, where GAMG blew up; the solve falls back on
   // conjugate gradients when multigrid diverges (analysis/solve.cpp).

@@ -3,16 +3,21 @@
 #include "export/polymesh_dual_3d.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <array>
 #include <cmath>
 #include <map>
 #include <string>
 
 #include <boost/pending/disjoint_sets.hpp>
+#include <tbb/parallel_sort.h>
 
 #include "common/errors.hpp"
 #include "export/export_mesh.hpp"
 #include "export/foam_geometry.hpp"
+#include "export/foam_mesh_check.hpp"
+#include "export/join_cells.hpp"
+#include "export/dual_interface.hpp"
 #include "export/foam_material.hpp"
 #include "export/foam_options.hpp"
 #include "export/pin_translation.hpp"
@@ -46,7 +51,18 @@ int corner_of(const std::vector<std::array<int, 4>>& T, int t, int v) {
 class Nodes {
  public:
   Nodes(const TetMesh& mesh, std::vector<char> interface, std::vector<std::array<int, 2>> edges, std::vector<Triangle> triangles)
-      : mesh_(mesh), interface_(std::move(interface)), edges_(std::move(edges)), triangles_(std::move(triangles)) {}
+      : mesh_(mesh), interface_(std::move(interface)), edges_(std::move(edges)), triangles_(std::move(triangles)),
+        of_tet_(mesh.tets.size()) {
+    // Each tetrahedron's edge and face nodes, looked up once for every build of the dual.
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const auto& T = mesh.tets[t];
+      for (int e = 0; e < 6; ++e) of_tet_[t][e] = edge(T[kEdge[e][0]], T[kEdge[e][1]]);
+      for (int k = 0; k < 4; ++k) of_tet_[t][6 + k] = triangle({T[kFace[k][0]], T[kFace[k][1]], T[kFace[k][2]]});
+    }
+  }
+  // Tetrahedron t's node of its edge kEdge[e], of its face opposite corner k.
+  int tet_edge(std::size_t t, int e) const { return of_tet_[t][e]; }
+  int tet_face(std::size_t t, int k) const { return of_tet_[t][6 + k]; }
   int point(int v) const { return v; }
   int edge(int a, int b) const {
     const std::array<int, 2> e{std::min(a, b), std::max(a, b)};
@@ -115,6 +131,7 @@ class Nodes {
   std::vector<char> interface_;
   std::vector<std::array<int, 2>> edges_;
   std::vector<Triangle> triangles_;
+  std::vector<std::array<int, 10>> of_tet_;
 };
 
 // A piece of a dual face: the triangle apex, from, to, turning so that its normal points
@@ -122,7 +139,7 @@ class Nodes {
 // share its apex; their from -> to segments chain into its outline.
 struct Piece {
   int first, second;  // cells; second = -1 - side for a face on a side of the box
-  int part;           // -1 for the pieces around an edge, which make one face; else the face's own number
+  int part;           // the face's group: -2 - the node of the edge or point the pieces are round, else its own number
   int apex, from, to;
   auto face() const { return std::array<int, 3>{first, second, part}; }
   auto key() const { return std::array<int, 4>{first, second, part, from}; }
@@ -203,44 +220,6 @@ MeshFaces mesh_faces(const std::vector<std::array<int, 4>>& T) {
   return out;
 }
 
-// The points on a phase interface: with tetrahedra of two phases around them, counting a
-// periodic point's images'.
-std::vector<char> interface_points(const ExportMesh<3>& m) {
-  std::vector<int> around(m.mesh.points.size(), -1);  // -1: no phase yet, -2: two
-  auto meet = [](int& a, int b) {
-    if (a == -1) a = b;
-    else if (b != -1 && a != b) a = -2;
-  };
-  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t)
-    for (int v : m.mesh.tets[t]) meet(around[v], m.phase[t]);
-  if (m.periodic)
-    for (int round = 0; round < 3; ++round)  // a corner's images through all three pairs
-      for (const auto& axis : m.pairs.axis)
-        for (const auto& [low, high] : axis) {
-          meet(around[low], around[high]);
-          around[high] = around[low];
-        }
-  std::vector<char> out(around.size(), 0);
-  for (std::size_t v = 0; v < around.size(); ++v) out[v] = around[v] == -2;
-  return out;
-}
-
-// A phase interface point's weight in the means of the corners around it, per phase:
-// its cell in phase p reaches the fraction f_p = sqrt(gamma_p / gamma_max) / 2 of its
-// edges into the phase (1 / (1 + w) = f_p), a half where the phase is the stiffest. The
-// two cells' centres across an interface then lie at distances in the ratio
-// sqrt(gamma_soft / gamma_hard), where the compact form's face force (gamma interpolated
-// linearly, and the rest of the stress) is exact for a laminate's normal and shear
-// strains (given the cells' gradients): measured on a laminate of ratio 20, C11 +6.0 %
-// -> -0.9 %; the shears across are held by the gradients, +14 % -> +13 %.
-std::vector<double> interface_weights(const std::vector<FoamPhase>& phases) {
-  double stiffest = 0.0;
-  for (const FoamPhase& p : phases) stiffest = std::max(stiffest, lame(p, false).gamma());
-  std::vector<double> out;
-  for (const FoamPhase& p : phases) out.push_back(2.0 / std::sqrt(lame(p, false).gamma() / stiffest) - 1.0);
-  return out;
-}
-
 // A triangle between two cells' pieces: face k of tetrahedron t, outward into
 // tetrahedron u (-1 - side on the box).
 struct Between {
@@ -299,14 +278,22 @@ std::vector<Between> dual_cells(const ExportMesh<3>& m, const MeshFaces& mf, Foa
 
 // The dual's faces: two pieces per tetrahedron edge (between its ends' cells), two per
 // corner of a triangle in `splits`, chained (with `plane_faces` the pieces round an edge
-// each a face of its own). Each node's phase (of a tetrahedron it lies in) into
-// `node_phase`.
+// each a face of its own). A point's quarters of the triangles between two of its cells
+// are a face each or, where `fold` (#points) is set, one: a folded polygon fanned from the
+// point, or the ring round it where they close round it, as where a grain's tip pokes
+// into another (there the quarters' normals turn right round, and no line between the two
+// cells' centres crosses them all near square: checkMesh fails them). Folding moves each
+// grain's volume a little (the cone between the point and the ring changes sides: 6e-5 of
+// the binder's on the binder example). Each node's phase (of a tetrahedron it lies in)
+// into `node_phase`.
 std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, const std::vector<int>& cell,
-                                 const std::vector<Between>& splits, bool plane_faces, std::vector<int>& node_phase) {
+                                 const std::vector<Between>& splits, const std::vector<char>& fold, bool plane_faces,
+                                 std::vector<int>& node_phase) {
   const std::vector<std::array<int, 4>>& T = m.mesh.tets;
   std::vector<Piece> pieces;
   pieces.reserve(12 * T.size() + 6 * splits.size());
   auto add = [&](int a, int b, int part, int apex, int from, int to) {
+    if (a == b) return;  // inside a joined cell
     if (b >= 0 && b < a) {
       std::swap(a, b);
       std::swap(from, to);
@@ -314,14 +301,15 @@ std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, con
     pieces.push_back({a, b, part, apex, from, to});
   };
   for (std::size_t t = 0; t < T.size(); ++t)
-    for (const auto& [i, j, k, l] : kEdge) {
+    for (int e = 0; e < 6; ++e) {
       // Around edge ij from the centroid of face ijk (opposite l) through the tetrahedron's
       // to face ijl's: the normal points from corner i to corner j.
+      const auto [i, j, k, l] = kEdge[e];
       const int a = cell[4 * t + i], b = cell[4 * t + j];
-      const int apex = nodes.edge(T[t][i], T[t][j]), centre = nodes.tet(static_cast<int>(t));
-      const int fk = nodes.triangle({T[t][i], T[t][j], T[t][k]}), fl = nodes.triangle({T[t][i], T[t][j], T[t][l]});
-      add(a, b, -1, apex, fk, centre);
-      add(a, b, -1, apex, centre, fl);
+      const int apex = nodes.tet_edge(t, e), centre = nodes.tet(static_cast<int>(t));
+      const int fk = nodes.tet_face(t, l), fl = nodes.tet_face(t, k);
+      add(a, b, -2 - apex, apex, fk, centre);  // a face per edge: joined cells may meet round several
+      add(a, b, -2 - apex, apex, centre, fl);
       for (int n : {apex, centre, fk, fl}) node_phase[n] = m.phase[t];
     }
   for (std::size_t k = 0; k < splits.size(); ++k) {
@@ -329,22 +317,23 @@ std::vector<DualFace> dual_faces(const ExportMesh<3>& m, const Nodes& nodes, con
     const Triangle f{T[s.t][kFace[s.k][0]], T[s.t][kFace[s.k][1]], T[s.t][kFace[s.k][2]]};
     const int centroid = nodes.triangle(f);
     for (int q = 0; q < 3; ++q) {
-      // Point v's quarter of the triangle, a face of its own (plane, so that grains and
-      // the box keep their volumes exactly), turning as the triangle (outward from t).
+      // Point v's quarter of the triangle, turning as the triangle (outward from t): a
+      // face of its own (plane, so that grains and the box keep their volumes exactly), or
+      // where v is to `fold`, one face with v's other quarters between the same two cells.
       const int v = f[q], next = f[(q + 1) % 3], previous = f[(q + 2) % 3];
       const int a = cell[corner_of(T, s.t, v)], b = s.u >= 0 ? cell[corner_of(T, s.u, v)] : s.u;
-      const int part = static_cast<int>(3 * k) + q;
+      const int part = fold[v] && s.u >= 0 ? -2 - nodes.point(v) : static_cast<int>(3 * k) + q;
       add(a, b, part, nodes.point(v), nodes.edge(v, next), centroid);
       add(a, b, part, nodes.point(v), centroid, nodes.edge(v, previous));
       for (int n : {nodes.point(v), nodes.edge(v, next), centroid}) node_phase[n] = m.phase[s.t];
     }
   }
-  std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) { return x.key() < y.key(); });
+  tbb::parallel_sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) { return x.key() < y.key(); });
   std::vector<DualFace> dual;
   for (auto it = pieces.begin(); it != pieces.end();) {
     auto end = it;
     while (end != pieces.end() && end->face() == it->face()) ++end;
-    if (plane_faces && it->part == -1)
+    if (plane_faces && it->part < 0)
       for (auto p = it; p != end; ++p) dual.push_back({{p->apex, p->from, p->to}, p->first, p->second});
     else
       chain(it, end, dual);
@@ -384,20 +373,13 @@ std::vector<const DualFace*> image_faces(const std::vector<const DualFace*>& low
   return paired;
 }
 
-}  // namespace
-
-FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
-  if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
-  MeshFaces mf = mesh_faces(m.mesh.tets);
-  FoamMesh3 out;
-  const std::vector<Between> splits = dual_cells(m, mf, out);
-  const Nodes nodes(m.mesh, interface_points(m), std::move(mf.edges), std::move(mf.triangles));
+// The polyMesh of the cells `out` holds (grain, phase, corner_cell), and its geometry:
+// internal faces by owner and neighbour, then the sides'; points as their faces first use
+// them.
+void assemble(const ExportMesh<3>& m, const Nodes& nodes, const std::vector<Between>& splits, const std::vector<char>& fold,
+              const std::vector<double>& weight, const FoamOptions& o, FoamMesh3& out) {
   std::vector<int> node_phase(static_cast<std::size_t>(nodes.size()), 0);
-  const std::vector<DualFace> dual = dual_faces(m, nodes, out.corner_cell, splits, o.plane_faces, node_phase);
-  const std::vector<double> weight = interface_weights(m.phases);
-
-  // The polyMesh: internal faces by owner and neighbour, then the sides'; points as
-  // their faces first use them.
+  const std::vector<DualFace> dual = dual_faces(m, nodes, out.corner_cell, splits, fold, o.plane_faces, node_phase);
   PolyMesh& pm = out.mesh;
   pm.cells = static_cast<int>(out.grain.size());
   std::vector<int> point_id(static_cast<std::size_t>(nodes.size()), -1);
@@ -438,7 +420,76 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cyclic) pin_translation(pm, out.phase, {});
   add_zones(out.grain, out.phase, m.phases, o.grain_zones, pm);
   foam_cell_geometry(out.mesh, out.centre, out.volume);
-  return out;
+}
+
+// The points with a failing face between two of their own cells (across a grain
+// boundary or a phase interface), added to `fold`.
+std::vector<char> points_to_fold(const ExportMesh<3>& m, const FoamMesh3& built, const FoamCheckFailures& failing,
+                                 std::vector<char> fold) {
+  std::vector<std::vector<int>> points(built.grain.size());  // each cell's points
+  for (std::size_t c = 0; c < built.corner_cell.size(); ++c) points[built.corner_cell[c]].push_back(m.mesh.tets[c / 4][c % 4]);
+  for (auto& p : points) {
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+  }
+  for (int f : failing.faces) {
+    if (f >= built.mesh.internal_faces()) continue;
+    const auto& a = points[built.mesh.owner[f]];
+    const auto& b = points[built.mesh.neighbour[f]];
+    std::vector<int> shared;
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(shared));
+    for (int v : shared) fold[v] = 1;
+  }
+  return fold;
+}
+
+// `cells` with its cells joined as `number` has them (a cell joined across grains of one
+// phase takes its largest part's grain).
+void join(const std::vector<int>& number, const FoamMesh3& built, FoamMesh3& cells) {
+  const int count = *std::max_element(number.begin(), number.end()) + 1;
+  cells.grain.assign(static_cast<std::size_t>(count), 0);
+  cells.phase.assign(static_cast<std::size_t>(count), 0);
+  std::vector<double> largest(static_cast<std::size_t>(count), -1.0);
+  for (std::size_t c = 0; c < number.size(); ++c)
+    if (built.volume[c] > largest[number[c]]) {
+      largest[number[c]] = built.volume[c];
+      cells.grain[number[c]] = built.grain[c];
+      cells.phase[number[c]] = built.phase[c];
+    }
+  for (int& c : cells.corner_cell) c = number[c];
+}
+
+// At most this many builds after the first, each with more faces folded or cells joined.
+constexpr int kMendRounds = 4;
+
+}  // namespace
+
+FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
+  if (o.cyclic && !m.periodic) throw ConfigError("export.cyclic: the mesh is not periodic");
+  MeshFaces mf = mesh_faces(m.mesh.tets);
+  FoamMesh3 cells;
+  const std::vector<Between> splits = dual_cells(m, mf, cells);
+  const Nodes nodes(m.mesh, interface_points(m), std::move(mf.edges), std::move(mf.triangles));
+  const std::vector<double> weight = interface_weights(m.phases);
+  // Where checkMesh would fail a face between two cells of one point, that point's faces
+  // between its cells folded; where it would still fail a face or a cell, cells joined
+  // (join_cells.hpp); each time the dual built again.
+  std::vector<char> fold(m.mesh.points.size(), 0);
+  for (int round = 0;; ++round) {
+    FoamMesh3 out{.mesh = {}, .grain = cells.grain, .phase = cells.phase, .centre = {}, .volume = {}, .corner_cell = cells.corner_cell};
+    assemble(m, nodes, splits, fold, weight, o, out);
+    if (round == kMendRounds || !o.mend_checks) return out;
+    const FoamCheckFailures failing = FoamMeshCheck(out.mesh, out.centre, out.volume).failures();
+    if (failing.empty()) return out;
+    std::vector<char> more = points_to_fold(m, out, failing, fold);
+    if (more != fold) {
+      fold = std::move(more);
+      continue;
+    }
+    std::vector<int> number = joined_cells(out.mesh, out.grain, out.phase, out.centre, out.volume);
+    if (number.empty()) return out;
+    join(number, out, cells);
+  }
 }
 
 }  // namespace grainmesh

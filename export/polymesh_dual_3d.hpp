@@ -23,9 +23,16 @@ namespace grainmesh {
 // its plane triangles, edge midpoint, face centroid and tetrahedron centroid). Internal
 // faces in OpenFOAM's order, boundary faces patch
 // by patch as build_polymesh (cyclic sides' faces the images of their partners'),
-// zones by add_zones; cells in the order of their points. Throws as build_polymesh,
-// and GeometryError where the dual's faces would not be simple (a grain boundary not
-// manifold at a point).
+// zones by add_zones; cells in the order of their points.
+// Mended where checkMesh would fail (options.mend_checks; its checks as
+// foam_mesh_check.hpp computes them): a point whose faces between two of its own cells
+// fail gets them folded into one (fanned from the point, or the ring round it where they
+// close round it, as at a grain's tip poking into the binder: its cone then changes sides,
+// so the grains' volumes move a little there, 6e-5 of the binder's on the binder example);
+// cells whose faces still fail are joined with neighbours of their grain, or of their
+// phase (join_cells.hpp); at most four builds after the first. What cannot be mended so is
+// left for checkMesh to report. Throws as build_polymesh, and GeometryError where the
+// dual's faces would not be simple (a grain boundary not manifold at a point).
 FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
 
 }  // namespace grainmesh
