@@ -426,8 +426,12 @@ void assemble(const ExportMesh<3>& m, const Nodes& nodes, const std::vector<Betw
 // boundary or a phase interface), added to `fold`.
 std::vector<char> points_to_fold(const ExportMesh<3>& m, const FoamMesh3& built, const FoamCheckFailures& failing,
                                  std::vector<char> fold) {
-  std::vector<std::vector<int>> points(built.grain.size());  // each cell's points
-  for (std::size_t c = 0; c < built.corner_cell.size(); ++c) points[built.corner_cell[c]].push_back(m.mesh.tets[c / 4][c % 4]);
+  std::vector<std::vector<int>> points(built.grain.size());  // the points of the failing faces' cells
+  std::vector<char> wanted(built.grain.size(), 0);
+  for (int f : failing.faces)
+    if (f < built.mesh.internal_faces()) wanted[built.mesh.owner[f]] = wanted[built.mesh.neighbour[f]] = 1;
+  for (std::size_t c = 0; c < built.corner_cell.size(); ++c)
+    if (wanted[built.corner_cell[c]]) points[built.corner_cell[c]].push_back(m.mesh.tets[c / 4][c % 4]);
   for (auto& p : points) {
     std::sort(p.begin(), p.end());
     p.erase(std::unique(p.begin(), p.end()), p.end());
