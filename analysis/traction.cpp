@@ -47,12 +47,6 @@ FaceGeometry face_geometry(const PolyMesh& pm, int f, double scale, double thick
 
 }  // namespace
 
-int patch_index(const PolyMesh& pm, const std::string& name) {
-  for (std::size_t p = 0; p < pm.patches.size(); ++p)
-    if (pm.patches[p].name == name) return static_cast<int>(p);
-  return -1;
-}
-
 DiscreteTraction::DiscreteTraction(const PolyMesh& pm, const FoamCell& cell, const std::vector<int>& phase,
                                    const FoamOptions& o, std::vector<Vec3> centre, std::vector<double> volume,
                                    FieldValues D, FieldValues grad_D, FieldValues sigma)

@@ -95,7 +95,4 @@ class DiscreteTraction {
 Vec3 written_patch_force(const PolyMesh& pm, const ExportMesh<2>& m, const FoamOptions& o, int patch,
                          const FieldValues& sigma_on_patch);
 
-// The index of patch `name` in pm.patches; -1 when there is none.
-int patch_index(const PolyMesh& pm, const std::string& name);
-
 }  // namespace grainmesh

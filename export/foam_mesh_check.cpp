@@ -4,10 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <string>
 
 #include "export/foam_geometry.hpp"
+#include "mesh/quality.hpp"
 
 namespace grainmesh {
 
@@ -15,19 +14,14 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-// checkMesh's skewness of a face: the distance from its centre to where the line from the
-// owner's centre along d pierces its plane, over the larger of 0.2 |d| and the face's
-// extent in that direction.
+// checkMesh's skewness of face f (mesh/quality.hpp).
 double skewness(const PolyMesh& pm, int f, const FoamFace& face, Vec3 owner, Vec3 d) {
-  const Vec3 cpf = face.centre - owner;
-  const double across = dot(face.area, d);
-  const Vec3 sv = cpf - (dot(face.area, cpf) / (across == 0.0 ? 1e-300 : across)) * d;
-  const double length = norm(sv);
-  if (length == 0.0) return 0.0;
-  double extent = 0.2 * norm(d);
-  for (int k = pm.face_start[f]; k < pm.face_start[f + 1]; ++k)
-    extent = std::max(extent, std::abs(dot(sv / length, pm.points3d[pm.face_points[k]] - face.centre)));
-  return length / extent;
+  return checkmesh_skewness(face.centre, face.area, owner, d, [&](Vec3 u) {
+    double extent = 0.0;
+    for (int k = pm.face_start[f]; k < pm.face_start[f + 1]; ++k)
+      extent = std::max(extent, std::abs(dot(u, pm.points3d[pm.face_points[k]] - face.centre)));
+    return extent;
+  });
 }
 
 }  // namespace
@@ -38,11 +32,9 @@ FoamMeshCheck::FoamMeshCheck(const PolyMesh& pm, const std::vector<Vec3>& centre
   // A cyclic patch's face k pairs with its neighbour patch's face k.
   partner_.assign(static_cast<std::size_t>(pm.faces()), -1);
   shift_.assign(static_cast<std::size_t>(pm.faces()), Vec3{});
-  std::map<std::string, const PolyMesh::Patch*> by_name;
-  for (const auto& p : pm.patches) by_name[p.name] = &p;
   for (const auto& p : pm.patches) {
     if (p.type != "cyclic") continue;
-    const PolyMesh::Patch& q = *by_name.at(p.neighbour_patch);
+    const PolyMesh::Patch& q = pm.patches[static_cast<std::size_t>(patch_index(pm, p.neighbour_patch))];
     for (int k = 0; k < p.size; ++k) {
       partner_[p.start + k] = q.start + k;
       shift_[p.start + k] = -1.0 * p.separation;

@@ -43,12 +43,11 @@ constexpr int kCellFailure = 1000;
 class Joiner {
  public:
   Joiner(const PolyMesh& pm, const std::vector<int>& grain, const std::vector<int>& phase, const std::vector<Vec3>& centre,
-         const std::vector<double>& volume)
+         const std::vector<double>& volume, const FoamCheckFailures& failures)
       : pm_(pm), grain_(grain), phase_(phase), check_(pm, centre, volume), faces_(pm), parent_(grain.size()),
         parts_(grain.size()), centre_(centre), volume_(volume), failing_(grain.size(), 0) {
     std::iota(parent_.begin(), parent_.end(), 0);
     for (std::size_t c = 0; c < parts_.size(); ++c) parts_[c] = {static_cast<int>(c)};
-    const FoamCheckFailures failures = check_.failures();
     for (int c : failures.cells) failing_[c] = 1;
     for (std::size_t c = 0; c < failing_.size(); ++c)
       if (failing_[c]) work_.push_back(-1 - static_cast<int>(c));
@@ -228,8 +227,9 @@ class Joiner {
 }  // namespace
 
 std::vector<int> joined_cells(const PolyMesh& pm, const std::vector<int>& grain, const std::vector<int>& phase,
-                              const std::vector<Vec3>& centre, const std::vector<double>& volume) {
-  Joiner joiner(pm, grain, phase, centre, volume);
+                              const std::vector<Vec3>& centre, const std::vector<double>& volume,
+                              const FoamCheckFailures& failures) {
+  Joiner joiner(pm, grain, phase, centre, volume, failures);
   if (!joiner.run()) return {};
   std::vector<int> number(static_cast<std::size_t>(pm.cells), -1);
   int next = 0;

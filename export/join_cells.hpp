@@ -6,19 +6,24 @@
 #include <vector>
 
 #include "common/vec3.hpp"
+#include "export/foam_mesh_check.hpp"
 #include "export/polymesh.hpp"
 
 namespace grainmesh {
 
 // Each cell's number after joining (#cells; joined cells numbered in the order of their
-// lowest old number), or empty when no join helps. For each cell and face checkMesh would
-// fail (foam_mesh_check.hpp), one of its cells (the smaller first) is joined with the
-// neighbour of its grain (across an internal face, never a cyclic one) for which the
-// failures on the two cells' faces drop the most, judged with the joined cell's centre at
-// the two centres' mean by volume; no join where none drops them. A cell whose faces'
-// verdicts a join has changed waits for the next round (build, then call again). `grain`
-// is per cell; `centre` and `volume` are foam_cell_geometry's.
+// lowest old number), or empty when no join helps. For each failing face of `failures`
+// (FoamMeshCheck's on this mesh), its smaller cell is joined with one or all of its
+// neighbours of its grain (across internal faces, never a cyclic one), and the other cell
+// likewise or not at all, whichever most reduces the failures on the cells' faces; of
+// their phase where nothing inside the grains helps; a failing cell is joined the same
+// way. The joins are judged on this mesh, one after another: a joined cell's volume is
+// its parts' sum and its centre their mean by volume, its faces theirs but those between
+// them; the faces of a new cell that fail go back on the list. The builder builds again
+// and calls again (the rebuilt faces bend a little differently). `grain` and `phase` are
+// per cell; `centre` and `volume` foam_cell_geometry's.
 std::vector<int> joined_cells(const PolyMesh& pm, const std::vector<int>& grain, const std::vector<int>& phase,
-                              const std::vector<Vec3>& centre, const std::vector<double>& volume);
+                              const std::vector<Vec3>& centre, const std::vector<double>& volume,
+                              const FoamCheckFailures& failures);
 
 }  // namespace grainmesh

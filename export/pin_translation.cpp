@@ -42,12 +42,6 @@ Vec3 pinned_point(const PolyMesh& pm, int f) {
   return centre + dot(face.centre - centre, n) * n;
 }
 
-int find_patch(const PolyMesh& pm, const std::string& name) {
-  for (std::size_t p = 0; p < pm.patches.size(); ++p)
-    if (pm.patches[p].name == name) return static_cast<int>(p);
-  return -1;
-}
-
 // Moves face `from` to position `to` (from < to, both in one patch): the faces between
 // move down by one. The owner list and the points' list follow.
 void move_face_to(PolyMesh& pm, int from, int to) {
@@ -76,7 +70,7 @@ std::string pin_patch_of(const std::string& side) {
 }
 
 void pin_translation(PolyMesh& pm, const std::vector<int>& phase, Vec3 origin) {
-  const int left = find_patch(pm, "left"), right = find_patch(pm, "right");
+  const int left = patch_index(pm, "left"), right = patch_index(pm, "right");
   if (left < 0 || right < 0 || pm.patches[left].type != "cyclic" || pm.patches[left].size < 2) return;
   const int size = pm.patches[left].size;
   // Cells with a neighbour of another phase, across internal and cyclic faces.
@@ -87,7 +81,7 @@ void pin_translation(PolyMesh& pm, const std::vector<int>& phase, Vec3 origin) {
   for (int f = 0; f < pm.internal_faces(); ++f) mark(pm.owner[f], pm.neighbour[f]);
   for (const PolyMesh::Patch& p : pm.patches) {
     if (p.type != "cyclic") continue;
-    const PolyMesh::Patch& other = pm.patches[find_patch(pm, p.neighbour_patch)];
+    const PolyMesh::Patch& other = pm.patches[patch_index(pm, p.neighbour_patch)];
     for (int k = 0; k < p.size; ++k) mark(pm.owner[p.start + k], pm.owner[other.start + k]);
   }
   // From the middle of the side outwards: the first pair inside one phase, of two cells.

@@ -38,4 +38,10 @@ void add_zones(const std::vector<int>& grain, const std::vector<int>& phase, con
   pm.face_zones.push_back(std::move(interfaces));
 }
 
+int patch_index(const PolyMesh& pm, const std::string& name) {
+  for (std::size_t p = 0; p < pm.patches.size(); ++p)
+    if (pm.patches[p].name == name) return static_cast<int>(p);
+  return -1;
+}
+
 }  // namespace grainmesh

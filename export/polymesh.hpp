@@ -44,6 +44,9 @@ struct PolyMesh {
 };
 
 
+// The index of patch `name` in pm.patches; -1 when there is none.
+int patch_index(const PolyMesh& pm, const std::string& name);
+
 // The zones of a built polyMesh (cells in its order, internal faces counted): a cellZone
 // per phase (every cell in exactly one), one per grain when `grain_zones`; faceZones
 // grainBoundaries and phaseInterfaces, a face's flip set where it points from the higher

@@ -490,7 +490,7 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
       fold = std::move(more);
       continue;
     }
-    std::vector<int> number = joined_cells(out.mesh, out.grain, out.phase, out.centre, out.volume);
+    std::vector<int> number = joined_cells(out.mesh, out.grain, out.phase, out.centre, out.volume, failing);
     if (number.empty()) return out;
     join(number, out, cells);
   }

@@ -33,21 +33,11 @@ double angle_deg(Vec2 p, Vec2 q, Vec2 r) {
   return std::atan2(std::abs(cross(u, v)), dot(u, v)) * kDeg;
 }
 
-// checkMesh's skewness of the extruded face of edge (a, b): the distance from the face
-// centre to where the line between cell centres pierces the face plane, normalised by
-// the larger of 0.2 |d| and the face's extent in that direction. Extrusion adds nothing
-// out of plane: all centres sit at mid-height.
+// checkMesh's skewness of the extruded face of edge (a, b); extrusion adds nothing out of
+// plane: all centres sit at mid-height.
 double face_skewness(Vec2 a, Vec2 b, Vec2 owner, Vec2 d) {
   const Vec2 mid = 0.5 * (a + b);
-  const Vec2 area = perp(b - a);  // any multiple of the face normal will do
-  const Vec2 cpf = mid - owner;
-  const double denom = dot(area, d);
-  const Vec2 sv = cpf - (dot(area, cpf) / (denom == 0.0 ? 1e-300 : denom)) * d;
-  const double sv_len = norm(sv);
-  if (sv_len == 0.0) return 0.0;
-  const Vec2 sv_hat = sv / sv_len;
-  const double extent = std::max(0.2 * norm(d), std::abs(dot(sv_hat, a - mid)));
-  return sv_len / extent;
+  return checkmesh_skewness(mid, perp(b - a), owner, d, [&](Vec2 u) { return std::abs(dot(u, a - mid)); });
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // thick (prisms), so a mesh can be judged before it is exported.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -13,6 +14,22 @@ namespace grainmesh {
 
 // Radius ratio q = 2 r_in / r_circ: 1 for an equilateral triangle, 0 for a degenerate one.
 double radius_ratio(Vec2 a, Vec2 b, Vec2 c);
+
+// checkMesh's skewness of a face, 2D (an extruded edge) or 3D alike: with its centre and
+// area vector (any multiple of its normal will do), the owner's centre and d towards the
+// neighbour's (on a boundary: the normal part of owner -> face centre), the distance from
+// the face centre to where the line from the owner along d pierces the face's plane, over
+// the larger of 0.2 |d| and the face's extent that way: extent(u) is its corners' largest
+// |u . (corner - centre)| for the unit vector u.
+template <class V, class Extent>
+double checkmesh_skewness(V centre, V area, V owner, V d, Extent&& extent) {
+  const V cpf = centre - owner;
+  const double across = dot(area, d);
+  const V sv = cpf - (dot(area, cpf) / (across == 0.0 ? 1e-300 : across)) * d;
+  const double length = norm(sv);
+  if (length == 0.0) return 0.0;
+  return length / std::max(0.2 * norm(d), extent(sv / length));
+}
 
 // q of every triangle (#T).
 std::vector<double> triangle_quality(const TriMesh& mesh);
