@@ -8,6 +8,7 @@
 #include <Eigen/Sparse>
 
 #include <memory>
+#include <mutex>
 
 #include "analysis/fe_homogenise.hpp"
 #include "analysis/fe_nodes.hpp"
@@ -43,19 +44,25 @@ class CoarseLevel {
   // The level solved, each load's residual to `tolerance` of its norm; factorised after
   // all when `max_iterations` cycles do not reach it.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& f, double tolerance, int max_iterations);
-  // The fine level's coarse correction: the factor's solve, or one cycle.
+  // The fine level's coarse correction: the factor's solve, or one cycle. Safe to call
+  // side by side (the fine level's groups of loads): only the factor's solve, which
+  // CHOLMOD's workspace makes unsafe, is taken one call at a time, not the cycle's sweeps.
   Eigen::MatrixXd cycle(const Eigen::MatrixXd& r) const;
   // The conjugate gradients' cycles of the last solve (0: factorised).
   int iterations() const { return iterations_; }
 
  private:
-  Eigen::MatrixXd factor_solve(const Eigen::MatrixXd& r) const { return factor_->solve(r); }
+  Eigen::MatrixXd factor_solve(const Eigen::MatrixXd& r) const {
+    const std::lock_guard<std::mutex> hold(factor_lock_);
+    return factor_->solve(r);
+  }
   bool cycled() const { return linear_.size() != 0; }  // solved by cycles, not by its own factor
 
   const Eigen::SparseMatrix<double>& k_;
   int loads_;
   FeOptions options_;
   std::unique_ptr<Factor> factor_;      // the level's own, or its linear elements'
+  mutable std::mutex factor_lock_;      // its solve, one call at a time
   Eigen::SparseMatrix<double> linear_;  // the prolongation from the linear elements; empty: `factor_` is the level's own
   int iterations_ = 0;
   double fine_ = 0.0;  // bytes the fine level holds beside this one

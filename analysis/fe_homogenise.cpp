@@ -199,12 +199,14 @@ struct Problem {
 };
 
 // The stiffness matrix's lower triangle with its pattern made first, from the node graph
-// (each node pair's D x D block, the diagonal blocks' lower half), its entries zero.
+// `graph` (each node pair's D x D block, the diagonal blocks' lower half), its entries
+// zero. Column (j, d) holds node j's rows d .. D - 1, then D rows for each node of the
+// graph's column j after j, in its order: entry (i, c) of it lies D e - d + c past the
+// column's start, e the rank of node i in the graph's column (node_rank).
 template <int D>
-Eigen::SparseMatrix<double> stiffness_pattern(const Problem<D>& p) {
-  const NodeGraph graph = node_graph(p.nodes);
+void stiffness_pattern(const Problem<D>& p, const NodeGraph& graph, Eigen::SparseMatrix<double>& k) {
   const auto n = static_cast<Eigen::Index>(p.nodes.unknowns);
-  Eigen::SparseMatrix<double> k(n, n);
+  k.resize(n, n);
   k.resizeNonZeros(static_cast<Eigen::Index>(D * D * graph.inner.size()));  // an upper bound, trimmed below
   int* outer = k.outerIndexPtr();
   int* inner = k.innerIndexPtr();
@@ -220,42 +222,62 @@ Eigen::SparseMatrix<double> stiffness_pattern(const Problem<D>& p) {
   outer[n] = next;
   k.resizeNonZeros(next);
   std::fill(k.valuePtr(), k.valuePtr() + next, 0.0);
-  return k;
 }
 
-// The stiffness matrix (its lower triangle) and each load's right-hand side: each
-// element's entries added in place into the pattern.
+// The rank of node i in the graph's column j (i >= j, the two sharing an element): entry
+// (D i + c, D j + d) of the stiffness pattern lies at D rank - d + c past column D j + d's
+// start (stiffness_pattern). One search per pair of an element's nodes, not one per entry.
+int node_rank(const NodeGraph& graph, int i, int j) {
+  const int* begin = graph.inner.data() + graph.outer[static_cast<std::size_t>(j)];
+  const int* end = graph.inner.data() + graph.outer[static_cast<std::size_t>(j) + 1];
+  return static_cast<int>(std::lower_bound(begin, end, i) - begin);
+}
+
+// The stiffness matrix `k` (its lower triangle) and each load's right-hand side `f`: each
+// element's entries added in place into the pattern. Made in the caller's matrix: Eigen
+// 3.4's sparse matrices have no move, and a copy of the 1,000-grain 3D cell's fine level
+// (2.3 GB) took seconds.
 template <int D>
-std::pair<Eigen::SparseMatrix<double>, Eigen::MatrixXd> assemble(const Problem<D>& p) {
+void assemble(const Problem<D>& p, Eigen::SparseMatrix<double>& k, Eigen::MatrixXd& f) {
   constexpr int kDofs = Problem<D>::kDofs;
-  Eigen::SparseMatrix<double> k = stiffness_pattern(p);
+  constexpr int kNodes = Simplex<D>::kNodes;
+  const NodeGraph graph = node_graph(p.nodes);
+  stiffness_pattern(p, graph, k);
   const int* outer = k.outerIndexPtr();
-  const int* inner = k.innerIndexPtr();
   double* value = k.valuePtr();
-  Eigen::MatrixXd f = Eigen::MatrixXd::Zero(k.rows(), p.loads);
+  f.setZero(k.rows(), p.loads);
+  Eigen::Matrix<double, kDofs, Eigen::Dynamic> fe(kDofs, p.loads);
   for (std::size_t c = 0; c < element_count(p.m); ++c) {
     const ElementGeometry<D> g = element_geometry(p.m, c, p.q);
     const int phase = p.m.phase[c];
     Eigen::Matrix<double, kDofs, kDofs> ke = Eigen::Matrix<double, kDofs, kDofs>::Zero();
-    Eigen::Matrix<double, kDofs, Eigen::Dynamic> fe = Eigen::Matrix<double, kDofs, Eigen::Dynamic>::Zero(kDofs, p.loads);
+    fe.setZero();
     for (std::size_t i = 0; i < p.q.weights.size(); ++i) {
       const Eigen::Matrix<double, kDofs, static_cast<int>(Problem<D>::N)> btc =
           p.q.weights[i] * g.measure * g.b[i].transpose() * p.mat.stiffness[static_cast<std::size_t>(phase)];
       ke.noalias() += btc * g.b[i];
       for (int j = 0; j < p.loads; ++j) fe.col(j).noalias() -= btc * p.imposed(phase, j);
     }
-    std::array<int, kDofs> dofs;
-    for (int a = 0; a < kDofs; ++a) dofs[static_cast<std::size_t>(a)] = p.dof(c, a);
-    for (int a = 0; a < kDofs; ++a) {
-      const int r = dofs[static_cast<std::size_t>(a)];
-      if (r < 0) continue;
-      f.row(r) += fe.row(a);
-      for (int b = 0; b < kDofs; ++b)
-        if (const int s = dofs[static_cast<std::size_t>(b)]; s >= 0 && s <= r)
-          value[std::lower_bound(inner + outer[s], inner + outer[s + 1], r) - inner] += ke(a, b);
+    std::array<int, kNodes> node;  // each local node's unknown node (first / D), -1 held
+    for (int a = 0; a < kNodes; ++a) {
+      const int first = p.nodes.first[static_cast<std::size_t>(p.nodes.element[c][static_cast<std::size_t>(a)])];
+      node[static_cast<std::size_t>(a)] = first < 0 ? -1 : first / D;
+    }
+    for (int a = 0; a < kNodes; ++a) {
+      const int i = node[static_cast<std::size_t>(a)];
+      if (i < 0) continue;
+      for (int ci = 0; ci < D; ++ci) f.row(D * i + ci) += fe.row(D * a + ci);
+      for (int b = 0; b < kNodes; ++b) {
+        const int j = node[static_cast<std::size_t>(b)];
+        if (j < 0 || j > i) continue;
+        const int rank = node_rank(graph, i, j);
+        for (int cj = 0; cj < D; ++cj) {
+          double* column = value + outer[D * j + cj] + D * rank - cj;
+          for (int ci = i == j ? cj : 0; ci < D; ++ci) column[ci] += ke(D * a + ci, D * b + cj);
+        }
+      }
     }
   }
-  return {std::move(k), std::move(f)};
 }
 
 // Each load's volume-averaged stress (a column each) from the solved fluctuations `u`.
@@ -313,7 +335,9 @@ template <int D>
 FeHomogenised<voigt_size(D)> homogenise(const ExportMesh<D>& m, bool plane_stress, bool thermal, const FeOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const Problem<D> p(m, plane_stress, thermal);
-  const auto [k, f] = assemble(p);
+  Eigen::SparseMatrix<double> k;
+  Eigen::MatrixXd f;
+  assemble(p, k, f);
   const Eigen::MatrixXd u = factorise(k, p, o)->solve(f);
   FeHomogenised<voigt_size(D)> out = effective(p, u, thermal);
   out.seconds = seconds_since(start);
@@ -386,11 +410,11 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   const Problem<D> pc(coarse, plane_stress, thermal);
   Eigen::SparseMatrix<double> kc;
   Eigen::MatrixXd fc;
-  std::tie(kc, fc) = assemble(pc);
+  assemble(pc, kc, fc);
   const int threads = two_grid_threads > 0 ? two_grid_threads.load() : cores();
   // The coarse level solved (factorised, or by its cycles: CoarseLevel) beside the fine
   // level's assembly, which needs only the coarse level's nodes (the 1,000-grain 2D cell:
-  // 0.7 s each; the 3D one about 18 s each); each on one thread.
+  // 0.7 s each; the 3D one 14 s and 8 s); each on one thread.
   std::optional<BlasThreads> one_blas_thread(std::in_place, 1);
   std::optional<CoarseLevel> level;
   Eigen::MatrixXd uc;
@@ -407,7 +431,7 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
       coarse_done = std::chrono::steady_clock::now();
     } else {
       pf.emplace(fine, pc);
-      std::tie(kf, ff) = assemble(*pf);
+      assemble(*pf, kf, ff);
       pr = prolongation(pc, *pf);
     }
   });

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <mutex>
 #include <numeric>
 #include <vector>
 
@@ -215,18 +214,13 @@ TwoGridSolve two_grid_solve(const Eigen::SparseMatrix<double>& k_lower, const Ei
   // the bit on one thread or many (each group stops when all of its loads are there).
   const int groups = std::max({1, std::min(kGroups, columns), (columns + kMaxColumns - 1) / kMaxColumns});
   std::vector<TwoGridSolve> solved(static_cast<std::size_t>(groups));
-  std::mutex coarse_lock;  // the coarse factor's solve is not safe to call side by side
-  const CoarseSolve locked = [&](const Eigen::MatrixXd& r) {
-    const std::lock_guard<std::mutex> hold(coarse_lock);
-    return coarse_solve(r);
-  };
   std::vector<int> order(static_cast<std::size_t>(groups));
   std::iota(order.begin(), order.end(), 0);
   auto first = [&](int g) { return g * columns / groups; };
   side_by_side(order, std::min(threads, groups), [&](int g) {
     const int begin = first(g), width = first(g + 1) - begin;
     solved[static_cast<std::size_t>(g)] =
-        solve_group(width, k, f.middleCols(begin, width), prolongation, groups > 1 ? locked : coarse_solve,
+        solve_group(width, k, f.middleCols(begin, width), prolongation, coarse_solve,
                     u0.middleCols(begin, width), tolerance, max_iterations);
   });
   TwoGridSolve out;

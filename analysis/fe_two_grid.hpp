@@ -20,7 +20,8 @@ struct TwoGridSolve {
   bool converged = false;  // every column's residual within the tolerance of its load's norm
 };
 
-// Applies the coarse matrix's inverse to columns; called by one thread at a time.
+// Applies the coarse matrix's inverse to columns; called side by side by the groups of
+// loads (two_grid_solve), so it must be safe to.
 using CoarseSolve = std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>;
 
 // Solves K u = f, K symmetric positive definite given by its lower triangle `k_lower`
