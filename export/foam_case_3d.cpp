@@ -23,7 +23,7 @@ void check_case_3d(const ExportMesh<3>& m, const FoamOptions& o) {
 
 FoamMesh3 foam_mesh(const ExportMesh<3>& m, const FoamOptions& o) {
   if (o.cells == FoamOptions::Cells::polygons) return build_dual_polymesh_3d(m, o);
-  FoamMesh3 out{.mesh = build_polymesh(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}};
+  FoamMesh3 out{.mesh = build_polymesh(m, o), .grain = m.grain, .phase = m.phase, .centre = {}, .volume = {}, .corner_cell = {}, .mending = {}};
   // A tetrahedron's own: OpenFOAM's pyramids give its centroid and volume.
   for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) out.corner_cell.insert(out.corner_cell.end(), 4, static_cast<int>(t));
   for (const std::array<int, 4>& v : m.mesh.tets) {

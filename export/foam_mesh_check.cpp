@@ -51,7 +51,7 @@ bool FoamMeshCheck::fails(int f, Vec3 owner, Vec3 across) const {
   const FoamFace face = foam_face(pm_, f);
   if (other(f) < 0) {
     const Vec3 n = face.area / norm(face.area);
-    return skewness(pm_, f, face, owner, dot(n, face.centre - owner) * n) > limits_.boundary_skewness;
+    return skewness(pm_, f, face, owner, dot(n, face.centre - owner) * n) > limits_.skewness;
   }
   const Vec3 d = across - owner;
   const double cosine = dot(d, face.area) / (norm(d) * norm(face.area));

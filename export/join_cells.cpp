@@ -241,4 +241,18 @@ std::vector<int> joined_cells(const PolyMesh& pm, const std::vector<int>& grain,
   return number;
 }
 
+void join_cells(const std::vector<int>& number, const FoamMesh3& built, FoamMesh3& cells) {
+  const int count = *std::max_element(number.begin(), number.end()) + 1;
+  cells.grain.assign(static_cast<std::size_t>(count), 0);
+  cells.phase.assign(static_cast<std::size_t>(count), 0);
+  std::vector<double> largest(static_cast<std::size_t>(count), -1.0);
+  for (std::size_t c = 0; c < number.size(); ++c)
+    if (built.volume[c] > largest[number[c]]) {
+      largest[number[c]] = built.volume[c];
+      cells.grain[number[c]] = built.grain[c];
+      cells.phase[number[c]] = built.phase[c];
+    }
+  for (int& c : cells.corner_cell) c = number[c];
+}
+
 }  // namespace grainmesh

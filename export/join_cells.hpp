@@ -8,6 +8,7 @@
 #include "common/vec3.hpp"
 #include "export/foam_mesh_check.hpp"
 #include "export/polymesh.hpp"
+#include "export/polymesh_3d.hpp"
 
 namespace grainmesh {
 
@@ -25,5 +26,10 @@ namespace grainmesh {
 std::vector<int> joined_cells(const PolyMesh& pm, const std::vector<int>& grain, const std::vector<int>& phase,
                               const std::vector<Vec3>& centre, const std::vector<double>& volume,
                               const FoamCheckFailures& failures);
+
+// The 3D dual's cells before a build (`cells`: grain, phase, corner_cell) joined as
+// `number` (joined_cells's on the built dual `built`) has them: a cell joined across
+// grains of one phase takes its largest part's grain.
+void join_cells(const std::vector<int>& number, const FoamMesh3& built, FoamMesh3& cells);
 
 }  // namespace grainmesh

@@ -19,12 +19,23 @@ inline constexpr const char* kSideNames3[6] = {"left", "right", "bottom", "top",
 // The cells a 3D case is solved on, as OpenFOAM sees them: the polyMesh, each cell's grain
 // and phase, and its centre and volume as OpenFOAM computes them from its faces
 // (foam_cell_geometry).
+// What the 3D dual's export mended where checkMesh would fail (FoamOptions::mend_checks),
+// and what its own check of checkMesh's limits (foam_mesh_check.hpp) still finds failing.
+struct DualMending {
+  bool checked = false;   // mended and checked (the dual under mend_checks); else all zero
+  int folded_points = 0;  // points whose faces between their own cells were folded into one
+  int joined_cells = 0;   // cells joined into a neighbour of their grain or phase
+  int failing_faces = 0;  // left failing: skewness, non-orthogonality
+  int failing_cells = 0;  // left failing: volume, aspect ratio
+};
+
 struct FoamMesh3 {
   PolyMesh mesh;
   std::vector<int> grain, phase;  // per cell
   std::vector<Vec3> centre;       // mesh units
   std::vector<double> volume;     // mesh units cubed
   std::vector<int> corner_cell;   // #4T: the cell holding each tetrahedron's corner k (at 4 t + k)
+  DualMending mending;            // the dual's (build_dual_polymesh_3d); tetrahedra: unchecked
 };
 
 // The side of `box` all three points of `f` lie on (0 left, 1 right, 2 bottom, 3 top,

@@ -447,22 +447,6 @@ std::vector<char> points_to_fold(const ExportMesh<3>& m, const FoamMesh3& built,
   return fold;
 }
 
-// `cells` with its cells joined as `number` has them (a cell joined across grains of one
-// phase takes its largest part's grain).
-void join(const std::vector<int>& number, const FoamMesh3& built, FoamMesh3& cells) {
-  const int count = *std::max_element(number.begin(), number.end()) + 1;
-  cells.grain.assign(static_cast<std::size_t>(count), 0);
-  cells.phase.assign(static_cast<std::size_t>(count), 0);
-  std::vector<double> largest(static_cast<std::size_t>(count), -1.0);
-  for (std::size_t c = 0; c < number.size(); ++c)
-    if (built.volume[c] > largest[number[c]]) {
-      largest[number[c]] = built.volume[c];
-      cells.grain[number[c]] = built.grain[c];
-      cells.phase[number[c]] = built.phase[c];
-    }
-  for (int& c : cells.corner_cell) c = number[c];
-}
-
 // At most this many builds after the first, each with more faces folded or cells joined.
 constexpr int kMendRounds = 4;
 
@@ -479,20 +463,30 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   // between its cells folded; where it would still fail a face or a cell, cells joined
   // (join_cells.hpp); each time the dual built again.
   std::vector<char> fold(m.mesh.points.size(), 0);
+  const auto plain_cells = static_cast<int>(cells.grain.size());
+  // The mended dual with what was mended and what still fails.
+  auto mended = [&](FoamMesh3 out, const FoamCheckFailures& failing) {
+    out.mending = {.checked = true,
+                   .folded_points = static_cast<int>(std::count(fold.begin(), fold.end(), 1)),
+                   .joined_cells = plain_cells - out.mesh.cells,
+                   .failing_faces = static_cast<int>(failing.faces.size()),
+                   .failing_cells = static_cast<int>(failing.cells.size())};
+    return out;
+  };
   for (int round = 0;; ++round) {
-    FoamMesh3 out{.mesh = {}, .grain = cells.grain, .phase = cells.phase, .centre = {}, .volume = {}, .corner_cell = cells.corner_cell};
+    FoamMesh3 out{.mesh = {}, .grain = cells.grain, .phase = cells.phase, .centre = {}, .volume = {}, .corner_cell = cells.corner_cell, .mending = {}};
     assemble(m, nodes, splits, fold, weight, o, out);
-    if (round == kMendRounds || !o.mend_checks) return out;
+    if (!o.mend_checks) return out;
     const FoamCheckFailures failing = FoamMeshCheck(out.mesh, out.centre, out.volume).failures();
-    if (failing.empty()) return out;
+    if (failing.empty() || round == kMendRounds) return mended(std::move(out), failing);
     std::vector<char> more = points_to_fold(m, out, failing, fold);
     if (more != fold) {
       fold = std::move(more);
       continue;
     }
     std::vector<int> number = joined_cells(out.mesh, out.grain, out.phase, out.centre, out.volume, failing);
-    if (number.empty()) return out;
-    join(number, out, cells);
+    if (number.empty()) return mended(std::move(out), failing);
+    join_cells(number, out, cells);
   }
 }
 

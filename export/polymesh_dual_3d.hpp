@@ -30,8 +30,9 @@ namespace grainmesh {
 // close round it, as at a grain's tip poking into the binder: its cone then changes sides,
 // so the grains' volumes move a little there, 6e-5 of the binder's on the binder example);
 // cells whose faces still fail are joined with neighbours of their grain, or of their
-// phase (join_cells.hpp); at most four builds after the first. What cannot be mended so is
-// left for checkMesh to report. Throws as build_polymesh, and GeometryError where the
+// phase (join_cells.hpp); at most four builds after the first. What was mended, and what
+// still fails (left for checkMesh to report as well), in the result's `mending`. Throws as
+// build_polymesh, and GeometryError where the
 // dual's faces would not be simple (a grain boundary not manifold at a point).
 FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& options);
 

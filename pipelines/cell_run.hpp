@@ -35,8 +35,9 @@ class CellRun {
   // report.json's fields on them (dimensions, the cell, statistics, mesh).
   virtual Json write_geometry(const std::filesystem::path& dir, Warnings& warnings) = 0;
   // Exports the mesh and writes the cases into `dir`: the mixed load's case/ or the
-  // periodic load cases' case_NAME/. Returns their directory names.
-  virtual std::vector<std::string> write_cases(const std::filesystem::path& dir) = 0;
+  // periodic load cases' case_NAME/. Returns their directory names; what is doubtful about
+  // the cases' mesh into `warnings`.
+  virtual std::vector<std::string> write_cases(const std::filesystem::path& dir, Warnings& warnings) = 0;
   // report.json's fields on the cases once written (case_format, case_cells, ...).
   virtual Json case_fields() const = 0;
   // The cells the cases are solved on (a convergence study's measure of refinement).

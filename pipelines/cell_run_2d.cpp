@@ -52,7 +52,7 @@ class PlaneCellRun final : public CellRun {
     return fields;
   }
 
-  std::vector<std::string> write_cases(const std::filesystem::path& dir) override {
+  std::vector<std::string> write_cases(const std::filesystem::path& dir, Warnings& /*warnings*/) override {
     if (plan_.refine == 0) {
       e_ = export_mesh(*t_, *m_, foam_.cells);
     } else {

@@ -127,7 +127,7 @@ RunResult run_cell(CellRun& cell, const RunPlan& plan, const Deadline& deadline,
 
   log.begin();
   stage.show("exporting");
-  const std::vector<std::string> case_dirs = cell.write_cases(dir);
+  const std::vector<std::string> case_dirs = cell.write_cases(dir, warnings);
   log.time("export");
   log.end("export");
   write_text_file(dir / "config.ini", plan.resolved_ini);
