@@ -12,8 +12,6 @@ namespace grainmesh {
 
 namespace {
 
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
-
 // checkMesh's skewness of face f (mesh/quality.hpp).
 double skewness(const PolyMesh& pm, int f, const FoamFace& face, Vec3 owner, Vec3 d) {
   return checkmesh_skewness(face.centre, face.area, owner, d, [&](Vec3 u) {
@@ -49,13 +47,10 @@ int FoamMeshCheck::other(int f) const {
 
 bool FoamMeshCheck::fails(int f, Vec3 owner, Vec3 across) const {
   const FoamFace face = foam_face(pm_, f);
-  if (other(f) < 0) {
-    const Vec3 n = face.area / norm(face.area);
-    return skewness(pm_, f, face, owner, dot(n, face.centre - owner) * n) > limits_.skewness;
-  }
+  if (other(f) < 0)
+    return skewness(pm_, f, face, owner, checkmesh_boundary_d(face.centre, face.area, owner)) > limits_.skewness;
   const Vec3 d = across - owner;
-  const double cosine = dot(d, face.area) / (norm(d) * norm(face.area));
-  return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDeg > limits_.non_orthogonality_deg ||
+  return checkmesh_non_orthogonality_deg(d, face.area) > limits_.non_orthogonality_deg ||
          skewness(pm_, f, face, owner, d) > limits_.skewness;
 }
 

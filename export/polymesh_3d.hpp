@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -22,7 +23,6 @@ inline constexpr const char* kSideNames3[6] = {"left", "right", "bottom", "top",
 // What the 3D dual's export mended where checkMesh would fail (FoamOptions::mend_checks),
 // and what its own check of checkMesh's limits (foam_mesh_check.hpp) still finds failing.
 struct DualMending {
-  bool checked = false;   // mended and checked (the dual under mend_checks); else all zero
   int folded_points = 0;  // points whose faces between their own cells were folded into one
   int joined_cells = 0;   // cells joined into a neighbour of their grain or phase
   int failing_faces = 0;  // left failing: skewness, non-orthogonality
@@ -35,7 +35,7 @@ struct FoamMesh3 {
   std::vector<Vec3> centre;       // mesh units
   std::vector<double> volume;     // mesh units cubed
   std::vector<int> corner_cell;   // #4T: the cell holding each tetrahedron's corner k (at 4 t + k)
-  DualMending mending;            // the dual's (build_dual_polymesh_3d); tetrahedra: unchecked
+  std::optional<DualMending> mending;  // the dual's under mend_checks; none for tetrahedra
 };
 
 // The side of `box` all three points of `f` lie on (0 left, 1 right, 2 bottom, 3 top,

@@ -466,11 +466,10 @@ FoamMesh3 build_dual_polymesh_3d(const ExportMesh<3>& m, const FoamOptions& o) {
   const auto plain_cells = static_cast<int>(cells.grain.size());
   // The mended dual with what was mended and what still fails.
   auto mended = [&](FoamMesh3 out, const FoamCheckFailures& failing) {
-    out.mending = {.checked = true,
-                   .folded_points = static_cast<int>(std::count(fold.begin(), fold.end(), 1)),
-                   .joined_cells = plain_cells - out.mesh.cells,
-                   .failing_faces = static_cast<int>(failing.faces.size()),
-                   .failing_cells = static_cast<int>(failing.cells.size())};
+    out.mending = DualMending{.folded_points = static_cast<int>(std::count(fold.begin(), fold.end(), 1)),
+                              .joined_cells = plain_cells - out.mesh.cells,
+                              .failing_faces = static_cast<int>(failing.faces.size()),
+                              .failing_cells = static_cast<int>(failing.cells.size())};
     return out;
   };
   for (int round = 0;; ++round) {

@@ -79,16 +79,13 @@ MeshQuality measure_quality(const TriMesh& mesh) {
     const Vec2 outward = -perp(b - a);  // right of a -> b: out of the left triangle
     if (e.right >= 0) {
       const Vec2 d = centroid[e.right] - owner;
-      const double c = std::clamp(dot(d, outward) / (norm(d) * norm(outward)), -1.0, 1.0);
-      const double angle = std::acos(c) * kDeg;
+      const double angle = checkmesh_non_orthogonality_deg(d, outward);
       m.max_non_orthogonality_deg = std::max(m.max_non_orthogonality_deg, angle);
       sum_non_orth += angle;
       ++internal;
       m.max_skewness = std::max(m.max_skewness, face_skewness(a, b, owner, d));
     } else {
-      // Boundary face: d is the normal component of owner -> face centre.
-      const Vec2 n = outward / norm(outward);
-      const Vec2 d = dot(n, 0.5 * (a + b) - owner) * n;
+      const Vec2 d = checkmesh_boundary_d(0.5 * (a + b), outward, owner);
       m.max_skewness = std::max(m.max_skewness, face_skewness(a, b, owner, d));
     }
   }

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <vector>
 
 #include "common/geometry.hpp"
@@ -29,6 +31,21 @@ double checkmesh_skewness(V centre, V area, V owner, V d, Extent&& extent) {
   const double length = norm(sv);
   if (length == 0.0) return 0.0;
   return length / std::max(0.2 * norm(d), extent(sv / length));
+}
+
+// checkMesh's non-orthogonality of an internal (or coupled) face, 2D or 3D alike: the angle
+// in degrees between d, owner -> neighbour centre, and the face's area vector.
+template <class V>
+double checkmesh_non_orthogonality_deg(V d, V area) {
+  const double cosine = std::clamp(dot(d, area) / (norm(d) * norm(area)), -1.0, 1.0);
+  return std::acos(cosine) * (180.0 / std::numbers::pi);
+}
+
+// checkMesh's d on a boundary face, for its skewness: the normal part of owner -> centre.
+template <class V>
+V checkmesh_boundary_d(V centre, V area, V owner) {
+  const V n = area / norm(area);
+  return dot(n, centre - owner) * n;
 }
 
 // q of every triangle (#T).

@@ -51,8 +51,8 @@ class SolidCellRun final : public CellRun {
       mesh_files_ = write_element_files(dir, element_mesh(*e_), plan_.formats, {.length_unit = unit_});
     foam_.binary = binary_case(plan_, e_->mesh.tets.size());
     std::vector<std::string> names = write_run_cases(dir, *e_, foam_, plan_.boundary, fm_);
-    if (const DualMending& d = fm_.mending; d.failing_faces > 0 || d.failing_cells > 0)
-      warnings.add("export: " + std::to_string(d.failing_faces) + " faces and " + std::to_string(d.failing_cells) +
+    if (const auto& d = fm_.mending; d && (d->failing_faces > 0 || d->failing_cells > 0))
+      warnings.add("export: " + std::to_string(d->failing_faces) + " faces and " + std::to_string(d->failing_cells) +
                    " cells of the dual polyhedra still fail checkMesh's limits after mending (skewness 4, "
                    "non-orthogonality 90 degrees; case_cells.dual_mending): OpenFOAM's answer is less accurate "
                    "there, the finite elements' (on the tetrahedra) not; export.cells = tetrahedra avoids it");
@@ -65,11 +65,11 @@ class SolidCellRun final : public CellRun {
                  {{"shape", foam_.cells == FoamOptions::Cells::polygons ? "polyhedra" : "tetrahedra"},
                   {"cells", fm_.mesh.cells},
                   {"faces", fm_.mesh.faces()}}}};
-    if (const DualMending& d = fm_.mending; d.checked)
-      fields["case_cells"]["dual_mending"] = {{"folded_points", d.folded_points},
-                                              {"joined_cells", d.joined_cells},
-                                              {"failing_faces", d.failing_faces},
-                                              {"failing_cells", d.failing_cells}};
+    if (const auto& d = fm_.mending)
+      fields["case_cells"]["dual_mending"] = {{"folded_points", d->folded_points},
+                                              {"joined_cells", d->joined_cells},
+                                              {"failing_faces", d->failing_faces},
+                                              {"failing_cells", d->failing_cells}};
     if (plan_.refine > 0) fields["refine"] = plan_.refine;
     if (!mesh_files_.empty()) fields["mesh_files"] = mesh_files_;
     return fields;
