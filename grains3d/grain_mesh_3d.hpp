@@ -1,6 +1,6 @@
 // The 3D mesh stage on a tessellation: the surfaces meshed once (surface_mesh.hpp), each
-// region filled with tetrahedra that keep its surface triangles exactly (TetGen, run as a
-// program: Debian ships it without a library), the pieces assembled into one conforming
+// region filled with tetrahedra that keep its surface triangles exactly (TetGen's library,
+// each try in a fresh helper process: tetgen_fill.hpp), the pieces assembled into one conforming
 // mesh with a grain and a phase per tetrahedron and, when periodic, paired surface points.
 #pragma once
 

@@ -12,16 +12,27 @@ namespace {
 
 using Tet = std::array<int, 4>;
 
-// What every step compares: the radius ratio, or -1 for a flat or turned tetrahedron.
+// Below this ratio of the sines (an angle under about 16 degrees, or over 164) a
+// tetrahedron counts no better than the ratio: the radius ratio alone passed one at a grain
+// surface's sharp corner with an angle of 8 degrees (its radius ratio about 0.3). Counting
+// the sine on every tetrahedron also cleared those but moved the OpenFOAM answers' errors on
+// the test cells (the contrast-20 laminate's C11 0.96 -> 1.07 %).
+constexpr double kSharpSine = 0.3;
+
+// What every step compares: the radius ratio, or dihedral_sine_ratio where that is below
+// kSharpSine and lower, or -1 for a flat or turned tetrahedron. On the bench cells the
+// 100-grain cell's tetrahedra below 10 degrees went from 18 to 13, the 1,000-grain cell's
+// smallest angle from 4.1 to 4.6 degrees.
 double quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   if (!(tet_volume(a, b, c, d) > 0.0)) return -1.0;
-  return radius_ratio(a, b, c, d);
+  const double ratio = radius_ratio(a, b, c, d), sine = dihedral_sine_ratio(a, b, c, d);
+  return sine < kSharpSine ? std::min(ratio, sine) : ratio;
 }
 
-// A step must raise the smallest radius ratio it touches by this much: no step undoes
+// A step must raise the smallest quality it touches by this much: no step undoes
 // another, so every pass ends.
 constexpr double kGain = 1e-6;
-// Smoothing may trade a star's worst radius ratio for its mean down to this floor.
+// Smoothing may trade a star's worst quality for its mean down to this floor.
 constexpr double kFloor = 0.3;
 // Tetrahedra poorer than this get a point inserted where it helps.
 constexpr double kInsertBelow = 0.35;
@@ -333,7 +344,7 @@ double Improver::star_min(int p, Vec3 at, const std::vector<int>& star) {
 // Each inner point to the best of: where it is, the mean of its neighbours, the
 // volume-weighted mean of its tetrahedra's circumcentres (the optimal Delaunay
 // triangulation's update), and steps up the gradient of its worst tetrahedron's quality.
-// Better is a higher worst radius ratio over its tetrahedra, or a higher mean with the
+// Better is a higher worst quality over its tetrahedra, or a higher mean with the
 // worst kept above min(worst, kFloor).
 int Improver::smooth() {
   const int n = static_cast<int>(points_.size());

@@ -1,7 +1,8 @@
 // Improvement of a region's tetrahedra with its surface kept: topological flips (edge
 // removal, which includes the 3-2 and 4-4 flips, and the 2-3 face flip) and smoothing of
-// the inner points, each step taken only when it raises the smallest radius ratio of the
-// tetrahedra it replaces or moves.
+// the inner points, each step taken only when it raises the smallest quality (the radius
+// ratio, or a sharp dihedral angle's sine: improve_tets.cpp) of the tetrahedra it replaces
+// or moves.
 #pragma once
 
 #include <array>

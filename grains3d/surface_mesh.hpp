@@ -25,7 +25,8 @@ struct SurfaceMesh {
 // A bent face (split into planar pieces by the regularisation) is meshed as one surface
 // whose triangles cross its pieces' diagonals, off them by a little of its bend; a grain's
 // bent faces together move its volume by at most this share of it (those that would move
-// it further are meshed piece by piece). Planar faces are met exactly.
+// it further, and those whose triangles would lay an edge in a side of the box, are meshed
+// piece by piece). Planar faces are met exactly.
 inline constexpr double kBentFaceVolume = 5e-3;
 
 // Triangles of edge length about `h` (the tessellation's unit) on every face: edges cut

@@ -24,6 +24,20 @@ double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return 3.0 * r_in / r_circ;
 }
 
+double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  // Twice the areas of the faces opposite a, b, c and d.
+  const double fa = norm(cross(c - b, d - b)), fb = norm(cross(c - a, d - a)), fc = norm(cross(b - a, d - a)),
+               fd = norm(cross(b - a, c - a));
+  const double six_v = std::abs(dot(d - a, cross(b - a, c - a)));
+  if (!(fa > 0.0 && fb > 0.0 && fc > 0.0 && fd > 0.0)) return 0.0;
+  // Edge ij lies on the two faces opposite the other two corners.
+  const double lowest = std::min({norm(b - a) / (fc * fd), norm(c - a) / (fb * fd), norm(d - a) / (fb * fc),
+                                  norm(c - b) / (fa * fd), norm(d - b) / (fa * fc), norm(d - c) / (fa * fb)});
+  // 3 V |e| / (2 A1 A2) with V = six_v / 6 and A = f / 2: six_v |e| / (f1 f2).
+  constexpr double regular = 2.0 * std::numbers::sqrt2 / 3.0;
+  return six_v * lowest / regular;
+}
+
 std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const std::array<Vec3, 4> p{a, b, c, d};
   constexpr int edge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};

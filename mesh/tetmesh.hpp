@@ -23,6 +23,10 @@ inline Vec3 tet_centroid(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return 0.25 * (a + b 
 double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 // The six dihedral angles (radians), at edges ab, ac, ad, bc, bd, cd.
 std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// The smallest sine of the six, over the regular tetrahedron's (2 sqrt(2) / 3): 1 for the
+// regular tetrahedron, near 0 for one with an angle near 0 or 180 degrees. Without
+// trigonometry: the sine at edge e is 3 V |e| / (2 A1 A2), A1 and A2 the faces meeting there.
+double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 // The regular tetrahedron: its volume from its edge (h^3 / (6 sqrt 2)) and its edge from
 // its volume. How a wanted element size becomes a volume bound, and tetrahedra per grain

@@ -16,8 +16,9 @@ namespace grainmesh {
 
 namespace {
 
-// A collapse may not make a dihedral angle of a region sharper than this.
-constexpr double kMinDihedral = 20.0 * std::numbers::pi / 180.0;
+// The sharpest dihedral angle of a region a collapse may make (20 degrees kept needle faces
+// that made the mesh's sharpest tetrahedra: docs/3d.md), and a bent face's centre fan.
+constexpr double kCollapseMinDihedral = 8.0 * std::numbers::pi / 180.0, kFanMinDihedral = 20.0 * std::numbers::pi / 180.0;
 // Angles equal to this (radians) count as unchanged: a collapse that leaves a region's
 // sharpest angle where it was must not be refused by the rounding of its recomputation.
 constexpr double kAngleRounding = 1e-9;
@@ -334,7 +335,7 @@ class Collapser {
     bool ok = !grain_after.empty();
     for (const auto& [f, ring] : s.rings)
       if (!dead_[f]) ok = ok && face_ok(f) && touches_box_by_its_faces(f);
-    // No region may lose its shape: no dihedral angle sharper than kMinDihedral made (or
+    // No region may lose its shape: no dihedral angle sharper than kCollapseMinDihedral made (or
     // sharper than it was, where it was already).
     // A region flattened (a sliver the box cut off a grain) goes, its opposite faces
     // joined, if its grain keeps another region.
@@ -342,7 +343,7 @@ class Collapser {
     for (int r : regions) {
       if (!ok) break;
       if (flat(r) && removable(r, flattened)) flattened.push_back(r);
-      else ok = region_ok(r) && region_sharpest(r) >= std::min(before[r], kMinDihedral) - kAngleRounding;
+      else ok = region_ok(r) && region_sharpest(r) >= std::min(before[r], kCollapseMinDihedral) - kAngleRounding;
     }
     if (!ok) {
       revert(s);
@@ -427,7 +428,7 @@ class Collapser {
 
   // Bent face f split about a new centre point (centre_fan) rather than by diagonals
   // (`shape`): when the fan's smallest angle is larger and its regions' sharpest dihedral
-  // angles stay at least min(what they were, kMinDihedral). Then the centre is a new
+  // angles stay at least min(what they were, kFanMinDihedral). Then the centre is a new
   // vertex, in fan_centre_.
   bool fan_is_better(int f, const FaceShape& shape) {
     const Face3& face = t_.faces[f];
@@ -437,7 +438,7 @@ class Collapser {
     const double before = sharpest();
     fan_centre_[f] = static_cast<int>(t_.vertices.size());
     t_.vertices.push_back(fan.centre);
-    if (sharpest() >= std::min(before, kMinDihedral) - kAngleRounding) return true;
+    if (sharpest() >= std::min(before, kFanMinDihedral) - kAngleRounding) return true;
     fan_centre_.erase(f);
     t_.vertices.pop_back();
     return false;

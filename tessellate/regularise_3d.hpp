@@ -9,7 +9,7 @@ namespace grainmesh {
 // ends merge at the midpoint. Periodic: or at the end on more sides of the box, which
 // stays where it is; an edge on a side collapses with its periodic images, so partners
 // stay exact. Bounded: the midpoint put on every side either end lies on.
-// A collapse that would fold a face, make a dihedral angle of a region sharper than 20
+// A collapse that would fold a face, make a dihedral angle of a region sharper than 8
 // degrees (or than it was), move more than 5 % of a grain's volume to its neighbours (a
 // laminate's layer the box cut in two), or leave a region open, with fewer than four faces
 // or without volume is not made, except that a region it flattens (a sliver the box cut off a grain)

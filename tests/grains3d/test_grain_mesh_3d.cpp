@@ -10,6 +10,7 @@
 #include "grains3d/conformity_3d.hpp"
 #include "grains3d/grain_mesh_3d.hpp"
 #include "mesh/tetmesh.hpp"
+#include "tessellate/bent_face.hpp"
 #include "tessellate/tessellation_3d.hpp"
 #include "tessellate/tessellate_3d.hpp"
 
@@ -31,6 +32,26 @@ Tessellation3 cell(int grains, bool periodic, std::uint64_t seed, int lloyd = 3,
   if (grains == 1) o.phases = {phase("WC", 1.0)};
   Rng rng(seed);
   return tessellate_3d(o, rng);
+}
+
+// The bent faces: two or more triangles between the same two regions (bent_face.hpp).
+std::map<std::pair<int, int>, std::vector<int>> pieces_between(const Tessellation3& t) {
+  std::map<std::pair<int, int>, std::vector<int>> between;
+  for (int f = 0; f < static_cast<int>(t.faces.size()); ++f)
+    if (t.faces[f].front >= 0 && t.faces[f].ring.size() == 3) between[std::minmax(t.faces[f].back, t.faces[f].front)].push_back(f);
+  std::erase_if(between, [](const auto& group) { return group.second.size() < 2; });
+  return between;
+}
+
+// Whether a triangle of a piece has another piece's corner: the pieces meshed as one.
+bool meshed_across(const Tessellation3& t, const GrainMesh3& m, const std::vector<int>& pieces) {
+  for (int f : pieces) {
+    const std::set<int> corners(t.faces[f].ring.begin(), t.faces[f].ring.end());
+    for (const auto& tr : m.faces[f])
+      for (int v : tr)
+        if (v < static_cast<int>(t.vertices.size()) && !corners.contains(v)) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -73,15 +94,8 @@ TEST_CASE("3D mesh: a bent face's pieces meshed as one surface, every point on a
     const Tessellation3 t = cell(20, true, seed);
     const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 240)});
     REQUIRE_NOTHROW(check_conformity(t, m));  // the tetrahedra fill the surfaces to 1e-9
-    // The bent faces: two or more triangles between the same two regions (bent_face.hpp).
-    std::map<std::pair<int, int>, std::vector<int>> between;
-    for (int f = 0; f < static_cast<int>(t.faces.size()); ++f)
-      if (t.faces[f].front >= 0 && t.faces[f].ring.size() == 3)
-        between[std::minmax(t.faces[f].back, t.faces[f].front)].push_back(f);
-    for (const auto& [regions, pieces] : between) {
-      if (pieces.size() < 2) continue;
+    for (const auto& [regions, pieces] : pieces_between(t)) {
       ++bent;
-      bool crossed = false;  // a triangle of a piece at another piece's corner: the pieces meshed as one
       for (int f : pieces)
         for (const auto& tr : m.faces[f])
           for (int v : tr) {
@@ -93,12 +107,7 @@ TEST_CASE("3D mesh: a bent face's pieces meshed as one surface, every point on a
             }
             REQUIRE(off < 1e-12);
           }
-      for (int f : pieces) {
-        std::set<int> corners(t.faces[f].ring.begin(), t.faces[f].ring.end());
-        for (const auto& tr : m.faces[f])
-          for (int v : tr) crossed = crossed || (v < static_cast<int>(t.vertices.size()) && !corners.contains(v));
-      }
-      across += crossed ? 1 : 0;
+      across += meshed_across(t, m, pieces) ? 1 : 0;
     }
     const std::vector<double> enclosed = surface_volumes(t, m);
     for (std::size_t g = 0; g < t.grains.size(); ++g) {
@@ -107,6 +116,47 @@ TEST_CASE("3D mesh: a bent face's pieces meshed as one surface, every point on a
   }
   CHECK(bent > 0);
   CHECK(across > 0);
+}
+
+TEST_CASE("3D mesh: a bent face that meets a side of the box twice is meshed whole, no edge of it in the side",
+          "[mesh3d]") {
+  // Its outer ring has two corners on one side not next to each other (or three): an edge
+  // of its triangles between two points on that side would lie in the side, where the
+  // box's own face is. Such faces are meshed as one surface unless that happens.
+  int touching = 0, whole = 0;
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    CAPTURE(seed);
+    const Tessellation3 t = cell(40, true, seed, 5);
+    const GrainMesh3 m = mesh_tessellation_3d(t, {.size = size_for_tets_per_grain(t, 240)});
+    REQUIRE_NOTHROW(check_conformity(t, m));
+    for (const auto& [regions, pieces] : pieces_between(t)) {
+      std::map<std::pair<int, int>, int> uses, ring_uses;
+      for (int f : pieces) {
+        const auto& r = t.faces[f].ring;
+        for (int k = 0; k < 3; ++k) ++ring_uses[std::minmax(r[k], r[(k + 1) % 3])];
+        for (const auto& tr : m.faces[f])
+          for (int k = 0; k < 3; ++k) ++uses[std::minmax(tr[k], tr[(k + 1) % 3])];
+      }
+      auto shared = [&](int a, int b) { return side_mask(m.mesh.points[a], t.size()) & side_mask(m.mesh.points[b], t.size()); };
+      // Inside the face (two of its triangles on the edge): not in a side.
+      for (const auto& [e, n] : uses)
+        if (n == 2) REQUIRE(shared(e.first, e.second) == 0);
+      // The ring's corners (edges of one piece only) on one side, not joined by a ring edge.
+      std::set<int> corners;
+      for (const auto& [e, n] : ring_uses)
+        if (n == 1) corners.insert({e.first, e.second});
+      bool twice = false;
+      for (int a : corners)
+        for (int b : corners)
+          twice = twice || (a < b && shared(a, b) != 0 && !(ring_uses.contains({a, b}) && ring_uses.at({a, b}) == 1));
+      if (!twice) continue;
+      ++touching;
+      whole += meshed_across(t, m, pieces) ? 1 : 0;
+    }
+  }
+  CAPTURE(touching, whole);
+  CHECK(touching > 0);
+  CHECK(whole > 0);
 }
 
 TEST_CASE("3D mesh: bent faces move no grain's volume by more than their budget, however much they bend", "[mesh3d]") {

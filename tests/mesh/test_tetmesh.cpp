@@ -2,7 +2,9 @@
 // tetrahedron, a flat one.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "mesh/tetmesh.hpp"
@@ -32,6 +34,20 @@ TEST_CASE("tetrahedron volume, radius ratio and dihedral angles are exact on kno
   const Vec3 p0{0.95, 0.0, 0.1875}, p1{1.0, 0.0375, 0.15}, p2{1.0, 0.0, 0.1875}, p3{0.95, 0.0375, 0.15};
   REQUIRE(radius_ratio(p0, p1, p2, p3) == 0.0);
   REQUIRE(radius_ratio(p0, p1, p3, p2) == 0.0);
+  // The smallest dihedral sine over the regular's: 1 for the regular, sin(acos(1 / sqrt 3)) =
+  // sqrt(2/3) over 2 sqrt(2) / 3 for the corner, 0 when flat; on random tetrahedra the
+  // sines of dihedral_angles' angles.
+  REQUIRE(dihedral_sine_ratio(a, b, c, d) == Approx(1.0).epsilon(1e-14));
+  REQUIRE(dihedral_sine_ratio(o, x, y, z) == Approx(std::sqrt(2.0 / 3.0) / (2.0 * std::sqrt(2.0) / 3.0)));
+  REQUIRE(dihedral_sine_ratio(o, x, y, Vec3{1, 1, 0}) == Approx(0.0).margin(1e-15));
+  std::uint64_t state = 7;
+  auto next = [&] { state = state * 6364136223846793005u + 1442695040888963407u; return static_cast<double>(state >> 11) / 9007199254740992.0; };
+  for (int k = 0; k < 100; ++k) {
+    const Vec3 r0{next(), next(), next()}, r1{next(), next(), next()}, r2{next(), next(), next()}, r3{next(), next(), next()};
+    double lowest = 1.0;
+    for (double angle : dihedral_angles(r0, r1, r2, r3)) lowest = std::min(lowest, std::sin(angle));
+    REQUIRE(dihedral_sine_ratio(r0, r1, r2, r3) == Approx(lowest / (2.0 * std::sqrt(2.0) / 3.0)).epsilon(1e-9));
+  }
   // The quality summary of a mesh of the two.
   const TetMesh m{{a, b, c, d, o, x, y, z}, {{0, 1, 2, 3}, {4, 5, 6, 7}}};
   const TetQuality q = measure_quality(m);
