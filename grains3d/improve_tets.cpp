@@ -25,8 +25,9 @@ constexpr double kSharpSine = 0.3;
 // smallest angle from 4.1 to 4.6 degrees.
 double quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   if (!(tet_volume(a, b, c, d) > 0.0)) return -1.0;
-  const double ratio = radius_ratio(a, b, c, d), sine = dihedral_sine_ratio(a, b, c, d);
-  return sine < kSharpSine ? std::min(ratio, sine) : ratio;
+  const TetShape shape = tet_shape(a, b, c, d);
+  return shape.dihedral_sine_ratio < kSharpSine ? std::min(shape.radius_ratio, shape.dihedral_sine_ratio)
+                                                : shape.radius_ratio;
 }
 
 // A step must raise the smallest quality it touches by this much: no step undoes

@@ -8,34 +8,53 @@ namespace grainmesh {
 
 double tet_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return dot(d - a, cross(b - a, c - a)) / 6.0; }
 
-double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+namespace {
+
+// Six times the volume (unsigned) and twice the areas of the faces opposite a, b, c and d:
+// what the radius ratio and the dihedral sines share.
+struct Faces {
+  double six_v, fa, fb, fc, fd;
+};
+Faces faces(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const Vec3 u = b - a, v = c - a, w = d - a;
-  const double six_v = std::abs(dot(w, cross(u, v)));
-  const double area = norm(cross(u, v)) + norm(cross(u, w)) + norm(cross(v, w)) + norm(cross(c - b, d - b));  // x 2
+  return {std::abs(dot(w, cross(u, v))), norm(cross(c - b, d - b)), norm(cross(v, w)), norm(cross(u, w)),
+          norm(cross(u, v))};
+}
+
+double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Faces& f) {
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  const double area = f.fd + f.fc + f.fb + f.fa;  // x 2
   // Flat to rounding (a volume below 1e-12 of the longest edge's cube): 0, not the ratio of
   // two rounding errors (four points on a circle gave infinity).
   const double longest = std::sqrt(std::max({dot(u, u), dot(v, v), dot(w, w), dot(c - b, c - b), dot(d - b, d - b),
                                              dot(d - c, d - c)}));
-  if (!(six_v > 6e-12 * longest * longest * longest)) return 0.0;
-  const double r_in = six_v / area;  // 3 V / (sum of face areas), with both factors of 2 cancelling
+  if (!(f.six_v > 6e-12 * longest * longest * longest)) return 0.0;
+  const double r_in = f.six_v / area;  // 3 V / (sum of face areas), with both factors of 2 cancelling
   // Circumcentre relative to a: (|u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v)) / (2 u . (v x w)).
   const Vec3 num = dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u) + dot(w, w) * cross(u, v);
-  const double r_circ = norm(num) / (2.0 * six_v);
+  const double r_circ = norm(num) / (2.0 * f.six_v);
   return 3.0 * r_in / r_circ;
 }
 
-double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  // Twice the areas of the faces opposite a, b, c and d.
-  const double fa = norm(cross(c - b, d - b)), fb = norm(cross(c - a, d - a)), fc = norm(cross(b - a, d - a)),
-               fd = norm(cross(b - a, c - a));
-  const double six_v = std::abs(dot(d - a, cross(b - a, c - a)));
-  if (!(fa > 0.0 && fb > 0.0 && fc > 0.0 && fd > 0.0)) return 0.0;
+double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Faces& f) {
+  if (!(f.fa > 0.0 && f.fb > 0.0 && f.fc > 0.0 && f.fd > 0.0)) return 0.0;
   // Edge ij lies on the two faces opposite the other two corners.
-  const double lowest = std::min({norm(b - a) / (fc * fd), norm(c - a) / (fb * fd), norm(d - a) / (fb * fc),
-                                  norm(c - b) / (fa * fd), norm(d - b) / (fa * fc), norm(d - c) / (fa * fb)});
+  const double lowest = std::min({norm(b - a) / (f.fc * f.fd), norm(c - a) / (f.fb * f.fd), norm(d - a) / (f.fb * f.fc),
+                                  norm(c - b) / (f.fa * f.fd), norm(d - b) / (f.fa * f.fc), norm(d - c) / (f.fa * f.fb)});
   // 3 V |e| / (2 A1 A2) with V = six_v / 6 and A = f / 2: six_v |e| / (f1 f2).
   constexpr double regular = 2.0 * std::numbers::sqrt2 / 3.0;
-  return six_v * lowest / regular;
+  return f.six_v * lowest / regular;
+}
+
+}  // namespace
+
+double radius_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return radius_ratio(a, b, c, d, faces(a, b, c, d)); }
+
+double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return dihedral_sine_ratio(a, b, c, d, faces(a, b, c, d)); }
+
+TetShape tet_shape(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const Faces f = faces(a, b, c, d);
+  return {radius_ratio(a, b, c, d, f), dihedral_sine_ratio(a, b, c, d, f)};
 }
 
 std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {

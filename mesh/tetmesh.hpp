@@ -27,6 +27,12 @@ std::array<double, 6> dihedral_angles(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 // regular tetrahedron, near 0 for one with an angle near 0 or 180 degrees. Without
 // trigonometry: the sine at edge e is 3 V |e| / (2 A1 A2), A1 and A2 the faces meeting there.
 double dihedral_sine_ratio(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// Both, their faces' areas and the volume found once (the mesh improvement's every step).
+struct TetShape {
+  double radius_ratio = 0.0;
+  double dihedral_sine_ratio = 0.0;
+};
+TetShape tet_shape(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 // The regular tetrahedron: its volume from its edge (h^3 / (6 sqrt 2)) and its edge from
 // its volume. How a wanted element size becomes a volume bound, and tetrahedra per grain

@@ -47,6 +47,9 @@ TEST_CASE("tetrahedron volume, radius ratio and dihedral angles are exact on kno
     double lowest = 1.0;
     for (double angle : dihedral_angles(r0, r1, r2, r3)) lowest = std::min(lowest, std::sin(angle));
     REQUIRE(dihedral_sine_ratio(r0, r1, r2, r3) == Approx(lowest / (2.0 * std::sqrt(2.0) / 3.0)).epsilon(1e-9));
+    const TetShape shape = tet_shape(r0, r1, r2, r3);  // the two found together: the same bits
+    REQUIRE(shape.dihedral_sine_ratio == dihedral_sine_ratio(r0, r1, r2, r3));
+    REQUIRE(shape.radius_ratio == radius_ratio(r0, r1, r2, r3));
   }
   // The quality summary of a mesh of the two.
   const TetMesh m{{a, b, c, d, o, x, y, z}, {{0, 1, 2, 3}, {4, 5, 6, 7}}};
