@@ -102,8 +102,16 @@ class SolidCellRun final : public CellRun {
     const char* cases = plan_.boundary == Boundary::mixed ? "case/"
                         : foam_.delta_T == 0.0            ? "case_xx/ ... case_xy/ (six load cases)"
                                                           : "case_xx/ ... case_xy/, case_thermal/ (seven load cases)";
-    std::printf("  cases: %s (%d %s cells)\n", cases, fm_.mesh.cells,
-                foam_.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral");
+    std::string mended;
+    if (const auto& d = fm_.mending) {
+      mended = "; mended: " + std::to_string(d->folded_points) + " points folded, " + std::to_string(d->joined_cells) +
+               " cells joined";
+      if (d->failing_faces + d->failing_cells > 0)
+        mended += ", " + std::to_string(d->failing_faces) + " faces and " + std::to_string(d->failing_cells) +
+                  " cells still failing checkMesh's limits";
+    }
+    std::printf("  cases: %s (%d %s cells%s)\n", cases, fm_.mesh.cells,
+                foam_.cells == FoamOptions::Cells::polygons ? "polyhedral" : "tetrahedral", mended.c_str());
     if (answer != nullptr) print_answer(std::get<CellAnswer<3>>(*answer));
     std::printf("  wrote %s/{%s}%s\n", out.string().c_str(), entry_list(out).c_str(),
                 pictures() ? (" (sections z = " + to_text(section_z_) + ")").c_str() : "");

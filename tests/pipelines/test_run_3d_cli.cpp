@@ -293,12 +293,13 @@ namespace {
 
 // The binder example at 8 grains, 20 % Co and a WC contiguity of 0.3 on `seed`, run into
 // `out`; its report.
-nlohmann::json run_touching_binder(const fs::path& out, int seed, std::string& err) {
+nlohmann::json run_touching_binder(const fs::path& out, int seed, std::string& err, std::string* summary = nullptr) {
   const auto r = run_grainmesh({"run", test::example("grains_3d_wc_co_binder").string(), "-o", out.string(), "--set",
                                 "tessellation.grains=8", "--set", "phase.Co.fraction=0.2", "--set", "domain.width=1",
                                 "--set", "domain.height=1", "--set", "domain.depth=1", "--set", "tessellation.contiguity=0.3",
                                 "--set", "tessellation.seed=" + std::to_string(seed), "--set", "output.pictures=none"});
   err = r.err;
+  if (summary != nullptr) *summary = r.out;
   REQUIRE(r.exit_code == 0);
   return nlohmann::json::parse(test::read_file(out / "report.json"));
 }
@@ -311,12 +312,16 @@ TEST_CASE("grainmesh run in 3D binder mode with grains touching: the dual passes
   // says what was mended.
   test::ScratchDir dir("run3d_binder_contacts");
   const fs::path out = dir / "b";
-  std::string err;
-  const auto report = run_touching_binder(out, 1, err);
+  std::string err, summary;
+  const auto report = run_touching_binder(out, 1, err, &summary);
   INFO(err);
   CHECK(report["statistics"]["contiguity"]["WC"].get<double>() == Approx(0.3).margin(0.05));
   const auto& mending = report["case_cells"]["dual_mending"];
   CHECK(mending["folded_points"].get<int>() + mending["joined_cells"].get<int>() > 0);
+  // The summary line says what was mended, as the report counts it.
+  CHECK(summary.find("polyhedral cells; mended: " + std::to_string(mending["folded_points"].get<int>()) +
+                     " points folded, " + std::to_string(mending["joined_cells"].get<int>()) + " cells joined)") !=
+        std::string::npos);
   CHECK(mending["failing_faces"] == 0);
   CHECK(mending["failing_cells"] == 0);
   CHECK(err.find("still fail checkMesh") == std::string::npos);
@@ -331,11 +336,13 @@ TEST_CASE("grainmesh run in 3D binder mode: faces the mending leaves are reporte
   // report counts them, and checkMesh fails the case on as many non-orthogonal faces.
   test::ScratchDir dir("run3d_binder_left");
   const fs::path out = dir / "b";
-  std::string err;
-  const auto report = run_touching_binder(out, 2, err);
+  std::string err, summary;
+  const auto report = run_touching_binder(out, 2, err, &summary);
   INFO(err);
   const int failing = report["case_cells"]["dual_mending"]["failing_faces"].get<int>();
   CHECK(failing > 0);
+  CHECK(summary.find(", " + std::to_string(failing) + " faces and 0 cells still failing checkMesh's limits)") !=
+        std::string::npos);
   CHECK(err.find(std::to_string(failing) + " faces and 0 cells of the dual polyhedra still fail checkMesh") !=
         std::string::npos);
   const auto check = test::run_openfoam(out / "case", "checkMesh");
