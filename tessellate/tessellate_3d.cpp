@@ -97,8 +97,9 @@ std::vector<std::pair<double, double>> widest_gaps(std::vector<double> c, double
 // How near the diagram's edges come to the box's edge lines (where two sides meet) with
 // the box at `origin`: the smallest distance from an edge to a line along axis c through
 // (origin[a], origin[b]) and its periodic images. An edge passing a line that closely is
-// cut by both sides into a piece about that short.
-double line_clearance(const std::vector<std::pair<Vec3, Vec3>>& edges, Vec3 origin, Vec3 box) {
+// cut by both sides into a piece about that short. Stops at `floor` once it is that near
+// (the window choice needs no more: that origin has lost).
+double line_clearance(const std::vector<std::pair<Vec3, Vec3>>& edges, Vec3 origin, Vec3 box, double floor) {
   double best = std::numeric_limits<double>::infinity();
   for (int c = 0; c < 3; ++c) {
     const int a = (c + 1) % 3, b = (c + 2) % 3;
@@ -111,6 +112,7 @@ double line_clearance(const std::vector<std::pair<Vec3, Vec3>>& edges, Vec3 orig
       for (int i = -1; i <= 2; ++i)
         for (int j = -1; j <= 2; ++j)
           best = std::min(best, std::sqrt(segment_distance2({i * box[a], j * box[b]}, u, w)));
+      if (best <= floor) return best;
     }
   }
   return best;
@@ -133,7 +135,10 @@ Vec3 window_origin(const CellMoments& m, Vec3 box) {
     for (const auto& [y, hy] : gaps[1])
       for (const auto& [z, hz] : gaps[2]) {
         const Vec3 origin{x, y, z};
-        const double score = std::min({hx, hy, hz, line_clearance(m.edges, origin, box)});
+        // The score is at most the gaps' half-widths: when they cannot beat the best, the
+        // edges need not be measured.
+        if (!(std::min({hx, hy, hz}) > best_score)) continue;
+        const double score = std::min({hx, hy, hz, line_clearance(m.edges, origin, box, best_score)});
         if (score > best_score) {
           best_score = score;
           best = origin;
