@@ -7,8 +7,10 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "analysis/fe_homogenise.hpp"
 #include "analysis/fe_nodes.hpp"
@@ -28,10 +30,16 @@ std::unique_ptr<Factor> analyse(const Eigen::SparseMatrix<double>& k);
 std::unique_ptr<Factor> factorise(std::unique_ptr<Factor> analysed, const Eigen::SparseMatrix<double>& k, int loads,
                                   const FeOptions& o, double beside = 0.0);
 
+// The stiffness of a level's linear elements (its lower triangle) in linear_columns'
+// numbering, given that numbering: P^T K P for K the quadratic elements' and P
+// linear_prolongation, which it equals (the linear functions are quadratic ones and the
+// quadrature is exact for their products), assembled directly (fe_homogenise.cpp).
+using LinearStiffness = std::function<Eigen::SparseMatrix<double>(const std::vector<int>& columns)>;
+
 // The coarse level's solves: by its own factor where that costs at most
 // FeOptions::coarse_factor_flops (CHOLMOD's count), else by conjugate gradients with a
-// two-grid cycle on its linear elements, whose factor is small (P^T K P, P from
-// linear_prolongation). Either way the level's answer is solved to the fine level's
+// two-grid cycle on its linear elements, whose factor is small (`linear`'s stiffness, P
+// from linear_prolongation). Either way the level's answer is solved to the fine level's
 // tolerance, and its cycle (the fine level's coarse correction) is the factor's solve or
 // one two-grid cycle: the fine level's cycle is then a V-cycle over three levels.
 class CoarseLevel {
@@ -39,7 +47,8 @@ class CoarseLevel {
   // `k` (kept by reference) the level's matrix, its lower triangle; `nodes` its quadratic
   // nodes; the fine level beside it 2^D times its elements.
   template <int D>
-  CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>& nodes, int loads, const FeOptions& o);
+  CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>& nodes, const LinearStiffness& linear, int loads,
+              const FeOptions& o);
 
   // The level solved, each load's residual to `tolerance` of its norm; factorised after
   // all when `max_iterations` cycles do not reach it.
@@ -68,10 +77,16 @@ class CoarseLevel {
   double fine_ = 0.0;  // bytes the fine level holds beside this one
 };
 
-// The linear elements of a level's own mesh inside its quadratic ones: the prolongation
-// from the corners' unknowns (numbered in the quadratic level's order) to the level's — a
-// corner node's its own, a midside node's the mean of its edge's ends'.
+// The linear elements' numbering: per class of tied quadratic nodes (its unknowns' first
+// / D), its column block among the corners' (in the quadratic level's order), or -1 for a
+// class of midside nodes only. The linear unknowns are D per corner class, D x column + d.
 template <int D>
-Eigen::SparseMatrix<double> linear_prolongation(const FeNodes<D>& nodes);
+std::vector<int> linear_columns(const FeNodes<D>& nodes);
+
+// The linear elements of a level's own mesh inside its quadratic ones: the prolongation
+// from the corners' unknowns (linear_columns) to the level's — a corner node's its own, a
+// midside node's the mean of its edge's ends'.
+template <int D>
+Eigen::SparseMatrix<double> linear_prolongation(const FeNodes<D>& nodes, const std::vector<int>& columns);
 
 }  // namespace grainmesh

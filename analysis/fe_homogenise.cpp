@@ -19,6 +19,7 @@
 #include "analysis/bounds.hpp"
 #include "analysis/fe_coarse_level.hpp"
 #include "analysis/fe_nodes.hpp"
+#include "analysis/fe_problem.hpp"
 #include "analysis/fe_two_grid.hpp"
 #include "common/errors.hpp"
 #include "common/side_by_side.hpp"
@@ -27,176 +28,7 @@ namespace grainmesh {
 
 namespace {
 
-double coordinate(const Vec2& p, int k) { return k == 0 ? p.x : p.y; }
-double coordinate(const Vec3& p, int k) { return k == 0 ? p.x : k == 1 ? p.y : p.z; }
-
-// Quadrature exact for polynomials of degree 2 on the simplex: barycentric points and
-// weights (summing to 1; times the element's measure).
-template <int D>
-struct Quadrature {
-  std::vector<std::array<double, D + 1>> points;
-  std::vector<double> weights;
-};
-template <int D>
-Quadrature<D> degree_two_rule() {
-  Quadrature<D> q;
-  // The points (a, b, ..., b) with their corners permuted: 2D a = 2/3, b = 1/6; 3D the
-  // 4-point rule a = (5 + 3 sqrt 5) / 20, b = (5 - sqrt 5) / 20.
-  const double a = D == 2 ? 2.0 / 3.0 : (5.0 + 3.0 * std::sqrt(5.0)) / 20.0;
-  const double b = D == 2 ? 1.0 / 6.0 : (5.0 - std::sqrt(5.0)) / 20.0;
-  for (int i = 0; i <= D; ++i) {
-    std::array<double, D + 1> l;
-    l.fill(b);
-    l[static_cast<std::size_t>(i)] = a;
-    q.points.push_back(l);
-    q.weights.push_back(1.0 / (D + 1));
-  }
-  return q;
-}
-
-template <int D>
-using BMatrix = Eigen::Matrix<double, static_cast<int>(voigt_size(D)), D * Simplex<D>::kNodes>;
-template <int D>
-using VoigtMatrix = Eigen::Matrix<double, static_cast<int>(voigt_size(D)), static_cast<int>(voigt_size(D))>;
-template <int D>
-using VoigtVector = Eigen::Matrix<double, static_cast<int>(voigt_size(D)), 1>;
-
-// One element's geometry: its measure and, at each quadrature point, the strain matrix B
-// (Voigt rows, engineering shears; columns node by node, D components each).
-template <int D>
-struct ElementGeometry {
-  double measure = 0.0;
-  std::vector<BMatrix<D>> b;
-};
-
-// Point i of `points` as a vector.
-template <int D, class Points>
-Eigen::Matrix<double, D, 1> point_at(const Points& points, int i) {
-  Eigen::Matrix<double, D, 1> x;
-  for (int r = 0; r < D; ++r) x(r) = coordinate(points[static_cast<std::size_t>(i)], r);
-  return x;
-}
-
-// Element c's Jacobian: column k is corner k + 1 less corner 0.
-template <int D>
-Eigen::Matrix<double, D, D> simplex_jacobian(const ExportMesh<D>& m, std::size_t c) {
-  const auto corners = element_corners(m, c);
-  const auto& points = mesh_points(m);
-  Eigen::Matrix<double, D, D> jacobian;
-  for (int k = 0; k < D; ++k)
-    jacobian.col(k) = point_at<D>(points, corners[static_cast<std::size_t>(k + 1)]) - point_at<D>(points, corners[0]);
-  return jacobian;
-}
-
-template <int D>
-ElementGeometry<D> element_geometry(const ExportMesh<D>& m, std::size_t c, const Quadrature<D>& q) {
-  const Eigen::Matrix<double, D, D> jacobian = simplex_jacobian(m, c);
-  const double det = jacobian.determinant();
-  if (!(det > 0.0))
-    throw GeometryError("finite-element reference: element " + std::to_string(c) + " is inverted or flat");
-  ElementGeometry<D> g;
-  g.measure = det / (D == 2 ? 2.0 : 6.0);
-  // Row k of J^-1 is the gradient of barycentric coordinate k + 1; corner 0's is minus their sum.
-  const Eigen::Matrix<double, D, D> inverse = jacobian.inverse();
-  std::array<Eigen::Matrix<double, D, 1>, D + 1> grad;
-  grad[0].setZero();
-  for (int k = 0; k < D; ++k) {
-    grad[static_cast<std::size_t>(k + 1)] = inverse.row(k).transpose();
-    grad[0] -= grad[static_cast<std::size_t>(k + 1)];
-  }
-  constexpr auto edges = Simplex<D>::edges();
-  for (const auto& l : q.points) {
-    std::array<Eigen::Matrix<double, D, 1>, Simplex<D>::kNodes> dn;
-    for (int i = 0; i <= D; ++i)
-      dn[static_cast<std::size_t>(i)] = (4.0 * l[static_cast<std::size_t>(i)] - 1.0) * grad[static_cast<std::size_t>(i)];
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      const auto i = static_cast<std::size_t>(edges[e][0]), j = static_cast<std::size_t>(edges[e][1]);
-      dn[D + 1 + e] = 4.0 * (l[i] * grad[j] + l[j] * grad[i]);
-    }
-    BMatrix<D> b = BMatrix<D>::Zero();
-    for (int a = 0; a < Simplex<D>::kNodes; ++a) {
-      const auto& d = dn[static_cast<std::size_t>(a)];
-      const int x = D * a, y = x + 1;
-      if constexpr (D == 2) {  // xx, yy, xy
-        b(0, x) = d(0);
-        b(1, y) = d(1);
-        b(2, x) = d(1);
-        b(2, y) = d(0);
-      } else {  // xx, yy, zz, yz, xz, xy
-        const int z = x + 2;
-        b(0, x) = d(0);
-        b(1, y) = d(1);
-        b(2, z) = d(2);
-        b(3, y) = d(2);
-        b(3, z) = d(1);
-        b(4, x) = d(2);
-        b(4, z) = d(0);
-        b(5, x) = d(1);
-        b(5, y) = d(0);
-      }
-    }
-    g.b.push_back(b);
-  }
-  return g;
-}
-
-// Each phase's Voigt stiffness and its free thermal strain under a unit temperature change.
-template <int D>
-struct Materials {
-  std::vector<VoigtMatrix<D>> stiffness;
-  std::vector<VoigtVector<D>> thermal_strain;
-};
-
-template <int D>
-Materials<D> materials(const ExportMesh<D>& m, bool plane_stress) {
-  constexpr std::size_t N = voigt_size(D);
-  Materials<D> out;
-  for (const FoamPhase& p : m.phases) {
-    const Stiffness<N> c = isotropic_stiffness<N>(p, plane_stress);
-    VoigtMatrix<D> s;
-    for (std::size_t i = 0; i < N; ++i)
-      for (std::size_t j = 0; j < N; ++j) s(static_cast<int>(i), static_cast<int>(j)) = c[i][j];
-    out.stiffness.push_back(s);
-    VoigtVector<D> e = VoigtVector<D>::Zero();
-    for (int k = 0; k < D; ++k) e(k) = D == 2 ? free_expansion(p, plane_stress) : p.alpha;
-    out.thermal_strain.push_back(e);
-  }
-  return out;
-}
-
-// The discrete problem: the mesh's quadratic nodes, each node's unknowns, the phases'
-// materials, the quadrature and the loads — load j < N the unit macroscopic (engineering)
-// strain j, load N (when thermal) the unit temperature change.
-template <int D>
-struct Problem {
-  static constexpr std::size_t N = voigt_size(D);
-  static constexpr int kDofs = D * Simplex<D>::kNodes;
-  const ExportMesh<D>& m;
-  FeNodes<D> nodes;
-  Materials<D> mat;
-  Quadrature<D> q;
-  int loads = 0;
-
-  Problem(const ExportMesh<D>& mesh, bool plane_stress, bool thermal)
-      : m(mesh), nodes(fe_nodes(mesh)), mat(materials(mesh, plane_stress)), q(degree_two_rule<D>()),
-        loads(static_cast<int>(N) + (thermal ? 1 : 0)) {}
-  // A nested split of `coarse`'s mesh, its unknowns numbered after the coarse level's
-  // (fe_nodes.hpp), the same phases and loads.
-  Problem(const ExportMesh<D>& mesh, const Problem& coarse)
-      : m(mesh), nodes(fe_nodes(mesh, coarse.m, coarse.nodes)), mat(coarse.mat), q(coarse.q), loads(coarse.loads) {}
-
-  // The strain load j imposes on a phase: E_j, or minus its free thermal strain.
-  VoigtVector<D> imposed(int phase, int j) const {
-    if (j < static_cast<int>(N)) return VoigtVector<D>::Unit(j);
-    return -mat.thermal_strain[static_cast<std::size_t>(phase)];
-  }
-  // The unknown of element c's local degree of freedom k (node k / D, component k % D);
-  // -1 when held.
-  int dof(std::size_t c, int k) const {
-    const int base = nodes.first[static_cast<std::size_t>(nodes.element[c][static_cast<std::size_t>(k / D)])];
-    return base < 0 ? -1 : base + k % D;
-  }
-};
+using namespace fe_detail;
 
 // The stiffness matrix's lower triangle with its pattern made first, from the node graph
 // `graph` (each node pair's D x D block, the diagonal blocks' lower half), its entries
@@ -281,6 +113,51 @@ void assemble(const Problem<D>& p, Eigen::SparseMatrix<double>& k, Eigen::Matrix
 }
 
 // Each load's volume-averaged stress (a column each) from the solved fluctuations `u`.
+// The stiffness of p's linear elements, its lower triangle, in linear_columns' numbering
+// `column` (fe_coarse_level.hpp): each element's strain matrix that of the quadratic
+// element times its prolongation (a corner's value its own, a midside node's its edge's
+// ends' mean), integrated by the same rule. It is P^T K P to rounding (within 4.6e-16 of
+// the largest entry on the 100- and 1,000-grain 3D cells; checked on small levels,
+// fe_coarse_level.cpp), without the product, which with its symmetric copy took 3.1 s of
+// the 1,000-grain 3D cell's coarse level.
+template <int D>
+Eigen::SparseMatrix<double> linear_stiffness(const Problem<D>& p, const std::vector<int>& column) {
+  constexpr int kCorners = D + 1;
+  constexpr int kDofs = D * kCorners;
+  constexpr auto edges = Simplex<D>::edges();
+  const auto corners = static_cast<Eigen::Index>(std::count_if(column.begin(), column.end(), [](int c) { return c >= 0; }));
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(element_count(p.m) * static_cast<std::size_t>(kDofs * (kDofs + 1) / 2));
+  for (std::size_t c = 0; c < element_count(p.m); ++c) {
+    const ElementGeometry<D> g = element_geometry(p.m, c, p.q);
+    const auto& stiffness = p.mat.stiffness[static_cast<std::size_t>(p.m.phase[c])];
+    Eigen::Matrix<double, kDofs, kDofs> ke = Eigen::Matrix<double, kDofs, kDofs>::Zero();
+    for (std::size_t i = 0; i < p.q.weights.size(); ++i) {
+      Eigen::Matrix<double, static_cast<int>(Problem<D>::N), kDofs> b = g.b[i].template leftCols<kDofs>();
+      for (std::size_t e = 0; e < edges.size(); ++e)
+        for (const int end : edges[e])
+          b.template middleCols<D>(D * end) += 0.5 * g.b[i].template middleCols<D>(D * (kCorners + static_cast<int>(e)));
+      ke.noalias() += (p.q.weights[i] * g.measure) * b.transpose() * stiffness * b;
+    }
+    std::array<int, kCorners> at{};  // each corner's first linear unknown, -1 held
+    for (int a = 0; a < kCorners; ++a) {
+      const int r = p.nodes.first[static_cast<std::size_t>(p.nodes.element[c][static_cast<std::size_t>(a)])];
+      at[static_cast<std::size_t>(a)] = r < 0 ? -1 : D * column[static_cast<std::size_t>(r / D)];
+    }
+    for (int a = 0; a < kCorners; ++a)
+      for (int b = 0; b < kCorners; ++b) {
+        if (at[static_cast<std::size_t>(a)] < 0 || at[static_cast<std::size_t>(b)] < 0) continue;
+        for (int ci = 0; ci < D; ++ci)
+          for (int cj = 0; cj < D; ++cj)
+            if (const int row = at[static_cast<std::size_t>(a)] + ci, col = at[static_cast<std::size_t>(b)] + cj; row >= col)
+              entries.emplace_back(row, col, ke(D * a + ci, D * b + cj));
+      }
+  }
+  Eigen::SparseMatrix<double> out(D * corners, D * corners);
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
 template <int D>
 Eigen::MatrixXd mean_stresses(const Problem<D>& p, const Eigen::MatrixXd& u) {
   constexpr int kDofs = Problem<D>::kDofs;
@@ -424,7 +301,8 @@ FeNested<voigt_size(D)> homogenise_nested(const ExportMesh<D>& coarse, const Exp
   auto coarse_done = start;
   side_by_side({0, 1}, threads, [&](int job) {
     if (job == 0) {
-      level.emplace(kc, pc.nodes, pc.loads, o);
+      level.emplace(kc, pc.nodes, [&](const std::vector<int>& columns) { return linear_stiffness(pc, columns); },
+                    pc.loads, o);
       uc = level->solve(fc, kTwoGridTolerance, kTwoGridIterations);
       out.coarse = effective(pc, uc, thermal);
       out.coarse.iterations = level->iterations();
