@@ -126,11 +126,12 @@ CoarseLevel::CoarseLevel(const Eigen::SparseMatrix<double>& k, const FeNodes<D>&
                          int loads, const FeOptions& o)
     : k_(k), loads_(loads), options_(o) {
   // The fine level beside (2^D times the coarse level's elements, about as many times its
-  // unknowns and entries): its matrix and its conjugate gradients' eight blocks of columns.
+  // unknowns and entries): its matrix (and its values' single-precision copy for the
+  // cycle's sweeps) and its conjugate gradients' eight blocks of columns.
   constexpr double kSplit = 1 << D;
   const auto entries = static_cast<double>(k.nonZeros());
   const double columns = 64.0 * loads * static_cast<double>(k.rows());  // eight blocks of the loads' columns
-  fine_ = kSplit * (12.0 * entries + columns);
+  fine_ = kSplit * (16.0 * entries + columns);
   factor_ = analyse(k);
   if (factor_->cholmod().fl <= o.coarse_factor_flops) {
     factor_ = factorise(std::move(factor_), k, loads, o, fine_);

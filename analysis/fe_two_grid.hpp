@@ -3,7 +3,8 @@
 // level's exact correction through the prolongation (the coarse space lies in the fine
 // one), a backward sweep: symmetric, so the conjugate gradients hold. The loads' columns
 // are solved in two groups, side by side on up to `threads` threads, each group's columns
-// side by side in its sweeps. Private to the finite-element solve: Eigen's types, included
+// side by side in its sweeps; the sweeps read a single-precision copy of the matrix's
+// values (fe_two_grid.cpp). Private to the finite-element solve: Eigen's types, included
 // only by the .cpp files that wrap Eigen (fe_homogenise.cpp, fe_two_grid.cpp).
 #pragma once
 
