@@ -26,7 +26,7 @@ using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMa
 // third fewer bytes (the 1,000-grain 3D answer 60.4 -> 55.7 s, paired runs; 400 MB more
 // at its peak). The cycle is then the symmetric two-grid cycle of the rounded matrix, still
 // symmetric positive definite, and the conjugate gradients' products and residuals stay in
-// double: the answer is solved to the same residual (it moved by 1e-15 on the 3D example).
+// double: the answer is solved to the same residual (it moved by 1e-14 on the 3D example).
 struct Lower {
   const int* outer;
   const int* inner;
