@@ -53,7 +53,10 @@ void check_linear_stiffness(const Eigen::SparseMatrix<double>& k, const Eigen::S
   const Eigen::SparseMatrix<double> galerkin =
       Eigen::SparseMatrix<double>(p.transpose() * full * p).triangularView<Eigen::Lower>();
   const double largest = galerkin.coeffs().cwiseAbs().maxCoeff();
-  if (galerkin.rows() != k_linear.rows() || !(Eigen::SparseMatrix<double>(galerkin - k_linear).coeffs().cwiseAbs().maxCoeff() <= 1e-12 * largest))
+  const auto differs = [&] {
+    return !(Eigen::SparseMatrix<double>(galerkin - k_linear).coeffs().cwiseAbs().maxCoeff() <= 1e-12 * largest);
+  };
+  if (galerkin.rows() != k_linear.rows() || differs())
     throw GeometryError("finite elements: the linear elements' stiffness is not P^T K P (a grainmesh bug, please "
                         "report it)");
 }
